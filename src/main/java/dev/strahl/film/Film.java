@@ -1,0 +1,99 @@
+package dev.strahl.film;
+
+/**
+ * The HDR accumulation buffer of a render: per pixel the sums of r, g, b in double precision and
+ * the number of samples. Memory is laid out tile by tile ({@value #TILE}×{@value #TILE} pixels),
+ * so that a worker rendering one tile writes one contiguous block.
+ *
+ * <p>Each pixel is written by one thread at a time (the renderer hands out disjoint tiles), and
+ * its samples are added in sample-index order, so the sums do not depend on the thread count.
+ * {@link #toImage()} may be called while rendering goes on: every pixel is then the mean of the
+ * samples it had at that moment.
+ */
+public final class Film {
+    /** Edge length of a tile in pixels. */
+    public static final int TILE = 32;
+
+    private final int width;
+    private final int height;
+    private final int tilesX;
+    private final double[] sum;
+    private final int[] count;
+
+    public Film(int width, int height) {
+        if (width <= 0 || height <= 0) {
+            throw new IllegalArgumentException("film size must be positive, got " + width + "x" + height);
+        }
+        this.width = width;
+        this.height = height;
+        this.tilesX = (width + TILE - 1) / TILE;
+        int tilesY = (height + TILE - 1) / TILE;
+        long pixels = (long) tilesX * tilesY * TILE * TILE;
+        if (3 * pixels > Integer.MAX_VALUE - 8) {
+            throw new IllegalArgumentException("film " + width + "x" + height + " is too large");
+        }
+        this.sum = new double[(int) (3 * pixels)];
+        this.count = new int[(int) pixels];
+    }
+
+    /** Bytes a film of this size needs, to refuse absurd sizes before allocating. */
+    public static long bytesNeeded(int width, int height) {
+        long tiles = (long) ((width + TILE - 1) / TILE) * ((height + TILE - 1) / TILE);
+        return tiles * TILE * TILE * (3 * 8 + 4);
+    }
+
+    public int width() {
+        return width;
+    }
+
+    public int height() {
+        return height;
+    }
+
+    public int tileCountX() {
+        return tilesX;
+    }
+
+    public int tileCountY() {
+        return (height + TILE - 1) / TILE;
+    }
+
+    /** Index of pixel (x, y) in the tile-major layout. */
+    public int pixelIndex(int x, int y) {
+        int tile = (y / TILE) * tilesX + x / TILE;
+        return tile * TILE * TILE + (y % TILE) * TILE + (x % TILE);
+    }
+
+    /** Adds one sample's radiance to a pixel given by {@link #pixelIndex}. */
+    public void add(int pixelIndex, double r, double g, double b) {
+        int k = 3 * pixelIndex;
+        sum[k] += r;
+        sum[k + 1] += g;
+        sum[k + 2] += b;
+        count[pixelIndex]++;
+    }
+
+    /** Number of samples pixel (x, y) has received. */
+    public int sampleCount(int x, int y) {
+        return count[pixelIndex(x, y)];
+    }
+
+    /** The mean radiance per pixel, in row-major order; pixels without samples are black. */
+    public Image toImage() {
+        float[] rgb = new float[3 * width * height];
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                int p = pixelIndex(x, y);
+                int n = count[p];
+                if (n > 0) {
+                    double inv = 1.0 / n;
+                    int o = 3 * (y * width + x);
+                    rgb[o] = (float) (sum[3 * p] * inv);
+                    rgb[o + 1] = (float) (sum[3 * p + 1] * inv);
+                    rgb[o + 2] = (float) (sum[3 * p + 2] * inv);
+                }
+            }
+        }
+        return new Image(width, height, rgb);
+    }
+}

@@ -1,0 +1,394 @@
+package dev.strahl.geometry;
+
+import java.util.Arrays;
+
+/**
+ * All primitives of a scene in flat arrays: triangles of every mesh concatenated (indexed
+ * vertices, struct-of-arrays) and analytic spheres. Primitive ids 0 .. triangleCount-1 are
+ * triangles, the following ones spheres. Immutable after {@link Builder#build()} and safe to share
+ * between threads.
+ *
+ * <p>Intersection methods take t in (0, ray.tMax); new rays avoid self-intersection by starting
+ * from {@link SurfacePoint#spawnOrigin}.
+ */
+public final class Geometry {
+    /** Triangle flag: part of a closed, outward-facing mesh, so its back faces may be culled. */
+    public static final byte CLOSED = 1;
+
+    private final float[] pos;
+    private final int[] tri;
+    private final float[] nrm;          // per vertex, NaN where a vertex has no normal; null if none
+    private final int[] triMaterial;
+    private final byte[] triFlags;
+    private final double[] sph;         // cx, cy, cz, r per sphere
+    private final int[] sphMaterial;
+    private final int triangleCount;
+    private final int sphereCount;
+
+    private Geometry(Builder b) {
+        this.pos = Arrays.copyOf(b.pos, b.vertexCount * 3);
+        this.tri = Arrays.copyOf(b.tri, b.triangleCount * 3);
+        this.nrm = b.hasNormals ? Arrays.copyOf(b.nrm, b.vertexCount * 3) : null;
+        this.triMaterial = Arrays.copyOf(b.triMaterial, b.triangleCount);
+        this.triFlags = Arrays.copyOf(b.triFlags, b.triangleCount);
+        this.sph = Arrays.copyOf(b.sph, b.sphereCount * 4);
+        this.sphMaterial = Arrays.copyOf(b.sphMaterial, b.sphereCount);
+        this.triangleCount = b.triangleCount;
+        this.sphereCount = b.sphereCount;
+    }
+
+    public int triangleCount() {
+        return triangleCount;
+    }
+
+    public int sphereCount() {
+        return sphereCount;
+    }
+
+    public int primitiveCount() {
+        return triangleCount + sphereCount;
+    }
+
+    public boolean isTriangle(int prim) {
+        return prim < triangleCount;
+    }
+
+    public int material(int prim) {
+        return prim < triangleCount ? triMaterial[prim] : sphMaterial[prim - triangleCount];
+    }
+
+    public boolean isClosed(int prim) {
+        return prim < triangleCount && (triFlags[prim] & CLOSED) != 0;
+    }
+
+    /** Bytes held by the primitive arrays (for memory reports). */
+    public long byteSize() {
+        return 4L * pos.length + 4L * tri.length + (nrm == null ? 0 : 4L * nrm.length)
+                + 4L * triMaterial.length + triFlags.length + 8L * sph.length + 4L * sphMaterial.length;
+    }
+
+    /** Grows {@code box} by the bounds of a primitive. */
+    public void includeBounds(int prim, Aabb box) {
+        if (prim < triangleCount) {
+            for (int k = 0; k < 3; k++) {
+                int v = 3 * tri[3 * prim + k];
+                box.include(pos[v], pos[v + 1], pos[v + 2]);
+            }
+        } else {
+            int s = 4 * (prim - triangleCount);
+            double r = sph[s + 3];
+            box.include(sph[s] - r, sph[s + 1] - r, sph[s + 2] - r);
+            box.include(sph[s] + r, sph[s + 1] + r, sph[s + 2] + r);
+        }
+    }
+
+    /** The bounds of every primitive. */
+    public Aabb bounds() {
+        Aabb box = new Aabb();
+        for (int i = 0; i < primitiveCount(); i++) {
+            includeBounds(i, box);
+        }
+        return box;
+    }
+
+    /**
+     * Tests one primitive; on a hit closer than {@code ray.tMax}, records it in {@code hit} and
+     * shortens {@code ray.tMax}. With {@code cullBackFaces}, back faces of triangles flagged
+     * {@link #CLOSED} are ignored.
+     */
+    public boolean intersect(int prim, Ray ray, Hit hit, boolean cullBackFaces) {
+        return prim < triangleCount
+                ? intersectTriangle(prim, ray, hit, cullBackFaces && (triFlags[prim] & CLOSED) != 0)
+                : intersectSphere(prim, ray, hit);
+    }
+
+    /** Whether the primitive blocks the ray somewhere in (0, tMax). Never culls. */
+    public boolean occludes(int prim, Ray ray) {
+        return prim < triangleCount ? triangleT(prim, ray, false, null) > 0 : sphereT(prim - triangleCount, ray) > 0;
+    }
+
+    private boolean intersectTriangle(int prim, Ray ray, Hit hit, boolean cull) {
+        double t = triangleT(prim, ray, cull, hit);
+        if (t <= 0) {
+            return false;
+        }
+        ray.tMax = t;
+        hit.t = t;
+        hit.prim = prim;
+        return true;
+    }
+
+    /**
+     * Distance to the triangle along the ray if in (0, tMax), else -1; on a hit, the barycentrics
+     * go to {@code bary} unless it is null. Möller &amp; Trumbore, "Fast, Minimum Storage
+     * Ray/Triangle Intersection", JGT 1997.
+     */
+    private double triangleT(int prim, Ray ray, boolean cull, Hit bary) {
+        int i0 = 3 * tri[3 * prim], i1 = 3 * tri[3 * prim + 1], i2 = 3 * tri[3 * prim + 2];
+        double v0x = pos[i0], v0y = pos[i0 + 1], v0z = pos[i0 + 2];
+        double e1x = pos[i1] - v0x, e1y = pos[i1 + 1] - v0y, e1z = pos[i1 + 2] - v0z;
+        double e2x = pos[i2] - v0x, e2y = pos[i2 + 1] - v0y, e2z = pos[i2 + 2] - v0z;
+        double dx = ray.d.x, dy = ray.d.y, dz = ray.d.z;
+        double px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
+        double det = e1x * px + e1y * py + e1z * pz;
+        // det = -d·(e1×e2): positive when the ray meets the front face.
+        if (cull ? det <= 0 : det == 0) {
+            return -1;
+        }
+        double inv = 1 / det;
+        double tx = ray.o.x - v0x, ty = ray.o.y - v0y, tz = ray.o.z - v0z;
+        double b1 = (tx * px + ty * py + tz * pz) * inv;
+        if (b1 < 0 || b1 > 1) {
+            return -1;
+        }
+        double qx = ty * e1z - tz * e1y, qy = tz * e1x - tx * e1z, qz = tx * e1y - ty * e1x;
+        double b2 = (dx * qx + dy * qy + dz * qz) * inv;
+        if (b2 < 0 || b1 + b2 > 1) {
+            return -1;
+        }
+        double t = (e2x * qx + e2y * qy + e2z * qz) * inv;
+        if (!(t > 0 && t < ray.tMax)) {
+            return -1;
+        }
+        if (bary != null) {
+            bary.b1 = b1;
+            bary.b2 = b2;
+        }
+        return t;
+    }
+
+    private boolean intersectSphere(int prim, Ray ray, Hit hit) {
+        double t = sphereT(prim - triangleCount, ray);
+        if (t <= 0) {
+            return false;
+        }
+        ray.tMax = t;
+        hit.t = t;
+        hit.prim = prim;
+        hit.b1 = 0;
+        hit.b2 = 0;
+        return true;
+    }
+
+    /**
+     * Nearest sphere distance in (0, tMax), else -1. Uses the numerically stable form of the
+     * quadratic (Haines et al., "Precision Improvements for Ray/Sphere Intersection", Ray Tracing
+     * Gems, 2019, ch. 7): the discriminant from the distance of the centre to the ray line.
+     */
+    private double sphereT(int s, Ray ray) {
+        int k = 4 * s;
+        double r = sph[k + 3];
+        double fx = ray.o.x - sph[k], fy = ray.o.y - sph[k + 1], fz = ray.o.z - sph[k + 2];
+        double dx = ray.d.x, dy = ray.d.y, dz = ray.d.z;
+        double b = -(fx * dx + fy * dy + fz * dz);                  // d is unit length
+        double lx = fx + b * dx, ly = fy + b * dy, lz = fz + b * dz;
+        double discr = r * r - (lx * lx + ly * ly + lz * lz);
+        if (discr < 0) {
+            return -1;
+        }
+        double c = fx * fx + fy * fy + fz * fz - r * r;
+        double q = b + Math.copySign(Math.sqrt(discr), b);
+        double t0, t1;
+        if (q == 0) {
+            t0 = t1 = 0;
+        } else {
+            t0 = c / q;
+            t1 = q;
+        }
+        if (t0 > t1) {
+            double tmp = t0;
+            t0 = t1;
+            t1 = tmp;
+        }
+        if (t0 > 0 && t0 < ray.tMax) {
+            return t0;
+        }
+        return t1 > 0 && t1 < ray.tMax ? t1 : -1;
+    }
+
+    /** Fills {@code sp} with the surface data of the hit (position, normals, material). */
+    public void surface(Ray ray, Hit hit, SurfacePoint sp) {
+        int prim = hit.prim;
+        sp.prim = prim;
+        sp.material = material(prim);
+        if (prim < triangleCount) {
+            int a = tri[3 * prim], b = tri[3 * prim + 1], c = tri[3 * prim + 2];
+            int i0 = 3 * a, i1 = 3 * b, i2 = 3 * c;
+            double b1 = hit.b1, b2 = hit.b2, b0 = 1 - b1 - b2;
+            // The barycentric point lies on the triangle's plane, unlike o + t·d with its round-off.
+            sp.p.set(b0 * pos[i0] + b1 * pos[i1] + b2 * pos[i2],
+                    b0 * pos[i0 + 1] + b1 * pos[i1 + 1] + b2 * pos[i2 + 1],
+                    b0 * pos[i0 + 2] + b1 * pos[i1 + 2] + b2 * pos[i2 + 2]);
+            double e1x = pos[i1] - pos[i0], e1y = pos[i1 + 1] - pos[i0 + 1], e1z = pos[i1 + 2] - pos[i0 + 2];
+            double e2x = pos[i2] - pos[i0], e2y = pos[i2 + 1] - pos[i0 + 1], e2z = pos[i2 + 2] - pos[i0 + 2];
+            sp.ng.set(e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x).normalize();
+            if (nrm != null && !Float.isNaN(nrm[i0]) && !Float.isNaN(nrm[i1]) && !Float.isNaN(nrm[i2])) {
+                sp.n.set(b0 * nrm[i0] + b1 * nrm[i1] + b2 * nrm[i2],
+                        b0 * nrm[i0 + 1] + b1 * nrm[i1 + 1] + b2 * nrm[i2 + 1],
+                        b0 * nrm[i0 + 2] + b1 * nrm[i1 + 2] + b2 * nrm[i2 + 2]);
+                double len = sp.n.length();
+                if (len > 0 && Double.isFinite(len)) {
+                    sp.n.div(len);
+                } else {
+                    sp.n.set(sp.ng);
+                }
+            } else {
+                sp.n.set(sp.ng);
+            }
+        } else {
+            int k = 4 * (prim - triangleCount);
+            double cx = sph[k], cy = sph[k + 1], cz = sph[k + 2], r = sph[k + 3];
+            ray.at(hit.t, sp.p);
+            sp.ng.set(sp.p.x - cx, sp.p.y - cy, sp.p.z - cz).normalize();
+            // Re-project onto the surface to remove the round-off of o + t·d.
+            sp.p.set(cx + r * sp.ng.x, cy + r * sp.ng.y, cz + r * sp.ng.z);
+            sp.n.set(sp.ng);
+        }
+    }
+
+    /** Area of a primitive. */
+    public double area(int prim) {
+        if (prim < triangleCount) {
+            int i0 = 3 * tri[3 * prim], i1 = 3 * tri[3 * prim + 1], i2 = 3 * tri[3 * prim + 2];
+            double e1x = pos[i1] - pos[i0], e1y = pos[i1 + 1] - pos[i0 + 1], e1z = pos[i1 + 2] - pos[i0 + 2];
+            double e2x = pos[i2] - pos[i0], e2y = pos[i2 + 1] - pos[i0 + 1], e2z = pos[i2 + 2] - pos[i0 + 2];
+            double cx = e1y * e2z - e1z * e2y, cy = e1z * e2x - e1x * e2z, cz = e1x * e2y - e1y * e2x;
+            return 0.5 * Math.sqrt(cx * cx + cy * cy + cz * cz);
+        }
+        double r = sph[4 * (prim - triangleCount) + 3];
+        return 4 * Math.PI * r * r;
+    }
+
+    /**
+     * A point on a primitive from two uniform numbers, uniform by area; writes the point into
+     * {@code sp.p} and its geometric normal into {@code sp.ng} (and {@code sp.n}).
+     */
+    public void samplePoint(int prim, double u1, double u2, SurfacePoint sp) {
+        sp.prim = prim;
+        sp.material = material(prim);
+        if (prim < triangleCount) {
+            int i0 = 3 * tri[3 * prim], i1 = 3 * tri[3 * prim + 1], i2 = 3 * tri[3 * prim + 2];
+            double su = Math.sqrt(u1);
+            double b0 = 1 - su, b1 = u2 * su, b2 = 1 - b0 - b1;
+            sp.p.set(b0 * pos[i0] + b1 * pos[i1] + b2 * pos[i2],
+                    b0 * pos[i0 + 1] + b1 * pos[i1 + 1] + b2 * pos[i2 + 1],
+                    b0 * pos[i0 + 2] + b1 * pos[i1 + 2] + b2 * pos[i2 + 2]);
+            double e1x = pos[i1] - pos[i0], e1y = pos[i1 + 1] - pos[i0 + 1], e1z = pos[i1 + 2] - pos[i0 + 2];
+            double e2x = pos[i2] - pos[i0], e2y = pos[i2 + 1] - pos[i0 + 1], e2z = pos[i2 + 2] - pos[i0 + 2];
+            sp.ng.set(e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x).normalize();
+        } else {
+            int k = 4 * (prim - triangleCount);
+            double z = 1 - 2 * u1;
+            double rr = Math.sqrt(Math.max(0, 1 - z * z));
+            double phi = 2 * Math.PI * u2;
+            sp.ng.set(rr * Math.cos(phi), rr * Math.sin(phi), z);
+            double r = sph[k + 3];
+            sp.p.set(sph[k] + r * sp.ng.x, sph[k + 1] + r * sp.ng.y, sph[k + 2] + r * sp.ng.z);
+        }
+        sp.n.set(sp.ng);
+    }
+
+    /** Collects meshes and spheres with their material indices. */
+    public static final class Builder {
+        private float[] pos = new float[48];
+        private int[] tri = new int[48];
+        private float[] nrm = new float[48];
+        private int[] triMaterial = new int[16];
+        private byte[] triFlags = new byte[16];
+        private double[] sph = new double[16];
+        private int[] sphMaterial = new int[4];
+        private int vertexCount, triangleCount, sphereCount;
+        private boolean hasNormals;
+        private int degenerateCount;
+
+        /**
+         * Adds every non-degenerate triangle of the mesh with the given material per triangle
+         * ({@code materials[i]} for triangle i). Triangles of zero area are skipped and counted.
+         *
+         * @param closed the mesh is closed with outward-facing triangles (back faces may be culled)
+         */
+        public Builder addMesh(TriangleMesh mesh, int[] materials, boolean closed) {
+            if (materials.length != mesh.triangleCount()) {
+                throw new IllegalArgumentException("need one material per triangle: " + materials.length + " for " + mesh.triangleCount());
+            }
+            float[] p = mesh.positionsUnsafe();
+            float[] n = mesh.normalsUnsafe();
+            int[] idx = mesh.indicesUnsafe();
+            int base = vertexCount;
+            ensureVertices(vertexCount + mesh.vertexCount());
+            System.arraycopy(p, 0, pos, 3 * base, p.length);
+            if (n != null) {
+                if (!hasNormals) {
+                    Arrays.fill(nrm, 0, 3 * base, Float.NaN);
+                    hasNormals = true;
+                }
+                System.arraycopy(n, 0, nrm, 3 * base, n.length);
+            } else {
+                Arrays.fill(nrm, 3 * base, 3 * (base + mesh.vertexCount()), Float.NaN);
+            }
+            vertexCount += mesh.vertexCount();
+            for (int t = 0; t < mesh.triangleCount(); t++) {
+                int a = idx[3 * t], b = idx[3 * t + 1], c = idx[3 * t + 2];
+                if (isDegenerate(p, a, b, c)) {
+                    degenerateCount++;
+                    continue;
+                }
+                ensureTriangles(triangleCount + 1);
+                tri[3 * triangleCount] = base + a;
+                tri[3 * triangleCount + 1] = base + b;
+                tri[3 * triangleCount + 2] = base + c;
+                triMaterial[triangleCount] = materials[t];
+                triFlags[triangleCount] = closed ? CLOSED : 0;
+                triangleCount++;
+            }
+            return this;
+        }
+
+        public Builder addSphere(Sphere sphere, int material) {
+            if (4 * (sphereCount + 1) > sph.length) {
+                sph = Arrays.copyOf(sph, 2 * sph.length);
+                sphMaterial = Arrays.copyOf(sphMaterial, 2 * sphMaterial.length);
+            }
+            int k = 4 * sphereCount;
+            sph[k] = sphere.center().x();
+            sph[k + 1] = sphere.center().y();
+            sph[k + 2] = sphere.center().z();
+            sph[k + 3] = sphere.radius();
+            sphMaterial[sphereCount++] = material;
+            return this;
+        }
+
+        /** Triangles skipped so far because their area is zero. */
+        public int degenerateCount() {
+            return degenerateCount;
+        }
+
+        public Geometry build() {
+            return new Geometry(this);
+        }
+
+        private static boolean isDegenerate(float[] p, int a, int b, int c) {
+            double e1x = p[3 * b] - p[3 * a], e1y = p[3 * b + 1] - p[3 * a + 1], e1z = p[3 * b + 2] - p[3 * a + 2];
+            double e2x = p[3 * c] - p[3 * a], e2y = p[3 * c + 1] - p[3 * a + 1], e2z = p[3 * c + 2] - p[3 * a + 2];
+            double cx = e1y * e2z - e1z * e2y, cy = e1z * e2x - e1x * e2z, cz = e1x * e2y - e1y * e2x;
+            return cx * cx + cy * cy + cz * cz == 0;
+        }
+
+        private void ensureVertices(int count) {
+            if (3 * count > pos.length) {
+                int size = Math.max(3 * count, 2 * pos.length);
+                pos = Arrays.copyOf(pos, size);
+                nrm = Arrays.copyOf(nrm, size);
+            }
+        }
+
+        private void ensureTriangles(int count) {
+            if (count > triMaterial.length) {
+                int size = Math.max(count, 2 * triMaterial.length);
+                tri = Arrays.copyOf(tri, 3 * size);
+                triMaterial = Arrays.copyOf(triMaterial, size);
+                triFlags = Arrays.copyOf(triFlags, size);
+            }
+        }
+    }
+}

@@ -1,0 +1,22 @@
+package dev.strahl.geometry;
+
+/**
+ * The closest intersection found so far: distance, primitive and its surface parameters
+ * (barycentrics b1, b2 of vertices 1 and 2 for triangles). Mutable, reused per thread.
+ */
+public final class Hit {
+    public double t;
+    /** Primitive index in {@link Geometry}, or -1 for no hit. */
+    public int prim = -1;
+    public double b1, b2;
+
+    public Hit reset() {
+        prim = -1;
+        t = Double.POSITIVE_INFINITY;
+        return this;
+    }
+
+    public boolean found() {
+        return prim >= 0;
+    }
+}

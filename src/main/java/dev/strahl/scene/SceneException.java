@@ -1,0 +1,43 @@
+package dev.strahl.scene;
+
+import java.nio.file.Path;
+
+/**
+ * A scene input that cannot be used: a file that is missing, unreadable or malformed. The
+ * message starts with the file and, where known, the line ({@code file:line: what is wrong}),
+ * so that a command-line tool can print it as the one line a user needs.
+ */
+public final class SceneException extends Exception {
+    private final transient Path file;
+    private final int line;
+
+    /** An error at a line of a file (lines count from 1). */
+    public SceneException(Path file, int line, String message) {
+        super(file + ":" + line + ": " + message);
+        this.file = file;
+        this.line = line;
+    }
+
+    /** An error about a whole file. */
+    public SceneException(Path file, String message) {
+        super(file + ": " + message);
+        this.file = file;
+        this.line = 0;
+    }
+
+    public SceneException(Path file, String message, Throwable cause) {
+        super(file + ": " + message, cause);
+        this.file = file;
+        this.line = 0;
+    }
+
+    /** The file the error is about. */
+    public Path file() {
+        return file;
+    }
+
+    /** The line of the error, from 1, or 0 when it concerns the whole file. */
+    public int line() {
+        return line;
+    }
+}
