@@ -49,6 +49,13 @@ public final class Bvh {
         return 4L * bounds.length + 4L * info.length + 4L * primRef.length;
     }
 
+    /** The node arrays themselves (not copies), for structural checks by tests in this package. */
+    record Layout(float[] bounds, int[] info, int[] primRef) {}
+
+    Layout layout() {
+        return new Layout(bounds, info, primRef);
+    }
+
     /** Allocates a traversal stack for one thread. */
     public static int[] newStack() {
         return new int[STACK_SIZE];

@@ -67,9 +67,12 @@ public final class Aabb {
 
     /**
      * Slab test (Kay &amp; Kajiya 1986) of the ray o + t·d against the box for t in (0, tMax).
-     * Infinite inverse directions are handled by IEEE arithmetic.
+     * Infinite inverse directions are handled by IEEE arithmetic. An empty box meets no ray.
      */
     public boolean intersects(Ray ray) {
+        if (isEmpty()) {
+            return false;       // its inverted slabs would swap into (-inf, inf) and pass every ray
+        }
         double t0 = 0, t1 = ray.tMax;
         for (int axis = 0; axis < 3; axis++) {
             double o = axis == 0 ? ray.o.x : axis == 1 ? ray.o.y : ray.o.z;

@@ -219,8 +219,10 @@ public final class Geometry {
             sp.p.set(b0 * pos[i0] + b1 * pos[i1] + b2 * pos[i2],
                     b0 * pos[i0 + 1] + b1 * pos[i1 + 1] + b2 * pos[i2 + 1],
                     b0 * pos[i0 + 2] + b1 * pos[i1 + 2] + b2 * pos[i2 + 2]);
-            double e1x = pos[i1] - pos[i0], e1y = pos[i1 + 1] - pos[i0 + 1], e1z = pos[i1 + 2] - pos[i0 + 2];
-            double e2x = pos[i2] - pos[i0], e2y = pos[i2 + 1] - pos[i0 + 1], e2z = pos[i2 + 2] - pos[i0 + 2];
+            // Edges in double like the intersection test: float subtraction would round them and
+            // tilt ng by up to ~1e-7 off the plane the ray met, enough to misplace spawned origins.
+            double e1x = (double) pos[i1] - pos[i0], e1y = (double) pos[i1 + 1] - pos[i0 + 1], e1z = (double) pos[i1 + 2] - pos[i0 + 2];
+            double e2x = (double) pos[i2] - pos[i0], e2y = (double) pos[i2 + 1] - pos[i0 + 1], e2z = (double) pos[i2 + 2] - pos[i0 + 2];
             sp.ng.set(e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x).normalize();
             if (nrm != null && !Float.isNaN(nrm[i0]) && !Float.isNaN(nrm[i1]) && !Float.isNaN(nrm[i2])) {
                 sp.n.set(b0 * nrm[i0] + b1 * nrm[i1] + b2 * nrm[i2],
@@ -250,8 +252,8 @@ public final class Geometry {
     public double area(int prim) {
         if (prim < triangleCount) {
             int i0 = 3 * tri[3 * prim], i1 = 3 * tri[3 * prim + 1], i2 = 3 * tri[3 * prim + 2];
-            double e1x = pos[i1] - pos[i0], e1y = pos[i1 + 1] - pos[i0 + 1], e1z = pos[i1 + 2] - pos[i0 + 2];
-            double e2x = pos[i2] - pos[i0], e2y = pos[i2 + 1] - pos[i0 + 1], e2z = pos[i2 + 2] - pos[i0 + 2];
+            double e1x = (double) pos[i1] - pos[i0], e1y = (double) pos[i1 + 1] - pos[i0 + 1], e1z = (double) pos[i1 + 2] - pos[i0 + 2];
+            double e2x = (double) pos[i2] - pos[i0], e2y = (double) pos[i2 + 1] - pos[i0 + 1], e2z = (double) pos[i2 + 2] - pos[i0 + 2];
             double cx = e1y * e2z - e1z * e2y, cy = e1z * e2x - e1x * e2z, cz = e1x * e2y - e1y * e2x;
             return 0.5 * Math.sqrt(cx * cx + cy * cy + cz * cz);
         }
@@ -273,8 +275,8 @@ public final class Geometry {
             sp.p.set(b0 * pos[i0] + b1 * pos[i1] + b2 * pos[i2],
                     b0 * pos[i0 + 1] + b1 * pos[i1 + 1] + b2 * pos[i2 + 1],
                     b0 * pos[i0 + 2] + b1 * pos[i1 + 2] + b2 * pos[i2 + 2]);
-            double e1x = pos[i1] - pos[i0], e1y = pos[i1 + 1] - pos[i0 + 1], e1z = pos[i1 + 2] - pos[i0 + 2];
-            double e2x = pos[i2] - pos[i0], e2y = pos[i2 + 1] - pos[i0 + 1], e2z = pos[i2 + 2] - pos[i0 + 2];
+            double e1x = (double) pos[i1] - pos[i0], e1y = (double) pos[i1 + 1] - pos[i0 + 1], e1z = (double) pos[i1 + 2] - pos[i0 + 2];
+            double e2x = (double) pos[i2] - pos[i0], e2y = (double) pos[i2 + 1] - pos[i0 + 1], e2z = (double) pos[i2 + 2] - pos[i0 + 2];
             sp.ng.set(e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x).normalize();
         } else {
             int k = 4 * (prim - triangleCount);
@@ -308,7 +310,17 @@ public final class Geometry {
          * @param closed the mesh is closed with outward-facing triangles (back faces may be culled)
          */
         public Builder addMesh(TriangleMesh mesh, int[] materials, boolean closed) {
-            if (materials.length != mesh.triangleCount()) {
+            byte[] flags = new byte[mesh.triangleCount()];
+            Arrays.fill(flags, closed ? CLOSED : 0);
+            return addMesh(mesh, materials, flags);
+        }
+
+        /**
+         * Adds every non-degenerate triangle of the mesh with its material and flags
+         * ({@link #CLOSED}) per triangle. Triangles of zero area are skipped and counted.
+         */
+        public Builder addMesh(TriangleMesh mesh, int[] materials, byte[] flags) {
+            if (materials.length != mesh.triangleCount() || flags.length != mesh.triangleCount()) {
                 throw new IllegalArgumentException("need one material per triangle: " + materials.length + " for " + mesh.triangleCount());
             }
             float[] p = mesh.positionsUnsafe();
@@ -338,7 +350,7 @@ public final class Geometry {
                 tri[3 * triangleCount + 1] = base + b;
                 tri[3 * triangleCount + 2] = base + c;
                 triMaterial[triangleCount] = materials[t];
-                triFlags[triangleCount] = closed ? CLOSED : 0;
+                triFlags[triangleCount] = flags[t];
                 triangleCount++;
             }
             return this;
@@ -368,8 +380,8 @@ public final class Geometry {
         }
 
         private static boolean isDegenerate(float[] p, int a, int b, int c) {
-            double e1x = p[3 * b] - p[3 * a], e1y = p[3 * b + 1] - p[3 * a + 1], e1z = p[3 * b + 2] - p[3 * a + 2];
-            double e2x = p[3 * c] - p[3 * a], e2y = p[3 * c + 1] - p[3 * a + 1], e2z = p[3 * c + 2] - p[3 * a + 2];
+            double e1x = (double) p[3 * b] - p[3 * a], e1y = (double) p[3 * b + 1] - p[3 * a + 1], e1z = (double) p[3 * b + 2] - p[3 * a + 2];
+            double e2x = (double) p[3 * c] - p[3 * a], e2y = (double) p[3 * c + 1] - p[3 * a + 1], e2z = (double) p[3 * c + 2] - p[3 * a + 2];
             double cx = e1y * e2z - e1z * e2y, cy = e1z * e2x - e1x * e2z, cz = e1x * e2y - e1y * e2x;
             return cx * cx + cy * cy + cz * cz == 0;
         }

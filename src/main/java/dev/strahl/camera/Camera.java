@@ -1,0 +1,55 @@
+package dev.strahl.camera;
+
+import dev.strahl.geometry.Aabb;
+import org.joml.Vector3d;
+import org.joml.Vector3dc;
+
+/**
+ * A pinhole camera: position, target, up vector and VERTICAL full field of view in degrees.
+ * {@link #rays(int, int)} gives the ray generator for a film size.
+ */
+public record Camera(Vector3dc lookFrom, Vector3dc lookAt, Vector3dc up, double fovDegrees) {
+
+    public Camera {
+        if (!(fovDegrees > 0 && fovDegrees < 180)) {
+            throw new IllegalArgumentException("field of view must be in (0, 180) degrees, got " + fovDegrees);
+        }
+        if (!lookFrom.isFinite() || !lookAt.isFinite() || !up.isFinite()) {
+            throw new IllegalArgumentException("camera vectors must be finite");
+        }
+        Vector3d f = new Vector3d(lookAt).sub(lookFrom);
+        if (f.lengthSquared() == 0) {
+            throw new IllegalArgumentException("camera position and target coincide at " + lookFrom);
+        }
+        if (f.normalize().cross(up, new Vector3d()).lengthSquared() < 1e-18) {
+            throw new IllegalArgumentException("camera up vector " + up + " is parallel to the viewing direction");
+        }
+        lookFrom = new Vector3d(lookFrom);
+        lookAt = new Vector3d(lookAt);
+        up = new Vector3d(up);
+    }
+
+    /**
+     * A camera that frames a bounding box from +Z, looking down -Z with +Y up: the box's bounding
+     * sphere fits into the vertical field of view.
+     */
+    public static Camera framing(Aabb box, double fovDegrees) {
+        if (box.isEmpty()) {
+            return new Camera(new Vector3d(0, 0, 1), new Vector3d(), new Vector3d(0, 1, 0), fovDegrees);
+        }
+        Vector3d center = new Vector3d((box.minX + box.maxX) / 2, (box.minY + box.maxY) / 2, (box.minZ + box.maxZ) / 2);
+        double radius = Math.max(box.diagonal() / 2, 1e-6);
+        double distance = radius / Math.sin(Math.toRadians(fovDegrees) / 2);
+        Vector3d from = new Vector3d(center.x, center.y, center.z + distance * 1.05);
+        return new Camera(from, center, new Vector3d(0, 1, 0), fovDegrees);
+    }
+
+    /** The ray generator for a film of the given size. */
+    public PinholeRays rays(int width, int height) {
+        return new PinholeRays(this, width, height);
+    }
+
+    public Camera withFov(double fov) {
+        return new Camera(lookFrom, lookAt, up, fov);
+    }
+}

@@ -1,0 +1,152 @@
+package dev.strahl.film;
+
+import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
+
+/**
+ * Display encoding of linear radiance: the sRGB transfer function, 8-bit quantisation, and the
+ * conversion of an {@link Image} to a {@link BufferedImage} used by the PNG writer and the viewer.
+ * No tone curve beyond clamping: values above 1 saturate to white.
+ */
+public final class Tonemap {
+
+    /** Linear value below which the sRGB OETF is the straight line 12.92·x (IEC 61966-2-1). */
+    private static final double KNEE = 0.0031308;
+
+    // --- the 8-bit lookup behind encode8 -------------------------------------------------------
+    // pow() per channel is too slow for the viewer. The code of x is the number of transitions
+    // T[k] <= x, where T[k] is the smallest double whose toSrgb8 code exceeds k (found once by
+    // bisection over the bits of positive doubles, which are ordered like their values). Doubles
+    // in [2^-13, 1) are bucketed by exponent and the top MANTISSA_BITS bits of the mantissa; the
+    // buckets are narrow enough (at most 0.88 codes wide, just below 1) to hold at most one
+    // transition, so a bucket stores the code of its smallest value and that transition.
+    // The result is identical to toSrgb8 for every input, not an approximation, and the lookup is
+    // branch-free; TonemapTest checks it around every transition.
+
+    private static final int MANTISSA_BITS = 7;
+    private static final int SHIFT = 52 - MANTISSA_BITS;
+    /** Below this every code is 0: the first transition is at 0.5 / (255 · 12.92) ≈ 1.52e-4. */
+    private static final double LUT_MIN = 0x1p-13;
+    private static final int LUT_BASE = (int) (Double.doubleToRawLongBits(LUT_MIN) >>> SHIFT);
+    private static final byte[] BUCKET_CODE;
+    /** Bits of the transition inside each bucket, or Long.MAX_VALUE (no transition). */
+    private static final long[] BUCKET_STEP;
+
+    static {
+        double[] transition = new double[255];
+        for (int k = 0; k < 255; k++) {
+            long lo = Double.doubleToRawLongBits(0.0);   // toSrgb8 = 0 <= k
+            long hi = Double.doubleToRawLongBits(1.0);   // toSrgb8 = 255 > k
+            while (hi - lo > 1) {
+                long mid = (lo + hi) >>> 1;
+                if (toSrgb8(Double.longBitsToDouble(mid)) > k) {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            transition[k] = Double.longBitsToDouble(hi);
+        }
+        int buckets = (int) ((Double.doubleToRawLongBits(1.0) >>> SHIFT) - LUT_BASE);
+        BUCKET_CODE = new byte[buckets];
+        BUCKET_STEP = new long[buckets];
+        for (int b = 0; b < buckets; b++) {
+            double lo = Double.longBitsToDouble((long) (LUT_BASE + b) << SHIFT);
+            double hi = Double.longBitsToDouble((long) (LUT_BASE + b + 1) << SHIFT);
+            int code = toSrgb8(lo);
+            BUCKET_CODE[b] = (byte) code;
+            BUCKET_STEP[b] = code < 255 && transition[code] < hi
+                    ? Double.doubleToRawLongBits(transition[code]) : Long.MAX_VALUE;
+            if (code < 254 && transition[code + 1] < hi) {
+                throw new IllegalStateException("sRGB lookup: two transitions in bucket " + b);
+            }
+        }
+        if (BUCKET_CODE[0] != 0 || BUCKET_STEP[0] != Long.MAX_VALUE) {
+            throw new IllegalStateException("sRGB lookup: values below " + LUT_MIN + " must all have code 0");
+        }
+        if (BUCKET_CODE[buckets - 1] != (byte) 255 || BUCKET_STEP[buckets - 1] != Long.MAX_VALUE) {
+            throw new IllegalStateException("sRGB lookup: the last bucket must have code 255 throughout");
+        }
+    }
+
+    private Tonemap() {
+    }
+
+    /**
+     * The sRGB opto-electronic transfer function (IEC 61966-2-1): V = 12.92·L for L ≤ 0.0031308,
+     * else V = 1.055·L^(1/2.4) − 0.055, with L clamped to [0, 1] first.
+     *
+     * @param linear linear radiance (1 = display white)
+     * @return the encoded value in [0, 1]; 0 for NaN and for negative input, 1 for L ≥ 1
+     */
+    public static double srgbEncode(double linear) {
+        if (!(linear > 0)) {
+            return 0;                        // NaN, negatives, −0
+        }
+        if (linear >= 1) {
+            return 1;
+        }
+        double v = linear <= KNEE ? 12.92 * linear : 1.055 * Math.pow(linear, 1 / 2.4) - 0.055;
+        return Math.min(1.0, v);            // 1.055 − 0.055 may round a hair above 1
+    }
+
+    /**
+     * The 8-bit sRGB code of a linear value: round(255 · {@link #srgbEncode}(linear)), rounding
+     * halves up.
+     *
+     * @param linear linear radiance (1 = display white)
+     * @return the code in [0, 255]
+     */
+    public static int toSrgb8(double linear) {
+        return (int) Math.round(255 * srgbEncode(linear));
+    }
+
+    /** Same result as {@link #toSrgb8} for every input, through the lookup table (no pow). */
+    static int encode8(double linear) {
+        if (linear != linear) {
+            return 0;                        // NaN (rare, so this branch is well predicted)
+        }
+        // Branch-free from here, because noisy pixels make any data-dependent branch a coin flip.
+        // Non-negative doubles compare like their bit patterns as longs, so all the work is on
+        // integers: negative values (sign bit set) become +0; the bucket index is clamped so that
+        // values below LUT_MIN fall into bucket 0 (code 0 throughout) and values >= 1 into the last
+        // bucket (code 255 throughout). The shifted bits lie in [0, 2^18), so int suffices (and
+        // Math.min/max(int) are intrinsics; the long versions are not on Java 17).
+        long bits = Double.doubleToRawLongBits(linear);
+        bits &= ~(bits >> 63);
+        int b = Math.max(0, Math.min((int) (bits >> SHIFT) - LUT_BASE, BUCKET_CODE.length - 1));
+        // + 1 iff bits >= BUCKET_STEP[b], i.e. the sign of (step − 1 − bits); no overflow as both are >= 0
+        return (BUCKET_CODE[b] & 0xFF) + (int) ((BUCKET_STEP[b] - 1 - bits) >>> 63);
+    }
+
+    /**
+     * Converts a linear image to an 8-bit sRGB image for display or PNG output. Each channel is
+     * multiplied by 2^exposureStops (in double precision) and then encoded exactly as
+     * {@link #toSrgb8} would. Pixel (x, y) of the result is pixel (x, y) of {@code img} (both
+     * top-down).
+     *
+     * @param img           the linear image
+     * @param exposureStops exposure in photographic stops: 0 leaves radiance unchanged, +1 doubles it
+     * @return a new {@link BufferedImage#TYPE_INT_RGB} image of the same size
+     * @throws IllegalArgumentException if exposureStops is NaN or infinite
+     */
+    public static BufferedImage toBufferedImage(Image img, double exposureStops) {
+        if (!Double.isFinite(exposureStops)) {
+            throw new IllegalArgumentException("exposure must be a finite number of stops, got " + exposureStops);
+        }
+        double scale = Math.pow(2, exposureStops);   // exact for integer stops
+        int w = img.width();
+        int h = img.height();
+        BufferedImage out = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        int[] px = ((DataBufferInt) out.getRaster().getDataBuffer()).getData();
+        int i = 0;
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++, i++) {
+                px[i] = encode8(img.get(x, y, 0) * scale) << 16
+                        | encode8(img.get(x, y, 1) * scale) << 8
+                        | encode8(img.get(x, y, 2) * scale);
+            }
+        }
+        return out;
+    }
+}

@@ -1,0 +1,122 @@
+package dev.strahl.light;
+
+import dev.strahl.geometry.Geometry;
+import dev.strahl.geometry.SurfacePoint;
+import dev.strahl.math.Rgb;
+import java.util.Arrays;
+import org.joml.Vector3dc;
+
+/**
+ * Picks points on the emissive primitives (area lights) for next-event estimation. A primitive is
+ * chosen in proportion to its power, area × mean(Le), then a point uniformly by area; the
+ * density per unit area is thus mean(Le) / total power for every emitter, which lets
+ * {@link #pdf} work from the material alone. Lights are one-sided: they emit into the
+ * hemisphere of their geometric normal. Immutable and thread-safe.
+ */
+public final class LightSampler {
+    private final Geometry geometry;
+    private final Rgb[] emission;        // per material
+    private final int[] prims;           // emissive primitives
+    private final double[] cdf;          // cumulative power, cdf[last] = 1
+    private final double totalPower;     // sum of area × mean(Le)
+
+    /** @param emissionByMaterial emitted radiance of each material index (black = not a light) */
+    public LightSampler(Geometry geometry, Rgb[] emissionByMaterial) {
+        this.geometry = geometry;
+        this.emission = emissionByMaterial.clone();
+        int n = 0;
+        int[] found = new int[16];
+        double[] power = new double[16];
+        double total = 0;
+        for (int prim = 0; prim < geometry.primitiveCount(); prim++) {
+            double w = weight(geometry.material(prim));
+            if (w > 0) {
+                if (n == found.length) {
+                    found = Arrays.copyOf(found, 2 * n);
+                    power = Arrays.copyOf(power, 2 * n);
+                }
+                found[n] = prim;
+                total += w * geometry.area(prim);
+                power[n++] = total;
+            }
+        }
+        this.prims = Arrays.copyOf(found, n);
+        this.cdf = Arrays.copyOf(power, n);
+        for (int i = 0; i < n; i++) {
+            cdf[i] /= total;
+        }
+        this.totalPower = total;
+    }
+
+    /** Number of emissive primitives. */
+    public int lightCount() {
+        return prims.length;
+    }
+
+    public boolean isEmpty() {
+        return prims.length == 0;
+    }
+
+    /** Total emitted power over π: the sum of area × mean(Le) (the flux of a Lambertian emitter is π times this). */
+    public double totalPower() {
+        return totalPower;
+    }
+
+    /** The emitted radiance of a material, black if it is not a light. */
+    public Rgb emission(int material) {
+        return emission[material];
+    }
+
+    private double weight(int material) {
+        Rgb le = emission[material];
+        return (le.r() + le.g() + le.b()) / 3;
+    }
+
+    /**
+     * Samples a direction towards a light from {@code ref}. Returns false when nothing can be
+     * sampled or the chosen point faces away from ref.
+     *
+     * @param scratch a per-thread surface record for the sampled point
+     */
+    public boolean sample(Vector3dc ref, double uLight, double u1, double u2, SurfacePoint scratch, LightSample out) {
+        if (prims.length == 0) {
+            return false;
+        }
+        int i = Arrays.binarySearch(cdf, uLight);
+        i = i >= 0 ? i + 1 : -i - 1;                 // first entry with cdf > uLight
+        if (i >= prims.length) {
+            i = prims.length - 1;
+        }
+        int prim = prims[i];
+        geometry.samplePoint(prim, u1, u2, scratch);
+        out.p.set(scratch.p);
+        out.ng.set(scratch.ng);
+        double dx = out.p.x - ref.x(), dy = out.p.y - ref.y(), dz = out.p.z - ref.z();
+        double dist2 = dx * dx + dy * dy + dz * dz;
+        double dist = Math.sqrt(dist2);
+        if (!(dist > 0)) {
+            return false;
+        }
+        out.wi.set(dx / dist, dy / dist, dz / dist);
+        double cosLight = -out.ng.dot(out.wi);
+        if (cosLight <= 0) {
+            return false;
+        }
+        out.distance = dist;
+        out.pdf = pdf(scratch.material, dist, cosLight);
+        out.radiance = emission[scratch.material];
+        return out.pdf > 0 && Double.isFinite(out.pdf);
+    }
+
+    /**
+     * Solid-angle density with which {@link #sample} picks a point of a light of the given
+     * material at distance {@code dist} whose normal makes cosine {@code cosLight} with the
+     * direction to the reference point.
+     */
+    public double pdf(int material, double dist, double cosLight) {
+        if (cosLight <= 0 || totalPower <= 0) {
+            return 0;
+        }
+        return weight(material) / totalPower * dist * dist / cosLight;
+    }
+}

@@ -1,0 +1,43 @@
+package dev.strahl.material;
+
+import dev.strahl.math.Rgb;
+import dev.strahl.sampling.HemisphereSampling;
+import org.joml.Vector3dc;
+
+/**
+ * A bidirectional scattering distribution function in the local frame (z = shading normal; see
+ * the package documentation for the direction convention). Implementations are immutable and
+ * shared between threads.
+ */
+public sealed interface Bsdf permits Lambert {
+
+    /** f(wo, wi) WITHOUT the cosine factor, into {@code dest}. Zero for delta lobes. */
+    void eval(Vector3dc wo, Vector3dc wi, Rgb.Mutable dest);
+
+    /** Solid-angle density with which {@link #sample} picks wi given wo. Zero for delta lobes. */
+    double pdf(Vector3dc wo, Vector3dc wi);
+
+    /**
+     * Samples wi given wo from the uniform numbers uc (lobe choice) and (u1, u2) (direction).
+     * Returns false if the path is absorbed.
+     */
+    boolean sample(Vector3dc wo, double uc, double u1, double u2, BsdfSample out);
+
+    /** Whether every lobe is a delta (no light sampling possible at this surface). */
+    default boolean isDelta() {
+        return false;
+    }
+
+    /**
+     * Whether the back face scatters like the front face. The integrator then turns the frame to
+     * the side of wo. Dielectrics are not two-sided: their inside differs from their outside.
+     */
+    default boolean isTwoSided() {
+        return true;
+    }
+
+    /** This BSDF with diffuse lobes sampled as given; BSDFs without diffuse lobes return themselves. */
+    default Bsdf withHemisphereSampling(HemisphereSampling sampling) {
+        return this;
+    }
+}

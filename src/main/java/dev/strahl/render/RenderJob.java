@@ -1,0 +1,274 @@
+package dev.strahl.render;
+
+import dev.strahl.camera.PinholeRays;
+import dev.strahl.film.Film;
+import dev.strahl.film.Image;
+import dev.strahl.geometry.Ray;
+import dev.strahl.integrator.Integrator;
+import dev.strahl.integrator.PathTracer;
+import dev.strahl.math.Rgb;
+import dev.strahl.sampling.Rng;
+import dev.strahl.scene.Scene;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * A render running in the background: passes over the whole image, each adding a few samples
+ * per pixel, on a fixed pool of worker threads that take {@value Film#TILE}-pixel tiles from an
+ * atomic counter. The random numbers of a sample depend only on (seed, pixel, sample index), and
+ * each pixel adds its samples in index order, so the image is bit-identical for any thread count.
+ *
+ * <pre>{@code
+ * try (RenderJob job = RenderJob.start(scene, RenderSettings.defaults().withSamplesPerPixel(64))) {
+ *     Film film = job.awaitCompletion();
+ *     ImageWriters.write(film, Path.of("out.png"));
+ * }
+ * }</pre>
+ */
+public final class RenderJob implements AutoCloseable {
+    private static final int MAX_AUTO_PASS = 16;
+    private static final AtomicInteger JOB_NUMBER = new AtomicInteger();
+
+    private final RenderSettings settings;
+    private final RenderListener listener;
+    private final Film film;
+    private final PinholeRays cameraRays;
+    private final Integrator integrator;
+    private final int threads;
+    private final ExecutorService pool;
+    private final AtomicLong samplesDone = new AtomicLong();
+    private final AtomicLong invalidSamples = new AtomicLong();
+    private final CompletableFuture<RenderStats> result = new CompletableFuture<>();
+    private final WorkerState[] workers;
+    private volatile boolean cancelled;
+    private volatile int completedSpp;
+    private final long startNanos;
+
+    private RenderJob(Scene scene, RenderSettings settings, RenderListener listener) {
+        this.settings = settings;
+        this.listener = listener;
+        this.film = new Film(settings.width(), settings.height());
+        this.cameraRays = scene.camera().rays(settings.width(), settings.height());
+        this.integrator = new PathTracer(scene, settings.maxDepth(), settings.hemisphere(), settings.cullBackFaces());
+        this.threads = settings.effectiveThreads();
+        int job = JOB_NUMBER.incrementAndGet();
+        AtomicInteger workerNumber = new AtomicInteger();
+        this.pool = Executors.newFixedThreadPool(threads, r -> {
+            Thread t = new Thread(r, "strahl-render-" + job + "-" + workerNumber.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        });
+        this.workers = new WorkerState[threads];
+        for (int i = 0; i < threads; i++) {
+            workers[i] = new WorkerState(integrator.newWorker());
+        }
+        this.startNanos = System.nanoTime();
+    }
+
+    /** Starts rendering {@code scene} in the background. */
+    public static RenderJob start(Scene scene, RenderSettings settings) {
+        return start(scene, settings, new RenderListener() {});
+    }
+
+    /** Starts rendering {@code scene} in the background, reporting to {@code listener}. */
+    public static RenderJob start(Scene scene, RenderSettings settings, RenderListener listener) {
+        Objects.requireNonNull(scene, "scene");
+        Objects.requireNonNull(settings, "settings");
+        Objects.requireNonNull(listener, "listener");
+        RenderJob job = new RenderJob(scene, settings, listener);
+        Thread coordinator = new Thread(job::run, "strahl-render-" + JOB_NUMBER.get());
+        coordinator.setDaemon(true);
+        coordinator.start();
+        return job;
+    }
+
+    public RenderSettings settings() {
+        return settings;
+    }
+
+    /** The film being filled; see {@link Film#toImage()} for reading it while rendering goes on. */
+    public Film film() {
+        return film;
+    }
+
+    /** The mean image of all samples taken so far. */
+    public Image snapshot() {
+        return film.toImage();
+    }
+
+    /** Samples per pixel of all completed passes. */
+    public int completedSamplesPerPixel() {
+        return completedSpp;
+    }
+
+    /** Fraction of the requested samples taken, in [0, 1]. */
+    public double progress() {
+        double total = (double) settings.samplesPerPixel() * settings.width() * settings.height();
+        return Math.min(1, samplesDone.get() / total);
+    }
+
+    /** Camera samples taken so far. */
+    public long samplesDone() {
+        return samplesDone.get();
+    }
+
+    /** Seconds since the job started. */
+    public double elapsedSeconds() {
+        return (System.nanoTime() - startNanos) * 1e-9;
+    }
+
+    /** Asks the workers to stop soon; {@link #awaitCompletion()} then returns the film as it is. */
+    public void cancel() {
+        cancelled = true;
+    }
+
+    public boolean isDone() {
+        return result.isDone();
+    }
+
+    /** Waits for the render to end and returns its film. */
+    public Film awaitCompletion() throws InterruptedException {
+        awaitStats();
+        return film;
+    }
+
+    /** Waits up to the given time for the render to end; returns whether it has. */
+    public boolean await(long timeout, TimeUnit unit) throws InterruptedException {
+        try {
+            result.get(timeout, unit);
+        } catch (TimeoutException e) {
+            return false;
+        } catch (ExecutionException e) {
+            return true;                       // the failure is reported by awaitStats
+        }
+        return true;
+    }
+
+    /** Waits for the render to end and returns its figures. */
+    public RenderStats awaitStats() throws InterruptedException {
+        try {
+            return result.get();
+        } catch (ExecutionException e) {
+            throw new IllegalStateException("render failed: " + e.getCause(), e.getCause());
+        }
+    }
+
+    /** Cancels the render and waits for its threads to stop. */
+    @Override
+    public void close() {
+        cancel();
+        try {
+            result.handle((s, e) -> null).get();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (ExecutionException e) {
+            // handled above: cannot happen
+        }
+    }
+
+    private void run() {
+        try {
+            int spp = settings.samplesPerPixel();
+            int start = 0;
+            int pass = 0;
+            while (start < spp && !cancelled) {
+                int size = settings.samplesPerPass() > 0 ? settings.samplesPerPass() : autoPassSize(pass);
+                int end = Math.min(spp, start + size);
+                renderPass(start, end);
+                if (cancelled) {
+                    break;
+                }
+                completedSpp = end;
+                listener.passCompleted(end, film.toImage());
+                start = end;
+                pass++;
+            }
+            RenderStats stats = stats();
+            listener.finished(stats);
+            result.complete(stats);
+        } catch (Throwable t) {
+            result.completeExceptionally(t);
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    /** Passes of 1, 1, 2, 4, 8 and then 16 samples per pixel: a first image at once, little overhead later. */
+    static int autoPassSize(int pass) {
+        return pass == 0 ? 1 : Math.min(MAX_AUTO_PASS, 1 << Math.min(pass - 1, 4));
+    }
+
+    private RenderStats stats() {
+        long rays = 0;
+        for (WorkerState w : workers) {
+            rays += w.integrator.rayCount();
+        }
+        return new RenderStats(elapsedSeconds(), samplesDone.get(), rays, completedSpp, threads, cancelled, invalidSamples.get());
+    }
+
+    private void renderPass(int firstSample, int endSample) throws InterruptedException, ExecutionException {
+        AtomicInteger nextTile = new AtomicInteger();
+        List<Future<?>> tasks = new ArrayList<>(threads);
+        for (WorkerState w : workers) {
+            tasks.add(pool.submit(() -> renderTiles(w, nextTile, firstSample, endSample)));
+        }
+        for (Future<?> task : tasks) {
+            task.get();
+        }
+    }
+
+    private void renderTiles(WorkerState w, AtomicInteger nextTile, int firstSample, int endSample) {
+        int tilesX = film.tileCountX();
+        int tileCount = tilesX * film.tileCountY();
+        long seed = settings.seed();
+        for (int tile = nextTile.getAndIncrement(); tile < tileCount && !cancelled; tile = nextTile.getAndIncrement()) {
+            int x0 = (tile % tilesX) * Film.TILE;
+            int y0 = (tile / tilesX) * Film.TILE;
+            int x1 = Math.min(x0 + Film.TILE, film.width());
+            int y1 = Math.min(y0 + Film.TILE, film.height());
+            long invalid = 0;
+            for (int y = y0; y < y1 && !cancelled; y++) {
+                for (int x = x0; x < x1; x++) {
+                    int pixel = film.pixelIndex(x, y);
+                    for (int s = firstSample; s < endSample; s++) {
+                        w.rng.seed(Rng.streamSeed(seed, x, y, s));
+                        cameraRays.generate(x + w.rng.nextDouble(), y + w.rng.nextDouble(), w.ray);
+                        w.integrator.radiance(w.ray, w.rng, w.radiance);
+                        if (w.radiance.isFinite()) {
+                            film.add(pixel, w.radiance.r, w.radiance.g, w.radiance.b);
+                        } else {
+                            film.add(pixel, 0, 0, 0);
+                            invalid++;
+                        }
+                    }
+                }
+                samplesDone.addAndGet((long) (x1 - x0) * (endSample - firstSample));
+            }
+            if (invalid > 0) {
+                invalidSamples.addAndGet(invalid);
+            }
+        }
+    }
+
+    /** What one worker thread owns: reused for every sample, so the loop allocates nothing. */
+    private static final class WorkerState {
+        final Integrator.Worker integrator;
+        final Rng rng = new Rng();
+        final Ray ray = new Ray();
+        final Rgb.Mutable radiance = new Rgb.Mutable();
+
+        WorkerState(Integrator.Worker integrator) {
+            this.integrator = integrator;
+        }
+    }
+}

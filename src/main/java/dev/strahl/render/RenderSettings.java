@@ -1,0 +1,89 @@
+package dev.strahl.render;
+
+import dev.strahl.sampling.HemisphereSampling;
+import java.util.Objects;
+
+/**
+ * How to render: film size, samples per pixel, path depth, seed, threads and sampling choices.
+ * Immutable; the {@code with...} methods return modified copies.
+ *
+ * @param width           film width in pixels
+ * @param height          film height in pixels
+ * @param samplesPerPixel camera samples per pixel
+ * @param maxDepth        path segments including the camera segment; -1 for unbounded
+ * @param seed            the render seed; with the other settings it fixes the image bit for bit
+ * @param threads         worker threads; 0 for one per available processor
+ * @param hemisphere      how diffuse surfaces sample directions
+ * @param cullBackFaces   skip back faces of closed meshes for camera and continuation rays
+ * @param samplesPerPass  samples per pixel in each pass over the image; 0 chooses (1, 2, 4, … up to 16)
+ */
+public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, long seed, int threads,
+                             HemisphereSampling hemisphere, boolean cullBackFaces, int samplesPerPass) {
+
+    /** Largest accepted film edge, to refuse absurd sizes before allocating. */
+    public static final int MAX_SIZE = 1 << 15;
+
+    public RenderSettings {
+        if (width <= 0 || height <= 0) {
+            throw new IllegalArgumentException("image size must be positive, got " + width + "x" + height);
+        }
+        if (width > MAX_SIZE || height > MAX_SIZE) {
+            throw new IllegalArgumentException("image size " + width + "x" + height + " is larger than " + MAX_SIZE + " pixels on a side");
+        }
+        if (samplesPerPixel <= 0) {
+            throw new IllegalArgumentException("samples per pixel must be positive, got " + samplesPerPixel);
+        }
+        if (maxDepth == 0 || maxDepth < -1) {
+            throw new IllegalArgumentException("max depth must be -1 (unbounded) or >= 1, got " + maxDepth);
+        }
+        if (threads < 0) {
+            throw new IllegalArgumentException("threads must be >= 0 (0 = all processors), got " + threads);
+        }
+        if (samplesPerPass < 0) {
+            throw new IllegalArgumentException("samples per pass must be >= 0 (0 = automatic), got " + samplesPerPass);
+        }
+        Objects.requireNonNull(hemisphere, "hemisphere");
+    }
+
+    /** 512×512, 64 spp, unbounded depth, seed 0, all processors, cosine sampling, no culling. */
+    public static RenderSettings defaults() {
+        return new RenderSettings(512, 512, 64, -1, 0, 0, HemisphereSampling.COSINE, false, 0);
+    }
+
+    public RenderSettings withSize(int w, int h) {
+        return new RenderSettings(w, h, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass);
+    }
+
+    public RenderSettings withSamplesPerPixel(int spp) {
+        return new RenderSettings(width, height, spp, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass);
+    }
+
+    public RenderSettings withMaxDepth(int depth) {
+        return new RenderSettings(width, height, samplesPerPixel, depth, seed, threads, hemisphere, cullBackFaces, samplesPerPass);
+    }
+
+    public RenderSettings withSeed(long s) {
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, s, threads, hemisphere, cullBackFaces, samplesPerPass);
+    }
+
+    public RenderSettings withThreads(int n) {
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, n, hemisphere, cullBackFaces, samplesPerPass);
+    }
+
+    public RenderSettings withHemisphere(HemisphereSampling h) {
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, h, cullBackFaces, samplesPerPass);
+    }
+
+    public RenderSettings withCullBackFaces(boolean cull) {
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cull, samplesPerPass);
+    }
+
+    public RenderSettings withSamplesPerPass(int n) {
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, n);
+    }
+
+    /** The thread count to use: {@link #threads()}, or the available processors when it is 0. */
+    public int effectiveThreads() {
+        return threads > 0 ? threads : Runtime.getRuntime().availableProcessors();
+    }
+}

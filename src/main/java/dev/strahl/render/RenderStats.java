@@ -1,0 +1,24 @@
+package dev.strahl.render;
+
+/**
+ * Figures of a finished (or cancelled) render.
+ *
+ * @param seconds         wall-clock render time, excluding scene loading and BVH build
+ * @param samples         camera samples taken
+ * @param rays            rays traced (camera, continuation and shadow)
+ * @param samplesPerPixel completed samples per pixel
+ * @param threads         worker threads used
+ * @param cancelled       whether the render stopped before reaching its sample count
+ * @param invalidSamples  samples whose radiance was NaN or infinite and so was dropped
+ */
+public record RenderStats(double seconds, long samples, long rays, int samplesPerPixel, int threads,
+                          boolean cancelled, long invalidSamples) {
+
+    public double samplesPerSecond() {
+        return seconds > 0 ? samples / seconds : 0;
+    }
+
+    public double raysPerSecond() {
+        return seconds > 0 ? rays / seconds : 0;
+    }
+}

@@ -1,0 +1,11 @@
+package dev.strahl.sampling;
+
+/**
+ * How diffuse lobes pick directions. Both converge to the same image; cosine sampling follows the
+ * cosine factor of the rendering equation and so is less noisy, uniform sampling is kept to
+ * show that difference.
+ */
+public enum HemisphereSampling {
+    COSINE,
+    UNIFORM
+}

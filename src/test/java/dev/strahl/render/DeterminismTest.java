@@ -1,0 +1,45 @@
+package dev.strahl.render;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import dev.strahl.film.Image;
+import dev.strahl.scene.Scene;
+import dev.strahl.scene.SceneLoader;
+import dev.strahl.testing.Renders;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+
+/** The same scene, settings and seed give the same bits, whatever the threads or pass sizes. */
+class DeterminismTest {
+    private static final RenderSettings SETTINGS = RenderSettings.defaults().withSize(70, 50).withSamplesPerPixel(6).withSeed(42);
+
+    private static Scene cornell() throws Exception {
+        return SceneLoader.load(Path.of("scenes/cornell-box.json"));
+    }
+
+    @Test
+    void oneAndTwoThreadsGiveIdenticalBits() throws Exception {
+        Scene scene = cornell();
+        Image one = Renders.render(scene, SETTINGS.withThreads(1));
+        Image two = Renders.render(scene, SETTINGS.withThreads(2));
+        Image three = Renders.render(scene, SETTINGS.withThreads(3));
+        assertThat(two.rgb()).isEqualTo(one.rgb());
+        assertThat(three.rgb()).isEqualTo(one.rgb());
+    }
+
+    @Test
+    void passSizeDoesNotChangeTheImage() throws Exception {
+        Scene scene = cornell();
+        Image auto = Renders.render(scene, SETTINGS);
+        Image single = Renders.render(scene, SETTINGS.withSamplesPerPass(1));
+        assertThat(single.rgb()).isEqualTo(auto.rgb());
+    }
+
+    @Test
+    void anotherSeedGivesAnotherImage() throws Exception {
+        Scene scene = cornell();
+        Image a = Renders.render(scene, SETTINGS);
+        Image b = Renders.render(scene, SETTINGS.withSeed(43));
+        assertThat(b.rgb()).isNotEqualTo(a.rgb());
+    }
+}

@@ -1,0 +1,177 @@
+package dev.strahl.testing;
+
+import dev.strahl.accel.Bvh;
+import dev.strahl.camera.PinholeRays;
+import dev.strahl.film.Image;
+import dev.strahl.film.ImageWriters;
+import dev.strahl.film.PfmReader;
+import dev.strahl.geometry.Hit;
+import dev.strahl.geometry.Ray;
+import dev.strahl.geometry.SurfacePoint;
+import dev.strahl.scene.Scene;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.net.URISyntaxException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * Golden-image comparison. The image is cut into regions, one per visible planar face of the
+ * scene (a wall, a face of a box, the light): a pixel belongs to a face when every one of its
+ * 4×4 sub-pixel rays hits that face. Each region's mean luminance must match the reference
+ * within a relative tolerance, and the whole image's relative MSE must stay under a bound.
+ */
+public final class Golden {
+    /** Regions smaller than this are too noisy to judge alone; they still count in the relMSE. */
+    public static final int MIN_REGION_PIXELS = 24;
+
+    private Golden() {}
+
+    /** A reference image from src/test/resources/golden. */
+    public static Image reference(String fileName) {
+        try {
+            Path p = Path.of(Golden.class.getResource("/golden/" + fileName).toURI());
+            return PfmReader.read(p);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        } catch (URISyntaxException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    /** One region: its name and the pixel indices (y·width + x) that belong to it. */
+    public record Region(String name, int[] pixels) {}
+
+    /** The face regions of the scene as seen by its camera at the given size. */
+    public static List<Region> faceRegions(Scene scene, int width, int height) {
+        int sub = 4;
+        PinholeRays rays = scene.camera().rays(width * sub, height * sub);
+        Bvh bvh = scene.bvh();
+        Ray ray = new Ray();
+        Hit hit = new Hit();
+        SurfacePoint sp = new SurfacePoint();
+        int[] stack = Bvh.newStack();
+        Map<String, List<Integer>> byFace = new LinkedHashMap<>();
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                String face = null;
+                boolean uniform = true;
+                for (int k = 0; k < sub * sub && uniform; k++) {
+                    rays.generate(x * sub + k % sub + 0.5, y * sub + k / sub + 0.5, ray);
+                    hit.reset();
+                    String f = "background";
+                    if (bvh.intersect(ray, hit, stack, false)) {
+                        scene.geometry().surface(ray, hit, sp);
+                        f = faceName(scene, sp);
+                    }
+                    if (face == null) {
+                        face = f;
+                    } else if (!face.equals(f)) {
+                        uniform = false;
+                    }
+                }
+                if (uniform && !face.equals("background")) {
+                    byFace.computeIfAbsent(face, k -> new ArrayList<>()).add(y * width + x);
+                }
+            }
+        }
+        List<Region> regions = new ArrayList<>();
+        byFace.forEach((name, px) -> regions.add(new Region(name, px.stream().mapToInt(Integer::intValue).toArray())));
+        return regions;
+    }
+
+    /** Material and normal rounded to a tenth, so both triangles of a slightly bent quad form one face. */
+    private static String faceName(Scene scene, SurfacePoint sp) {
+        String material = scene.materials().get(sp.material).name();
+        return String.format(Locale.ROOT, "%s(%d,%d,%d)", material,
+                Math.round(sp.ng.x * 10), Math.round(sp.ng.y * 10), Math.round(sp.ng.z * 10));
+    }
+
+    /** Mean luminance of an image over a region. */
+    public static double meanLuminance(Image img, Region region) {
+        double s = 0;
+        float[] rgb = img.rgb();
+        for (int p : region.pixels()) {
+            s += 0.2126 * rgb[3 * p] + 0.7152 * rgb[3 * p + 1] + 0.0722 * rgb[3 * p + 2];
+        }
+        return s / region.pixels().length;
+    }
+
+    /** The reference with one region's pixels scaled by {@code factor}: a "mutant" the check must reject. */
+    public static Image scaleRegion(Image img, Region region, double factor) {
+        float[] rgb = img.rgb();
+        for (int p : region.pixels()) {
+            for (int c = 0; c < 3; c++) {
+                rgb[3 * p + c] *= (float) factor;
+            }
+        }
+        return new Image(img.width(), img.height(), rgb);
+    }
+
+    /**
+     * Fails with a list of the regions that differ by more than {@code relTolerance} in mean
+     * luminance, or if relMSE exceeds {@code maxRelMse}. On failure the images are written to
+     * target/golden-failures/ for a person to look at.
+     */
+    public static void assertClose(Image img, Image ref, List<Region> regions, double relTolerance, double maxRelMse, String name) {
+        String failures = differences(img, ref, regions, relTolerance, maxRelMse);
+        if (!failures.isEmpty()) {
+            writeFailure(img, ref, name);
+            throw new AssertionError(name + " differs from its reference:" + failures);
+        }
+    }
+
+    /** What {@link #assertClose} would complain about, one line per difference; empty if nothing. */
+    public static String differences(Image img, Image ref, List<Region> regions, double relTolerance, double maxRelMse) {
+        StringBuilder failures = new StringBuilder();
+        for (Region r : regions) {
+            if (r.pixels().length < MIN_REGION_PIXELS) {
+                continue;
+            }
+            double a = meanLuminance(img, r);
+            double b = meanLuminance(ref, r);
+            double rel = (a - b) / b;
+            if (!(Math.abs(rel) <= relTolerance)) {
+                failures.append(String.format(Locale.ROOT, "%n  region %s (%d px): %.5f vs reference %.5f (%+.2f %%)",
+                        r.name(), r.pixels().length, a, b, 100 * rel));
+            }
+        }
+        double relMse = img.relMse(ref);
+        if (!(relMse <= maxRelMse)) {
+            failures.append(String.format(Locale.ROOT, "%n  relMSE %.3g > %.3g", relMse, maxRelMse));
+        }
+        return failures.toString();
+    }
+
+    /** The largest relative region difference, for reports. */
+    public static double worstRegionError(Image img, Image ref, List<Region> regions) {
+        double worst = 0;
+        for (Region r : regions) {
+            if (r.pixels().length >= MIN_REGION_PIXELS) {
+                worst = Math.max(worst, Math.abs(meanLuminance(img, r) / meanLuminance(ref, r) - 1));
+            }
+        }
+        return worst;
+    }
+
+    private static void writeFailure(Image img, Image ref, String name) {
+        try {
+            Path dir = Files.createDirectories(Path.of("target", "golden-failures"));
+            ImageWriters.write(img, dir.resolve(name + "-render.pfm"));
+            ImageWriters.write(img, dir.resolve(name + "-render.png"));
+            ImageWriters.write(ref, dir.resolve(name + "-reference.png"));
+            float[] a = img.rgb(), b = ref.rgb(), d = new float[a.length];
+            for (int i = 0; i < a.length; i++) {
+                d[i] = Math.abs(a[i] - b[i]) * 10;
+            }
+            ImageWriters.write(new Image(img.width(), img.height(), d), dir.resolve(name + "-difference-x10.png"));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+}
