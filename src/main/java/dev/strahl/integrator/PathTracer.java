@@ -1,6 +1,7 @@
 package dev.strahl.integrator;
 
 import dev.strahl.accel.Bvh;
+import dev.strahl.accel.TraversalStack;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
@@ -62,7 +63,7 @@ public final class PathTracer implements Integrator {
         private final Geometry geometry = scene.geometry();
         private final LightSampler lights = scene.lights();
         private final Rgb environment = scene.environment();
-        private final int[] stack = Bvh.newStack();
+        private final TraversalStack stack = Bvh.newStack();
         private final Hit hit = new Hit();
         private final SurfacePoint sp = new SurfacePoint();
         private final SurfacePoint lightPoint = new SurfacePoint();

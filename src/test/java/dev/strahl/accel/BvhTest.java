@@ -252,7 +252,7 @@ class BvhTest {
     void closestHitEqualsBruteForce(Scene scene) {
         Geometry g = scene.geometry();
         Bvh bvh = Bvh.build(g);
-        int[] stack = Bvh.newStack();
+        TraversalStack stack = Bvh.newStack();
         SplittableRandom random = new SplittableRandom(scene.name().hashCode() + g.primitiveCount());
         Aabb box = g.bounds();
         SurfacePoint sp = new SurfacePoint();
@@ -298,7 +298,7 @@ class BvhTest {
     void anyHitEqualsBruteForceForFiniteTMax(Scene scene) {
         Geometry g = scene.geometry();
         Bvh bvh = Bvh.build(g);
-        int[] stack = Bvh.newStack();
+        TraversalStack stack = Bvh.newStack();
         SplittableRandom random = new SplittableRandom(~scene.name().hashCode() + g.primitiveCount());
         Aabb box = g.bounds();
         SurfacePoint sp = new SurfacePoint();

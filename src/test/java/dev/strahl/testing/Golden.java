@@ -1,6 +1,7 @@
 package dev.strahl.testing;
 
 import dev.strahl.accel.Bvh;
+import dev.strahl.accel.TraversalStack;
 import dev.strahl.camera.PinholeRays;
 import dev.strahl.film.Image;
 import dev.strahl.film.ImageWriters;
@@ -55,7 +56,7 @@ public final class Golden {
         Ray ray = new Ray();
         Hit hit = new Hit();
         SurfacePoint sp = new SurfacePoint();
-        int[] stack = Bvh.newStack();
+        TraversalStack stack = Bvh.newStack();
         Map<String, List<Integer>> byFace = new LinkedHashMap<>();
         for (int y = 0; y < height; y++) {
             for (int x = 0; x < width; x++) {
