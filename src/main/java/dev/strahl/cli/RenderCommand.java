@@ -138,7 +138,7 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     private int render(Scene s, RenderSettings settings, PrintWriter err) throws IOException, InterruptedException {
-        boolean showProgress = !quiet && System.console() != null;
+        boolean showProgress = !quiet && Terminal.isStderrTerminal();
         ProgressBar bar = new ProgressBar(System.err);
         RenderStats stats;
         Film film;
