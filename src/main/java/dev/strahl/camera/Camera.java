@@ -19,10 +19,10 @@ public record Camera(Vector3dc lookFrom, Vector3dc lookAt, Vector3dc up, double 
         }
         Vector3d f = new Vector3d(lookAt).sub(lookFrom);
         if (f.lengthSquared() == 0) {
-            throw new IllegalArgumentException("camera position and target coincide at " + lookFrom);
+            throw new IllegalArgumentException("camera position and target coincide at " + format(lookFrom));
         }
         if (f.normalize().cross(up, new Vector3d()).lengthSquared() < 1e-18) {
-            throw new IllegalArgumentException("camera up vector " + up + " is parallel to the viewing direction");
+            throw new IllegalArgumentException("camera up vector " + format(up) + " is parallel to the viewing direction");
         }
         lookFrom = new Vector3d(lookFrom);
         lookAt = new Vector3d(lookAt);
@@ -42,6 +42,11 @@ public record Camera(Vector3dc lookFrom, Vector3dc lookAt, Vector3dc up, double 
         double distance = radius / Math.sin(Math.toRadians(fovDegrees) / 2);
         Vector3d from = new Vector3d(center.x, center.y, center.z + distance * 1.05);
         return new Camera(from, center, new Vector3d(0, 1, 0), fovDegrees);
+    }
+
+    /** "(x, y, z)", as a user would write the vector. */
+    static String format(Vector3dc v) {
+        return "(" + v.x() + ", " + v.y() + ", " + v.z() + ")";
     }
 
     /** The ray generator for a film of the given size. */

@@ -88,6 +88,9 @@ final class RenderCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         try {
             RenderSettings settings = settings();
+            if (fov != null && !(fov > 0 && fov < 180)) {
+                throw new IllegalArgumentException("--fov: the field of view must be in (0, 180) degrees, got " + fov);
+            }
             checkOutput();
             Scene loaded = SceneLoader.load(scene);
             Scene s = loaded.withCamera(camera(loaded.camera()));

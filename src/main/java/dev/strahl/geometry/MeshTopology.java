@@ -59,13 +59,15 @@ public final class MeshTopology {
         return volume > 0;
     }
 
-    /** Maps each vertex to the first vertex with exactly the same position. */
+    /** Maps each vertex to the first vertex with exactly the same position (-0 and +0 are the same). */
     private static int[] weld(float[] positions) {
         int n = positions.length / 3;
         int[] weld = new int[n];
         Map<String, Integer> first = new HashMap<>();
         for (int v = 0; v < n; v++) {
-            String key = Float.floatToIntBits(positions[3 * v]) + "," + Float.floatToIntBits(positions[3 * v + 1]) + "," + Float.floatToIntBits(positions[3 * v + 2]);
+            // x + 0.0f turns -0.0f into +0.0f, whose bits differ although the positions are equal
+            String key = Float.floatToIntBits(positions[3 * v] + 0.0f) + "," + Float.floatToIntBits(positions[3 * v + 1] + 0.0f)
+                    + "," + Float.floatToIntBits(positions[3 * v + 2] + 0.0f);
             weld[v] = first.computeIfAbsent(key, k -> first.size());
         }
         return weld;

@@ -3,6 +3,7 @@ package dev.strahl.material;
 import dev.strahl.math.Rgb;
 import dev.strahl.sampling.HemisphereSampling;
 import dev.strahl.sampling.Warp;
+import java.util.Objects;
 import org.joml.Vector3dc;
 
 /**
@@ -14,6 +15,8 @@ public record Lambert(Rgb albedo, HemisphereSampling sampling) implements Bsdf {
     private static final double INV_PI = 1 / Math.PI;
 
     public Lambert {
+        Objects.requireNonNull(albedo, "albedo");
+        Objects.requireNonNull(sampling, "sampling");
         if (albedo.r() < 0 || albedo.g() < 0 || albedo.b() < 0 || albedo.max() > 1) {
             throw new IllegalArgumentException("diffuse albedo must lie in [0, 1], got " + albedo);
         }

@@ -36,6 +36,12 @@ public record Rgb(double r, double g, double b) {
         return new Rgb(r * s, g * s, b * s);
     }
 
+    /** "(r, g, b)", as a user would write the colour. */
+    @Override
+    public String toString() {
+        return "(" + r + ", " + g + ", " + b + ")";
+    }
+
     /** A mutable RGB accumulator; methods return {@code this} for chaining. */
     public static final class Mutable {
         public double r, g, b;

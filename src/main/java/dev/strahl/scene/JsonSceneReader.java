@@ -5,6 +5,7 @@ import dev.strahl.geometry.Sphere;
 import dev.strahl.material.Material;
 import dev.strahl.math.Rgb;
 import java.io.IOException;
+import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -30,6 +31,8 @@ final class JsonSceneReader {
         String text;
         try {
             text = Files.readString(file, StandardCharsets.UTF_8);
+        } catch (CharacterCodingException e) {
+            throw new SceneException(file, ObjReader.TextLines.lineOfInvalidUtf8(file, 1), "not a text scene file (invalid UTF-8)");
         } catch (IOException e) {
             throw SceneLoader.cannotRead(file, e);
         }
@@ -85,6 +88,9 @@ final class JsonSceneReader {
                 allowOnly(s, "shapes[] of type obj", Set.of("type", "file"));
                 String name = string(require(s, "file", node), "shapes[].file");
                 Path obj = file.toAbsolutePath().getParent().resolve(name);
+                if (!Files.isRegularFile(obj)) {
+                    throw new SceneException(file, s.get("file").line, "OBJ file not found: " + obj);
+                }
                 SceneLoader.addObj(obj, builder);
                 break;
             }
@@ -93,7 +99,7 @@ final class JsonSceneReader {
                 Vector3d center = vector(require(s, "center", node), "shapes[].center");
                 double radius = number(require(s, "radius", node), "shapes[].radius");
                 if (!(radius > 0)) {
-                    throw new SceneException(file, s.get("radius").line, "'radius' must be positive, got " + radius);
+                    throw new SceneException(file, s.get("radius").line, "'shapes[].radius' must be positive, got " + radius);
                 }
                 JsonNode mNode = require(s, "material", node);
                 String mName = string(mNode, "shapes[].material");
@@ -147,8 +153,11 @@ final class JsonSceneReader {
     }
 
     private double number(JsonNode node, String key) throws SceneException {
-        if (!(node.value instanceof Double d) || !Double.isFinite(d)) {
-            throw new SceneException(file, node.line, "'" + key + "' must be a finite number, got " + node.typeName());
+        if (!(node.value instanceof Double d)) {
+            throw new SceneException(file, node.line, "'" + key + "' must be a number, got " + node.typeName());
+        }
+        if (!Double.isFinite(d)) {
+            throw new SceneException(file, node.line, "'" + key + "' must be finite, got " + d);
         }
         return d;
     }
