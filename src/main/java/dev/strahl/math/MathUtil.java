@@ -17,8 +17,10 @@ public final class MathUtil {
 
     /** Power heuristic with exponent 2 (Veach 1997, eq. 9.13): w = a² / (a² + b²). */
     public static double powerHeuristic(double pdfA, double pdfB) {
-        double a = pdfA * pdfA;
-        double b = pdfB * pdfB;
-        return a + b > 0 ? a / (a + b) : 0;
+        if (!(pdfA > 0)) {
+            return 0;
+        }
+        double ratio = pdfB / pdfA;        // the ratio form cannot overflow as the squares can
+        return 1 / (1 + ratio * ratio);
     }
 }

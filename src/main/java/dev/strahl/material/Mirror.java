@@ -1,0 +1,52 @@
+package dev.strahl.material;
+
+import dev.strahl.math.Rgb;
+import java.util.Objects;
+import org.joml.Vector3dc;
+
+/**
+ * Perfect specular reflection (MTL {@code illum 5}): wi = (−wo.x, −wo.y, wo.z) with reflectance
+ * Ks and no Fresnel term (F ≡ 1, as DESIGN.md §3 prescribes). The lobe is a Dirac delta,
+ * f = Ks · δ(wi − wr) / |cosθi|, so {@link #eval} and {@link #pdf} are zero for every wi and only
+ * {@link #sample} sees it: weight f·|cosθi|/pdf = Ks, pdf = 1 (the probability of choosing the
+ * only lobe, pbrt-v4's convention for delta lobes). Two-sided: the integrator turns the frame to
+ * the side of wo.
+ *
+ * @param reflectance Ks, each channel in [0, 1]
+ */
+public record Mirror(Rgb reflectance) implements Bsdf {
+
+    public Mirror {
+        Objects.requireNonNull(reflectance, "reflectance");
+        if (reflectance.r() < 0 || reflectance.g() < 0 || reflectance.b() < 0 || reflectance.max() > 1) {
+            throw new IllegalArgumentException("mirror reflectance must lie in [0, 1], got " + reflectance);
+        }
+    }
+
+    @Override
+    public void eval(Vector3dc wo, Vector3dc wi, Rgb.Mutable dest) {
+        dest.setZero();
+    }
+
+    @Override
+    public double pdf(Vector3dc wo, Vector3dc wi) {
+        return 0;
+    }
+
+    @Override
+    public boolean sample(Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
+        if (wo.z() <= 0) {
+            return false;
+        }
+        Fresnel.reflect(wo, out.wi);
+        out.weight.set(reflectance);
+        out.pdf = 1;
+        out.delta = true;
+        return true;
+    }
+
+    @Override
+    public boolean isDelta() {
+        return true;
+    }
+}
