@@ -3,6 +3,7 @@ package dev.strahl.cli;
 import dev.strahl.camera.Camera;
 import dev.strahl.film.Film;
 import dev.strahl.film.ImageWriters;
+import dev.strahl.integrator.IntegratorKind;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
@@ -65,6 +66,14 @@ final class RenderCommand implements Callable<Integer> {
             description = "Diffuse direction sampling: cosine-weighted or uniform; same image, uniform is noisier (default: ${DEFAULT-VALUE}).")
     HemisphereSampling hemisphere;
 
+    @Option(names = "--integrator", defaultValue = "path", paramLabel = "path|direct|whitted",
+            description = "Light transport: path (unbiased global illumination), direct (direct light only) or whitted (recursive ray tracing) (default: ${DEFAULT-VALUE}).")
+    IntegratorKind integrator;
+
+    @Option(names = "--light-samples", defaultValue = "1", paramLabel = "N",
+            description = "Shadow rays per diffuse hit for direct and whitted: more gives smoother soft shadows (default: ${DEFAULT-VALUE}).")
+    int lightSamples;
+
     @Option(names = "--cull-back-faces", description = "Skip back faces of closed meshes for camera and bounce rays.")
     boolean cullBackFaces;
 
@@ -118,7 +127,7 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     private RenderSettings settings() {
-        return new RenderSettings(width, height, spp, maxDepth, seed, threads, hemisphere, cullBackFaces, 0);
+        return new RenderSettings(width, height, spp, maxDepth, seed, threads, hemisphere, cullBackFaces, 0, integrator, lightSamples);
     }
 
     /** Refuses an unwritable output before spending time on the render. */
@@ -160,8 +169,8 @@ final class RenderCommand implements Callable<Integer> {
         }
         ImageWriters.write(film, output);
         if (!quiet) {
-            err.println(String.format(Locale.ROOT, "strahl: %dx%d, %d spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
-                    settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
+            err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %d spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
+                    integrator.id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
                     ProgressBar.si(stats.samplesPerSecond()), ProgressBar.si(stats.raysPerSecond()), stats.threads(), output));
             if (stats.invalidSamples() > 0) {
                 err.println("strahl: warning: " + stats.invalidSamples() + " samples were NaN or infinite and counted as black");

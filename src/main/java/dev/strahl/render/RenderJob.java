@@ -5,7 +5,6 @@ import dev.strahl.film.Film;
 import dev.strahl.film.Image;
 import dev.strahl.geometry.Ray;
 import dev.strahl.integrator.Integrator;
-import dev.strahl.integrator.PathTracer;
 import dev.strahl.math.Rgb;
 import dev.strahl.sampling.Rng;
 import dev.strahl.scene.Scene;
@@ -54,12 +53,12 @@ public final class RenderJob implements AutoCloseable {
     private volatile int completedSpp;
     private final long startNanos;
 
-    private RenderJob(Scene scene, RenderSettings settings, RenderListener listener) {
+    private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener) {
         this.settings = settings;
         this.listener = listener;
         this.film = new Film(settings.width(), settings.height());
         this.cameraRays = scene.camera().rays(settings.width(), settings.height());
-        this.integrator = new PathTracer(scene, settings.maxDepth(), settings.hemisphere(), settings.cullBackFaces());
+        this.integrator = integrator;
         this.threads = settings.effectiveThreads();
         int job = JOB_NUMBER.incrementAndGet();
         AtomicInteger workerNumber = new AtomicInteger();
@@ -82,10 +81,22 @@ public final class RenderJob implements AutoCloseable {
 
     /** Starts rendering {@code scene} in the background, reporting to {@code listener}. */
     public static RenderJob start(Scene scene, RenderSettings settings, RenderListener listener) {
+        Objects.requireNonNull(settings, "settings");
+        Integrator integrator = settings.integrator().create(scene, settings.maxDepth(), settings.hemisphere(),
+                settings.cullBackFaces(), settings.lightSamples());
+        return start(scene, settings, integrator, listener);
+    }
+
+    /**
+     * Starts rendering with a given integrator (made for this scene); the settings' integrator
+     * choice is then ignored.
+     */
+    public static RenderJob start(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener) {
         Objects.requireNonNull(scene, "scene");
         Objects.requireNonNull(settings, "settings");
+        Objects.requireNonNull(integrator, "integrator");
         Objects.requireNonNull(listener, "listener");
-        RenderJob job = new RenderJob(scene, settings, listener);
+        RenderJob job = new RenderJob(scene, settings, integrator, listener);
         Thread coordinator = new Thread(job::run, "strahl-render-" + JOB_NUMBER.get());
         coordinator.setDaemon(true);
         coordinator.start();

@@ -1,5 +1,6 @@
 package dev.strahl.render;
 
+import dev.strahl.integrator.IntegratorKind;
 import dev.strahl.sampling.HemisphereSampling;
 import java.util.Objects;
 
@@ -16,9 +17,12 @@ import java.util.Objects;
  * @param hemisphere      how diffuse surfaces sample directions
  * @param cullBackFaces   skip back faces of closed meshes for camera and continuation rays
  * @param samplesPerPass  samples per pixel in each pass over the image; 0 chooses (1, 2, 4, … up to 16)
+ * @param integrator      which light transport algorithm computes the radiance
+ * @param lightSamples    shadow rays per diffuse or glossy hit for the direct and Whitted integrators
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, long seed, int threads,
-                             HemisphereSampling hemisphere, boolean cullBackFaces, int samplesPerPass) {
+                             HemisphereSampling hemisphere, boolean cullBackFaces, int samplesPerPass,
+                             IntegratorKind integrator, int lightSamples) {
 
     /** Largest accepted film edge, to refuse absurd sizes before allocating. */
     public static final int MAX_SIZE = 1 << 15;
@@ -42,44 +46,56 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         if (samplesPerPass < 0) {
             throw new IllegalArgumentException("samples per pass must be >= 0 (0 = automatic), got " + samplesPerPass);
         }
+        if (lightSamples < 1) {
+            throw new IllegalArgumentException("light samples must be >= 1, got " + lightSamples);
+        }
         Objects.requireNonNull(hemisphere, "hemisphere");
+        Objects.requireNonNull(integrator, "integrator");
     }
 
-    /** 512×512, 64 spp, unbounded depth, seed 0, all processors, cosine sampling, no culling. */
+    /** 512×512, 64 spp, unbounded depth, seed 0, all processors, cosine sampling, no culling, path tracing. */
     public static RenderSettings defaults() {
-        return new RenderSettings(512, 512, 64, -1, 0, 0, HemisphereSampling.COSINE, false, 0);
+        return new RenderSettings(512, 512, 64, -1, 0, 0, HemisphereSampling.COSINE, false, 0, IntegratorKind.PATH, 1);
     }
 
     public RenderSettings withSize(int w, int h) {
-        return new RenderSettings(w, h, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass);
+        return new RenderSettings(w, h, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples);
     }
 
     public RenderSettings withSamplesPerPixel(int spp) {
-        return new RenderSettings(width, height, spp, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass);
+        return new RenderSettings(width, height, spp, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples);
     }
 
     public RenderSettings withMaxDepth(int depth) {
-        return new RenderSettings(width, height, samplesPerPixel, depth, seed, threads, hemisphere, cullBackFaces, samplesPerPass);
+        return new RenderSettings(width, height, samplesPerPixel, depth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples);
     }
 
     public RenderSettings withSeed(long s) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, s, threads, hemisphere, cullBackFaces, samplesPerPass);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, s, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples);
     }
 
     public RenderSettings withThreads(int n) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, n, hemisphere, cullBackFaces, samplesPerPass);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, n, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples);
     }
 
     public RenderSettings withHemisphere(HemisphereSampling h) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, h, cullBackFaces, samplesPerPass);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, h, cullBackFaces, samplesPerPass, integrator, lightSamples);
     }
 
     public RenderSettings withCullBackFaces(boolean cull) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cull, samplesPerPass);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cull, samplesPerPass, integrator, lightSamples);
     }
 
     public RenderSettings withSamplesPerPass(int n) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, n);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, n, integrator, lightSamples);
+    }
+
+    public RenderSettings withIntegrator(IntegratorKind kind) {
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, kind, lightSamples);
+    }
+
+    public RenderSettings withLightSamples(int n) {
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, n);
     }
 
     /** The thread count to use: {@link #threads()}, or the available processors when it is 0. */

@@ -1,6 +1,10 @@
 package dev.strahl.scene;
 
+import dev.strahl.material.Bsdf;
+import dev.strahl.material.Dielectric;
+import dev.strahl.material.Glossy;
 import dev.strahl.material.Lambert;
+import dev.strahl.material.Mirror;
 import dev.strahl.material.Material;
 import dev.strahl.math.Rgb;
 import java.io.IOException;
@@ -53,20 +57,33 @@ public final class SceneLoader {
     }
 
     /**
-     * Maps MTL parameters to a material following the conventions table: Ke > 0 emits,
-     * illum ≤ 2 with Ks = 0 is Lambertian with albedo Kd.
+     * Maps MTL parameters to a material following the conventions table: illum 5 is a mirror of
+     * reflectance Ks, illum 7 smooth glass of IOR Ni, illum ≤ 2 with Ks > 0 Kd·Lambert + Ks·Beckmann
+     * (Ns as Phong exponent), otherwise Lambertian with albedo Kd. Ke > 0 makes any of them emit.
      */
     static Material toMaterial(MtlMaterial m, Scene.Builder builder) {
-        Rgb kd = m.kd();
-        if (kd.max() > 1) {
-            builder.note("material '" + m.name() + "': Kd " + kd + " reflects more than it receives; clamped to 1");
-            kd = new Rgb(Math.min(kd.r(), 1), Math.min(kd.g(), 1), Math.min(kd.b(), 1));
+        Bsdf bsdf;
+        if (m.illum() == 5) {
+            bsdf = new Mirror(clampToOne(m.ks(), m, "Ks", builder));
+        } else if (m.illum() == 7) {
+            bsdf = new Dielectric(m.ni());
+        } else {
+            if (m.illum() > 2) {
+                builder.note("material '" + m.name() + "': illum " + m.illum() + " is not supported; rendering it as illum 2");
+            }
+            bsdf = m.ks().isBlack()
+                    ? new Lambert(clampToOne(m.kd(), m, "Kd", builder))
+                    : Glossy.fromPhongExponent(m.kd(), m.ks(), m.ns());
         }
-        boolean plainDiffuse = m.illum() <= 2 && m.ks().isBlack();
-        if (!plainDiffuse) {
-            builder.note("material '" + m.name() + "' (illum " + m.illum() + ", Ks " + m.ks() + "): only diffuse materials are supported yet; rendering it as diffuse");
+        return new Material(m.name(), bsdf, m.ke());
+    }
+
+    private static Rgb clampToOne(Rgb c, MtlMaterial m, String key, Scene.Builder builder) {
+        if (c.max() <= 1) {
+            return c;
         }
-        return new Material(m.name(), new Lambert(kd), m.ke());
+        builder.note("material '" + m.name() + "': " + key + " " + c + " reflects more than it receives; clamped to 1");
+        return new Rgb(Math.min(c.r(), 1), Math.min(c.g(), 1), Math.min(c.b(), 1));
     }
 
     /** The one-line error for a file that cannot be read. */

@@ -271,7 +271,7 @@ class RenderCommandTest {
         Run r = render(CORNELL, png);
         assertThat(r.code()).isZero();
         assertThat(r.errLines()).singleElement().asString()
-                .startsWith("strahl: 16x16, 4 spp in ").contains("samples/s").contains("rays/s").endsWith("-> " + png);
+                .startsWith("strahl: path, 16x16, 4 spp in ").contains("samples/s").contains("rays/s").endsWith("-> " + png);
         assertThat(r.out()).isEmpty();
     }
 

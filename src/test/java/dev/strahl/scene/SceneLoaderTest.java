@@ -7,7 +7,10 @@ import dev.strahl.film.Image;
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.material.Lambert;
+import dev.strahl.material.Dielectric;
+import dev.strahl.material.Glossy;
 import dev.strahl.material.Material;
+import dev.strahl.material.Mirror;
 import dev.strahl.math.Rgb;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.testing.Renders;
@@ -118,18 +121,30 @@ class SceneLoaderTest {
         assertThat(scene.notes()).anySatisfy(n -> assertThat(n).contains("'hot'").contains("Kd").contains("clamped to 1"));
     }
 
-    @ParameterizedTest(name = "{0}")
-    @CsvSource(delimiter = '|', value = {
-        "mirror (illum 5)      | illum 5\\nKs 1 1 1       | illum 5",
-        "glass (illum 7)       | illum 7\\nNi 1.5         | illum 7",
-        "glossy (Ks > 0)       | illum 2\\nKs 0.2 0.2 0.2 | illum 2",
-        "illum 3               | illum 3               | illum 3",
-    })
-    void nonDiffuseMaterialsAreNotedAndRenderedDiffuse(String name, String keys, String illum) throws Exception {
-        Scene scene = loadObj("newmtl shiny\nKd 0.3 0.4 0.5\n" + keys.replace("\\n", "\n") + "\n", "shiny");
-        assertThat(albedo(material(scene, "shiny"))).isEqualTo(new Rgb(0.3, 0.4, 0.5));
-        assertThat(scene.notes()).anySatisfy(n -> assertThat(n).contains("'shiny'").contains("(" + illum + ",")
-                .contains("only diffuse materials are supported yet"));
+    @Test
+    void illumFiveIsAMirrorOfReflectanceKs() throws Exception {
+        Scene scene = loadObj("newmtl shiny\nKd 0.3 0.4 0.5\nKs 0.9 0.8 0.7\nillum 5\n", "shiny");
+        assertThat(material(scene, "shiny").bsdf()).isEqualTo(new Mirror(new Rgb(0.9, 0.8, 0.7)));
+        assertThat(scene.notes()).noneMatch(n -> n.contains("shiny"));
+    }
+
+    @Test
+    void illumSevenIsGlassOfIorNi() throws Exception {
+        Scene scene = loadObj("newmtl glass\nKd 0.3 0.4 0.5\nKs 1 1 1\nNi 2.5\nillum 7\n", "glass");
+        assertThat(material(scene, "glass").bsdf()).isEqualTo(new Dielectric(2.5));
+    }
+
+    @Test
+    void illumTwoWithSpecularIsGlossyWithThePhongExponent() throws Exception {
+        Scene scene = loadObj("newmtl glossy\nKd 0.3 0.4 0.5\nKs 0.2 0.2 0.2\nNs 80\nillum 2\n", "glossy");
+        assertThat(material(scene, "glossy").bsdf()).isEqualTo(Glossy.fromPhongExponent(new Rgb(0.3, 0.4, 0.5), Rgb.gray(0.2), 80));
+    }
+
+    @Test
+    void unsupportedIllumIsNotedAndTreatedAsTwo() throws Exception {
+        Scene scene = loadObj("newmtl odd\nKd 0.3 0.4 0.5\nillum 3\n", "odd");
+        assertThat(albedo(material(scene, "odd"))).isEqualTo(new Rgb(0.3, 0.4, 0.5));
+        assertThat(scene.notes()).anySatisfy(n -> assertThat(n).contains("'odd'").contains("illum 3").contains("illum 2"));
     }
 
     @ParameterizedTest

@@ -1,0 +1,107 @@
+package dev.strahl.integrator;
+
+import dev.strahl.accel.Bvh;
+import dev.strahl.accel.TraversalStack;
+import dev.strahl.geometry.Geometry;
+import dev.strahl.geometry.Hit;
+import dev.strahl.geometry.Ray;
+import dev.strahl.light.LightSampler;
+import dev.strahl.material.BsdfSample;
+import dev.strahl.material.Bsdf;
+import dev.strahl.math.MathUtil;
+import dev.strahl.math.Rgb;
+import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.sampling.Rng;
+import dev.strahl.scene.Scene;
+import org.joml.Vector3d;
+
+/**
+ * Direct lighting: emission seen by the camera plus light that reaches the first surface straight
+ * from an emitter, estimated with {@code lightSamples} light samples and one BSDF sample combined
+ * by multiple importance sampling (power heuristic with sample counts). It computes the same
+ * quantity as the path tracer at max depth 2; soft shadows sharpen with more light samples.
+ */
+public final class DirectLighting implements Integrator {
+    private final Scene scene;
+    private final Bsdf[] bsdfs;
+    private final Rgb[] emission;
+    private final boolean cullBackFaces;
+    private final int lightSamples;
+
+    public DirectLighting(Scene scene, HemisphereSampling hemisphere, boolean cullBackFaces, int lightSamples) {
+        if (lightSamples < 1) {
+            throw new IllegalArgumentException("light samples must be >= 1, got " + lightSamples);
+        }
+        this.scene = scene;
+        this.bsdfs = Shading.bsdfs(scene, hemisphere);
+        this.emission = Shading.emission(scene);
+        this.cullBackFaces = cullBackFaces;
+        this.lightSamples = lightSamples;
+    }
+
+    @Override
+    public Worker newWorker() {
+        return new Worker() {
+            private final Bvh bvh = scene.bvh();
+            private final Geometry geometry = scene.geometry();
+            private final LightSampler lights = scene.lights();
+            private final TraversalStack stack = Bvh.newStack();
+            private final DirectLight direct = new DirectLight(bvh, lights, stack);
+            private final Shading s = new Shading();
+            private final Hit hit = new Hit();
+            private final BsdfSample bs = new BsdfSample();
+            private final Vector3d wi = new Vector3d();
+            private final Rgb.Mutable beta = new Rgb.Mutable();
+            private long rays;
+
+            @Override
+            public long rayCount() {
+                return rays + direct.rays;
+            }
+
+            @Override
+            public void radiance(Ray ray, Rng rng, Rgb.Mutable out) {
+                out.setZero();
+                rays++;
+                hit.reset();
+                if (!bvh.intersect(ray, hit, stack, cullBackFaces)) {
+                    out.set(scene.environment());
+                    return;
+                }
+                s.at(ray, hit, geometry, bsdfs, emission);
+                out.set(s.emitted);
+                Bsdf bsdf = s.bsdf;
+                beta.set(1, 1, 1);
+                boolean lightSampling = !bsdf.isDelta() && !lights.isEmpty();
+                if (lightSampling) {
+                    direct.add(bsdf, s.sp, s.frame, s.woLocal, rng, lightSamples, 1, beta, out);
+                }
+                // One BSDF sample: the light it finds, weighted against the light samples.
+                if (!bsdf.sample(s.woLocal, rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), bs)) {
+                    return;
+                }
+                s.frame.toWorld(bs.wi, wi);
+                if (wi.dot(s.sp.ng) * bs.wi.z <= 0) {
+                    return;
+                }
+                double bsdfPdf = bs.pdf;
+                beta.set(bs.weight);
+                s.sp.spawnOrigin(wi, ray.o);
+                ray.d.set(wi);
+                ray.tMax = Double.POSITIVE_INFINITY;
+                rays++;
+                hit.reset();
+                if (!bvh.intersect(ray, hit, stack, cullBackFaces)) {
+                    out.addProduct(beta, scene.environment(), 1);
+                    return;
+                }
+                s.at(ray, hit, geometry, bsdfs, emission);
+                if (!s.emitted.isBlack()) {
+                    double w = bs.delta || !lightSampling ? 1
+                            : MathUtil.powerHeuristic(bsdfPdf, lightSamples * lights.pdf(s.sp.material, hit.t, s.cosEmitter));
+                    out.addProduct(beta, s.emitted, w);
+                }
+            }
+        };
+    }
+}

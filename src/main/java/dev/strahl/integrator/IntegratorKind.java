@@ -1,0 +1,33 @@
+package dev.strahl.integrator;
+
+import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.scene.Scene;
+import java.util.Locale;
+
+/** The integrators a user can choose by name, from the talk's progression. */
+public enum IntegratorKind {
+    /** Unbiased path tracing (NEE + MIS + Russian roulette): the converged global illumination. */
+    PATH,
+    /** Direct lighting only, MIS between light and BSDF sampling: equals PATH at max depth 2. */
+    DIRECT,
+    /** Recursive (Whitted) ray tracing: specular reflection and refraction, direct light with soft shadows, no indirect diffuse light. */
+    WHITTED;
+
+    /** The name used on the command line and in scene files. */
+    public String id() {
+        return name().toLowerCase(Locale.ROOT);
+    }
+
+    /**
+     * Creates the integrator.
+     *
+     * @param lightSamples shadow rays per diffuse or glossy hit (DIRECT and WHITTED; PATH takes one)
+     */
+    public Integrator create(Scene scene, int maxDepth, HemisphereSampling hemisphere, boolean cullBackFaces, int lightSamples) {
+        return switch (this) {
+            case PATH -> new PathTracer(scene, maxDepth, hemisphere, cullBackFaces, PathTracer.Strategy.MIS);
+            case DIRECT -> new DirectLighting(scene, hemisphere, cullBackFaces, lightSamples);
+            case WHITTED -> new Whitted(scene, maxDepth, cullBackFaces, lightSamples);
+        };
+    }
+}

@@ -1,0 +1,148 @@
+package dev.strahl.integrator;
+
+import dev.strahl.accel.Bvh;
+import dev.strahl.accel.TraversalStack;
+import dev.strahl.geometry.Geometry;
+import dev.strahl.geometry.Hit;
+import dev.strahl.geometry.Ray;
+import dev.strahl.light.LightSampler;
+import dev.strahl.material.Bsdf;
+import dev.strahl.material.BsdfSample;
+import dev.strahl.math.Rgb;
+import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.sampling.Rng;
+import dev.strahl.scene.Scene;
+import org.joml.Vector3d;
+
+/**
+ * Recursive ray tracing after Whitted (1980), with area lights. Mirrors and glass spawn their
+ * reflected and refracted rays (both, weighted by Fresnel); diffuse and glossy surfaces take the
+ * light arriving directly from the area lights, estimated with {@code lightSamples} shadow rays
+ * (soft shadows whose noise falls as the count grows). Light that reaches a diffuse surface via
+ * another diffuse surface is never followed, so this is not a converged global-illumination
+ * image: corners and shadows are darker than the path tracer's, and there is no colour bleeding.
+ *
+ * <p>{@code maxDepth} limits the recursion in path segments as for the path tracer; -1 means
+ * {@value #UNBOUNDED_DEPTH} segments.
+ */
+public final class Whitted implements Integrator {
+    /** The recursion limit used for max depth -1: deep enough for glass, bounded for mirror pairs. */
+    static final int UNBOUNDED_DEPTH = 16;
+
+    private final Scene scene;
+    private final Bsdf[] bsdfs;
+    private final Rgb[] emission;
+    private final int maxDepth;
+    private final boolean cullBackFaces;
+    private final int lightSamples;
+
+    public Whitted(Scene scene, int maxDepth, boolean cullBackFaces, int lightSamples) {
+        if (maxDepth == 0 || maxDepth < -1) {
+            throw new IllegalArgumentException("maxDepth must be -1 (unbounded) or >= 1, got " + maxDepth);
+        }
+        if (lightSamples < 1) {
+            throw new IllegalArgumentException("light samples must be >= 1, got " + lightSamples);
+        }
+        this.scene = scene;
+        this.bsdfs = Shading.bsdfs(scene, HemisphereSampling.COSINE);
+        this.emission = Shading.emission(scene);
+        this.maxDepth = maxDepth > 0 ? maxDepth : UNBOUNDED_DEPTH;
+        this.cullBackFaces = cullBackFaces;
+        this.lightSamples = lightSamples;
+    }
+
+    @Override
+    public Worker newWorker() {
+        return new WhittedWorker();
+    }
+
+    private final class WhittedWorker implements Worker {
+        private final Bvh bvh = scene.bvh();
+        private final Geometry geometry = scene.geometry();
+        private final LightSampler lights = scene.lights();
+        private final TraversalStack stack = Bvh.newStack();
+        private final DirectLight direct = new DirectLight(bvh, lights, stack);
+        private final Hit hit = new Hit();
+        // Scratch per recursion level, so that a level's state survives its children.
+        private final Shading[] shading = new Shading[maxDepth + 1];
+        private final BsdfSample[][] lobes = new BsdfSample[maxDepth + 1][2];
+        private final Rgb.Mutable[] beta = new Rgb.Mutable[maxDepth + 1];
+        private final Vector3d wi = new Vector3d();
+        private long rays;
+
+        WhittedWorker() {
+            for (int i = 0; i <= maxDepth; i++) {
+                shading[i] = new Shading();
+                lobes[i][0] = new BsdfSample();
+                lobes[i][1] = new BsdfSample();
+                beta[i] = new Rgb.Mutable();
+            }
+        }
+
+        @Override
+        public long rayCount() {
+            return rays + direct.rays;
+        }
+
+        @Override
+        public void radiance(Ray ray, Rng rng, Rgb.Mutable out) {
+            out.setZero();
+            beta[0].set(1, 1, 1);
+            trace(ray, 1, rng, out);
+        }
+
+        /** Adds beta[depth-1]·L(ray) to out, where the ray is the depth-th segment of the path. */
+        private void trace(Ray ray, int depth, Rng rng, Rgb.Mutable out) {
+            Rgb.Mutable weight = beta[depth - 1];
+            rays++;
+            hit.reset();
+            if (!bvh.intersect(ray, hit, stack, cullBackFaces)) {
+                out.addProduct(weight, scene.environment(), 1);
+                return;
+            }
+            Shading s = shading[depth];
+            s.at(ray, hit, geometry, bsdfs, emission);
+            out.addProduct(weight, s.emitted, 1);
+            if (depth >= maxDepth) {
+                return;
+            }
+            Bsdf bsdf = s.bsdf;
+            if (!bsdf.isDelta()) {
+                if (!lights.isEmpty()) {
+                    direct.add(bsdf, s.sp, s.frame, s.woLocal, rng, lightSamples, 0, weight, out);
+                }
+                return;
+            }
+            int count = deltaLobes(bsdf, s, lobes[depth]);
+            for (int i = 0; i < count; i++) {
+                BsdfSample lobe = lobes[depth][i];
+                s.frame.toWorld(lobe.wi, wi);
+                if (wi.dot(s.sp.ng) * lobe.wi.z <= 0) {
+                    continue;
+                }
+                beta[depth].set(weight).mul(lobe.weight);
+                s.sp.spawnOrigin(wi, ray.o);
+                ray.d.set(wi);
+                ray.tMax = Double.POSITIVE_INFINITY;
+                trace(ray, depth + 1, rng, out);
+            }
+        }
+    }
+
+    /**
+     * The lobes of a delta BSDF with their Fresnel weights (f·|cos|, not divided by a choice
+     * probability), found by sampling with the lobe-choice number at both ends of [0, 1): a delta
+     * BSDF picks its first lobe for uc below that lobe's probability. Returns the lobe count.
+     */
+    static int deltaLobes(Bsdf bsdf, Shading s, BsdfSample[] out) {
+        if (!bsdf.sample(s.woLocal, 0, 0.5, 0.5, out[0])) {
+            return 0;
+        }
+        out[0].weight.mul(out[0].pdf);
+        if (out[0].pdf >= 1 || !bsdf.sample(s.woLocal, Math.nextDown(1.0), 0.5, 0.5, out[1])) {
+            return 1;
+        }
+        out[1].weight.mul(out[1].pdf);
+        return 2;
+    }
+}
