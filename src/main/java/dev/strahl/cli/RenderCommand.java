@@ -15,6 +15,7 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
@@ -74,6 +75,10 @@ final class RenderCommand implements Callable<Integer> {
             description = "Shadow rays per diffuse hit for direct and whitted: more gives smoother soft shadows (default: ${DEFAULT-VALUE}).")
     int lightSamples;
 
+    @Option(names = "--time-limit", paramLabel = "DURATION", converter = Durations.class,
+            description = "Stop at the end of the pass that crosses this time (e.g. 90s, 5m, 1h30m) and write the image.")
+    Duration timeLimit;
+
     @Option(names = "--cull-back-faces", description = "Skip back faces of closed meshes for camera and bounce rays.")
     boolean cullBackFaces;
 
@@ -127,7 +132,8 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     private RenderSettings settings() {
-        return new RenderSettings(width, height, spp, maxDepth, seed, threads, hemisphere, cullBackFaces, 0, integrator, lightSamples);
+        return new RenderSettings(width, height, spp, maxDepth, seed, threads, hemisphere, cullBackFaces, 0, integrator, lightSamples,
+                timeLimit == null ? Duration.ZERO : timeLimit);
     }
 
     /** Refuses an unwritable output before spending time on the render. */

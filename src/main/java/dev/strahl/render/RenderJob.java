@@ -203,6 +203,9 @@ public final class RenderJob implements AutoCloseable {
                 listener.passCompleted(end, film.toImage());
                 start = end;
                 pass++;
+                if (!settings.timeLimit().isZero() && elapsedSeconds() >= settings.timeLimit().toNanos() * 1e-9) {
+                    break;                             // the pass that crossed the time limit is kept
+                }
             }
             RenderStats stats = stats();
             listener.finished(stats);

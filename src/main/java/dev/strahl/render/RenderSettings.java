@@ -2,6 +2,7 @@ package dev.strahl.render;
 
 import dev.strahl.integrator.IntegratorKind;
 import dev.strahl.sampling.HemisphereSampling;
+import java.time.Duration;
 import java.util.Objects;
 
 /**
@@ -19,10 +20,11 @@ import java.util.Objects;
  * @param samplesPerPass  samples per pixel in each pass over the image; 0 chooses (1, 2, 4, … up to 16)
  * @param integrator      which light transport algorithm computes the radiance
  * @param lightSamples    shadow rays per diffuse or glossy hit for the direct and Whitted integrators
+ * @param timeLimit       stop at the end of the pass during which this much time has passed; zero for no limit
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, long seed, int threads,
                              HemisphereSampling hemisphere, boolean cullBackFaces, int samplesPerPass,
-                             IntegratorKind integrator, int lightSamples) {
+                             IntegratorKind integrator, int lightSamples, Duration timeLimit) {
 
     /** Largest accepted film edge, to refuse absurd sizes before allocating. */
     public static final int MAX_SIZE = 1 << 15;
@@ -51,51 +53,59 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         }
         Objects.requireNonNull(hemisphere, "hemisphere");
         Objects.requireNonNull(integrator, "integrator");
+        Objects.requireNonNull(timeLimit, "timeLimit");
+        if (timeLimit.isNegative()) {
+            throw new IllegalArgumentException("time limit must not be negative, got " + timeLimit);
+        }
     }
 
     /** 512×512, 64 spp, unbounded depth, seed 0, all processors, cosine sampling, no culling, path tracing. */
     public static RenderSettings defaults() {
-        return new RenderSettings(512, 512, 64, -1, 0, 0, HemisphereSampling.COSINE, false, 0, IntegratorKind.PATH, 1);
+        return new RenderSettings(512, 512, 64, -1, 0, 0, HemisphereSampling.COSINE, false, 0, IntegratorKind.PATH, 1, Duration.ZERO);
     }
 
     public RenderSettings withSize(int w, int h) {
-        return new RenderSettings(w, h, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples);
+        return new RenderSettings(w, h, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit);
     }
 
     public RenderSettings withSamplesPerPixel(int spp) {
-        return new RenderSettings(width, height, spp, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples);
+        return new RenderSettings(width, height, spp, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit);
     }
 
     public RenderSettings withMaxDepth(int depth) {
-        return new RenderSettings(width, height, samplesPerPixel, depth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples);
+        return new RenderSettings(width, height, samplesPerPixel, depth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit);
     }
 
     public RenderSettings withSeed(long s) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, s, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, s, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit);
     }
 
     public RenderSettings withThreads(int n) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, n, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, n, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit);
     }
 
     public RenderSettings withHemisphere(HemisphereSampling h) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, h, cullBackFaces, samplesPerPass, integrator, lightSamples);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, h, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit);
     }
 
     public RenderSettings withCullBackFaces(boolean cull) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cull, samplesPerPass, integrator, lightSamples);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cull, samplesPerPass, integrator, lightSamples, timeLimit);
     }
 
     public RenderSettings withSamplesPerPass(int n) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, n, integrator, lightSamples);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, n, integrator, lightSamples, timeLimit);
     }
 
     public RenderSettings withIntegrator(IntegratorKind kind) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, kind, lightSamples);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, kind, lightSamples, timeLimit);
     }
 
     public RenderSettings withLightSamples(int n) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, n);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, n, timeLimit);
+    }
+
+    public RenderSettings withTimeLimit(Duration limit) {
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, limit);
     }
 
     /** The thread count to use: {@link #threads()}, or the available processors when it is 0. */

@@ -8,7 +8,7 @@ package dev.strahl.render;
  * @param rays            rays traced (camera, continuation and shadow)
  * @param samplesPerPixel completed samples per pixel
  * @param threads         worker threads used
- * @param cancelled       whether the render stopped before reaching its sample count
+ * @param cancelled       whether the render was cancelled before reaching its sample count (a time limit is not a cancellation)
  * @param invalidSamples  samples whose radiance was NaN or infinite and so was dropped
  */
 public record RenderStats(double seconds, long samples, long rays, int samplesPerPixel, int threads,

@@ -78,6 +78,20 @@ class RenderJobTest {
     }
 
     @Test
+    void timeLimitStopsAfterThePassThatCrossesIt() throws Exception {
+        RenderSettings settings = RenderSettings.defaults().withSize(64, 64).withSamplesPerPixel(1_000_000)
+                .withTimeLimit(java.time.Duration.ofMillis(300));
+        try (RenderJob job = RenderJob.start(SPHERE, settings)) {
+            assertThat(job.await(10, TimeUnit.SECONDS)).as("stopped within 10 s").isTrue();
+            RenderStats stats = job.awaitStats();
+            assertThat(stats.cancelled()).isFalse();
+            assertThat(stats.seconds()).isGreaterThanOrEqualTo(0.3);
+            assertThat(stats.samplesPerPixel()).isBetween(1, 999_999);
+            assertThat(job.film().sampleCount(0, 0)).as("whole passes only").isEqualTo(stats.samplesPerPixel());
+        }
+    }
+
+    @Test
     void settingsRefuseNonsense() {
         RenderSettings d = RenderSettings.defaults();
         assertThatThrownBy(() -> d.withSize(0, 10)).hasMessageContaining("0x10");
