@@ -1,9 +1,5 @@
 package dev.strahl.integrator;
 
-import dev.strahl.accel.Bvh;
-import dev.strahl.accel.TraversalStack;
-import dev.strahl.geometry.Geometry;
-import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.light.LightSampler;
 import dev.strahl.material.BsdfSample;
@@ -24,7 +20,6 @@ import org.joml.Vector3d;
 public final class DirectLighting implements Integrator {
     private final Scene scene;
     private final Bsdf[] bsdfs;
-    private final Rgb[] emission;
     private final boolean cullBackFaces;
     private final int lightSamples;
 
@@ -34,7 +29,6 @@ public final class DirectLighting implements Integrator {
         }
         this.scene = scene;
         this.bsdfs = Shading.bsdfs(scene, hemisphere);
-        this.emission = Shading.emission(scene);
         this.cullBackFaces = cullBackFaces;
         this.lightSamples = lightSamples;
     }
@@ -42,39 +36,30 @@ public final class DirectLighting implements Integrator {
     @Override
     public Worker newWorker() {
         return new Worker() {
-            private final Bvh bvh = scene.bvh();
-            private final Geometry geometry = scene.geometry();
+            private final Tracer tracer = new Tracer(scene, bsdfs, cullBackFaces);
             private final LightSampler lights = scene.lights();
-            private final TraversalStack stack = Bvh.newStack();
-            private final DirectLight direct = new DirectLight(bvh, lights, stack);
             private final Shading s = new Shading();
-            private final Hit hit = new Hit();
             private final BsdfSample bs = new BsdfSample();
             private final Vector3d wi = new Vector3d();
             private final Rgb.Mutable beta = new Rgb.Mutable();
-            private long rays;
 
             @Override
             public long rayCount() {
-                return rays + direct.rays;
+                return tracer.rayCount();
             }
 
             @Override
             public void radiance(Ray ray, Rng rng, Rgb.Mutable out) {
-                out.setZero();
-                rays++;
-                hit.reset();
-                if (!bvh.intersect(ray, hit, stack, cullBackFaces)) {
+                if (tracer.trace(ray, s) < 0) {
                     out.set(scene.environment());
                     return;
                 }
-                s.at(ray, hit, geometry, bsdfs, emission);
                 out.set(s.emitted);
                 Bsdf bsdf = s.bsdf;
                 beta.set(1, 1, 1);
                 boolean lightSampling = !bsdf.isDelta() && !lights.isEmpty();
                 if (lightSampling) {
-                    direct.add(bsdf, s.sp, s.frame, s.woLocal, rng, lightSamples, 1, beta, out);
+                    tracer.direct.add(bsdf, s.sp, s.frame, s.woLocal, rng, lightSamples, 1, beta, out);
                 }
                 // One BSDF sample: the light it finds, weighted against the light samples.
                 if (!bsdf.sample(s.woLocal, rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), bs)) {
@@ -89,16 +74,14 @@ public final class DirectLighting implements Integrator {
                 s.sp.spawnOrigin(wi, ray.o);
                 ray.d.set(wi);
                 ray.tMax = Double.POSITIVE_INFINITY;
-                rays++;
-                hit.reset();
-                if (!bvh.intersect(ray, hit, stack, cullBackFaces)) {
+                double t = tracer.trace(ray, s);
+                if (t < 0) {
                     out.addProduct(beta, scene.environment(), 1);
                     return;
                 }
-                s.at(ray, hit, geometry, bsdfs, emission);
                 if (!s.emitted.isBlack()) {
                     double w = bs.delta || !lightSampling ? 1
-                            : MathUtil.powerHeuristic(bsdfPdf, lightSamples * lights.pdf(s.sp.material, hit.t, s.cosEmitter));
+                            : MathUtil.powerHeuristic(bsdfPdf, lightSamples * lights.pdf(s.sp.material, t, s.cosEmitter));
                     out.addProduct(beta, s.emitted, w);
                 }
             }

@@ -1,9 +1,5 @@
 package dev.strahl.integrator;
 
-import dev.strahl.accel.Bvh;
-import dev.strahl.accel.TraversalStack;
-import dev.strahl.geometry.Geometry;
-import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.light.LightSampler;
 import dev.strahl.material.Bsdf;
@@ -40,7 +36,6 @@ public final class PathTracer implements Integrator {
 
     private final Scene scene;
     private final Bsdf[] bsdfs;
-    private final Rgb[] emission;
     private final int maxDepth;
     private final boolean cullBackFaces;
     private final Strategy strategy;
@@ -54,7 +49,6 @@ public final class PathTracer implements Integrator {
         this.cullBackFaces = cullBackFaces;
         this.strategy = strategy;
         this.bsdfs = Shading.bsdfs(scene, hemisphere);
-        this.emission = Shading.emission(scene);
     }
 
     @Override
@@ -63,22 +57,17 @@ public final class PathTracer implements Integrator {
     }
 
     private final class PathWorker implements Worker {
-        private final Bvh bvh = scene.bvh();
-        private final Geometry geometry = scene.geometry();
+        private final Tracer tracer = new Tracer(scene, bsdfs, cullBackFaces);
         private final LightSampler lights = scene.lights();
         private final Rgb environment = scene.environment();
-        private final TraversalStack stack = Bvh.newStack();
-        private final DirectLight direct = new DirectLight(bvh, lights, stack);
         private final Shading s = new Shading();
-        private final Hit hit = new Hit();
         private final BsdfSample bs = new BsdfSample();
         private final Vector3d wiWorld = new Vector3d();
         private final Rgb.Mutable beta = new Rgb.Mutable();
-        private long rays;
 
         @Override
         public long rayCount() {
-            return rays + direct.rays;
+            return tracer.rayCount();
         }
 
         @Override
@@ -88,20 +77,18 @@ public final class PathTracer implements Integrator {
             double prevPdf = 0;
             boolean prevDelta = true;              // the camera ray: emission seen directly counts fully
             for (int depth = 1; ; depth++) {
-                rays++;
-                hit.reset();
-                if (!bvh.intersect(ray, hit, stack, cullBackFaces)) {
+                double t = tracer.trace(ray, s);
+                if (t < 0) {
                     out.addProduct(beta, environment, 1);
                     return;
                 }
-                s.at(ray, hit, geometry, bsdfs, emission);
 
                 // Emission reached by the previous BSDF sample, weighted against light sampling.
                 if (!s.emitted.isBlack()) {
                     double w = 1;
                     if (!prevDelta && strategy != Strategy.BSDF) {
                         w = strategy == Strategy.LIGHT ? 0
-                                : MathUtil.powerHeuristic(prevPdf, lights.pdf(s.sp.material, hit.t, s.cosEmitter));
+                                : MathUtil.powerHeuristic(prevPdf, lights.pdf(s.sp.material, t, s.cosEmitter));
                     }
                     out.addProduct(beta, s.emitted, w);
                 }
@@ -110,7 +97,7 @@ public final class PathTracer implements Integrator {
                 }
                 Bsdf bsdf = s.bsdf;
                 if (!bsdf.isDelta() && !lights.isEmpty() && strategy != Strategy.BSDF) {
-                    direct.add(bsdf, s.sp, s.frame, s.woLocal, rng, 1, strategy == Strategy.MIS ? 1 : 0, beta, out);
+                    tracer.direct.add(bsdf, s.sp, s.frame, s.woLocal, rng, 1, strategy == Strategy.MIS ? 1 : 0, beta, out);
                 }
 
                 // Continue the path by sampling the BSDF.

@@ -35,14 +35,6 @@ final class Shading {
         return out;
     }
 
-    static Rgb[] emission(Scene scene) {
-        Rgb[] out = new Rgb[scene.materials().size()];
-        for (int i = 0; i < out.length; i++) {
-            out[i] = scene.materials().get(i).emission();
-        }
-        return out;
-    }
-
     /**
      * Sets up shading at the hit. Two-sided BSDFs see the side of wo as their front. Where the
      * interpolated shading normal puts wo on another side than the geometric normal does (at

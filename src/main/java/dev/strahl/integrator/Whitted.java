@@ -1,9 +1,5 @@
 package dev.strahl.integrator;
 
-import dev.strahl.accel.Bvh;
-import dev.strahl.accel.TraversalStack;
-import dev.strahl.geometry.Geometry;
-import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.light.LightSampler;
 import dev.strahl.material.Bsdf;
@@ -31,7 +27,6 @@ public final class Whitted implements Integrator {
 
     private final Scene scene;
     private final Bsdf[] bsdfs;
-    private final Rgb[] emission;
     private final int maxDepth;
     private final boolean cullBackFaces;
     private final int lightSamples;
@@ -45,7 +40,6 @@ public final class Whitted implements Integrator {
         }
         this.scene = scene;
         this.bsdfs = Shading.bsdfs(scene, HemisphereSampling.COSINE);
-        this.emission = Shading.emission(scene);
         this.maxDepth = maxDepth > 0 ? maxDepth : UNBOUNDED_DEPTH;
         this.cullBackFaces = cullBackFaces;
         this.lightSamples = lightSamples;
@@ -57,18 +51,13 @@ public final class Whitted implements Integrator {
     }
 
     private final class WhittedWorker implements Worker {
-        private final Bvh bvh = scene.bvh();
-        private final Geometry geometry = scene.geometry();
+        private final Tracer tracer = new Tracer(scene, bsdfs, cullBackFaces);
         private final LightSampler lights = scene.lights();
-        private final TraversalStack stack = Bvh.newStack();
-        private final DirectLight direct = new DirectLight(bvh, lights, stack);
-        private final Hit hit = new Hit();
         // Scratch per recursion level, so that a level's state survives its children.
         private final Shading[] shading = new Shading[maxDepth + 1];
         private final BsdfSample[][] lobes = new BsdfSample[maxDepth + 1][2];
         private final Rgb.Mutable[] beta = new Rgb.Mutable[maxDepth + 1];
         private final Vector3d wi = new Vector3d();
-        private long rays;
 
         WhittedWorker() {
             for (int i = 0; i <= maxDepth; i++) {
@@ -81,7 +70,7 @@ public final class Whitted implements Integrator {
 
         @Override
         public long rayCount() {
-            return rays + direct.rays;
+            return tracer.rayCount();
         }
 
         @Override
@@ -94,14 +83,11 @@ public final class Whitted implements Integrator {
         /** Adds beta[depth-1]·L(ray) to out, where the ray is the depth-th segment of the path. */
         private void trace(Ray ray, int depth, Rng rng, Rgb.Mutable out) {
             Rgb.Mutable weight = beta[depth - 1];
-            rays++;
-            hit.reset();
-            if (!bvh.intersect(ray, hit, stack, cullBackFaces)) {
+            Shading s = shading[depth];
+            if (tracer.trace(ray, s) < 0) {
                 out.addProduct(weight, scene.environment(), 1);
                 return;
             }
-            Shading s = shading[depth];
-            s.at(ray, hit, geometry, bsdfs, emission);
             out.addProduct(weight, s.emitted, 1);
             if (depth >= maxDepth) {
                 return;
@@ -109,7 +95,7 @@ public final class Whitted implements Integrator {
             Bsdf bsdf = s.bsdf;
             if (!bsdf.isDelta()) {
                 if (!lights.isEmpty()) {
-                    direct.add(bsdf, s.sp, s.frame, s.woLocal, rng, lightSamples, 0, weight, out);
+                    tracer.direct.add(bsdf, s.sp, s.frame, s.woLocal, rng, lightSamples, 0, weight, out);
                 }
                 return;
             }
