@@ -2,7 +2,10 @@ package dev.strahl.scene;
 
 import dev.strahl.camera.Camera;
 import dev.strahl.geometry.Sphere;
+import dev.strahl.material.Dielectric;
+import dev.strahl.material.Glossy;
 import dev.strahl.material.Material;
+import dev.strahl.material.Mirror;
 import dev.strahl.math.Rgb;
 import java.io.IOException;
 import java.nio.charset.CharacterCodingException;
@@ -20,6 +23,13 @@ import org.joml.Vector3d;
  * wrong types and missing required keys are errors naming the file, line and key.
  */
 final class JsonSceneReader {
+    /** The material types of the scene file and the keys each accepts. */
+    private static final Map<String, Set<String>> MATERIAL_KEYS = Map.of(
+            "diffuse", Set.of("type", "albedo", "emission"),
+            "mirror", Set.of("type", "reflectance"),
+            "dielectric", Set.of("type", "ior"),
+            "glossy", Set.of("type", "diffuse", "specular", "exponent", "emission"));
+
     private final Path file;
     private final Map<String, Material> materials = new HashMap<>();
 
@@ -66,18 +76,66 @@ final class JsonSceneReader {
     }
 
     private Material material(String name, JsonNode node) throws SceneException {
-        Map<String, JsonNode> m = object(node, "materials." + name);
-        allowOnly(m, "materials." + name, Set.of("type", "albedo", "emission"));
-        String type = string(require(m, "type", node), "materials." + name + ".type");
-        if (!type.equals("diffuse")) {
-            throw new SceneException(file, m.get("type").line, "unknown material type '" + type + "' for 'materials." + name + "' (known: diffuse)");
+        String key = "materials." + name;
+        Map<String, JsonNode> m = object(node, key);
+        String type = string(require(m, "type", node), key + ".type");
+        Set<String> keys = MATERIAL_KEYS.get(type);
+        if (keys == null) {
+            throw new SceneException(file, m.get("type").line, "unknown material type '" + type + "' for '" + key
+                    + "' (known: " + String.join(", ", MATERIAL_KEYS.keySet().stream().sorted().toList()) + ")");
         }
-        Rgb albedo = m.containsKey("albedo") ? color(m.get("albedo"), "materials." + name + ".albedo") : Rgb.gray(0.8);
-        if (albedo.max() > 1) {
-            throw new SceneException(file, m.get("albedo").line, "'materials." + name + ".albedo' must lie in [0, 1], got " + albedo);
+        if (m.containsKey("emission") && !keys.contains("emission")) {
+            throw new SceneException(file, m.get("emission").line, "'" + key + ".emission': a " + type
+                    + " material cannot emit light; emission is allowed on diffuse and glossy materials (a one-sided area light)");
         }
-        Rgb emission = m.containsKey("emission") ? color(m.get("emission"), "materials." + name + ".emission") : Rgb.BLACK;
-        return Material.emissive(name, albedo, emission);
+        allowOnly(m, key + " of type " + type, keys);
+        switch (type) {
+            case "mirror": {
+                Rgb reflectance = m.containsKey("reflectance") ? unitColor(m.get("reflectance"), key + ".reflectance") : Rgb.WHITE;
+                return new Material(name, new Mirror(reflectance), Rgb.BLACK);
+            }
+            case "dielectric": {
+                double ior = 1.5;
+                if (m.containsKey("ior")) {
+                    ior = number(m.get("ior"), key + ".ior");
+                    if (!(ior > 0)) {
+                        throw new SceneException(file, m.get("ior").line, "'" + key + ".ior' must be positive, got " + format(ior));
+                    }
+                }
+                return new Material(name, new Dielectric(ior), Rgb.BLACK);
+            }
+            case "glossy": {
+                Rgb kd = m.containsKey("diffuse") ? unitColor(m.get("diffuse"), key + ".diffuse") : Rgb.BLACK;
+                Rgb ks = unitColor(require(m, "specular", node), key + ".specular");
+                double ns = number(require(m, "exponent", node), key + ".exponent");
+                if (!(ns >= 0)) {
+                    throw new SceneException(file, m.get("exponent").line, "'" + key + ".exponent' must be >= 0, got " + format(ns));
+                }
+                return new Material(name, Glossy.fromPhongExponent(kd, ks, ns), emission(m, key));
+            }
+            default: {
+                Rgb albedo = m.containsKey("albedo") ? unitColor(m.get("albedo"), key + ".albedo") : Rgb.gray(0.8);
+                return Material.emissive(name, albedo, emission(m, key));
+            }
+        }
+    }
+
+    private Rgb emission(Map<String, JsonNode> m, String key) throws SceneException {
+        return m.containsKey("emission") ? color(m.get("emission"), key + ".emission") : Rgb.BLACK;
+    }
+
+    /** A colour with every channel in [0, 1] (a reflectance). */
+    private Rgb unitColor(JsonNode node, String key) throws SceneException {
+        Rgb c = color(node, key);
+        if (c.max() > 1) {
+            throw new SceneException(file, node.line, "'" + key + "' must lie in [0, 1], got " + c);
+        }
+        return c;
+    }
+
+    /** A number as a user wrote it: 0 rather than 0.0. */
+    private static String format(double v) {
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
     }
 
     private void shape(JsonNode node, Scene.Builder builder) throws SceneException {

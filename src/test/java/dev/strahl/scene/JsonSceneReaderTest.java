@@ -6,8 +6,11 @@ import static org.assertj.core.api.Assertions.within;
 
 import dev.strahl.camera.Camera;
 import dev.strahl.geometry.Aabb;
+import dev.strahl.material.Dielectric;
+import dev.strahl.material.Glossy;
 import dev.strahl.material.Lambert;
 import dev.strahl.material.Material;
+import dev.strahl.material.Mirror;
 import dev.strahl.math.Rgb;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -178,6 +181,107 @@ class JsonSceneReaderTest {
                 """);
         assertThat(scene.environment()).isEqualTo(Rgb.BLACK);
         assertThat(scene.notes()).isEmpty();
+    }
+
+    // ---- material types --------------------------------------------------------------------------
+
+    @Test
+    void readsEveryMaterialType() throws Exception {
+        Scene scene = read("""
+                {
+                  "materials": {
+                    "silver": { "type": "mirror", "reflectance": [0.95, 0.9, 0.85] },
+                    "glass":  { "type": "dielectric", "ior": 2.5 },
+                    "paint":  { "type": "glossy", "diffuse": [0.2, 0.3, 0.4], "specular": [0.5, 0.4, 0.3], "exponent": 32 },
+                    "panel":  { "type": "glossy", "specular": [0.1, 0.1, 0.1], "exponent": 0, "emission": [2, 3, 4] }
+                  },
+                  "shapes": [
+                    { "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "silver" },
+                    { "type": "sphere", "center": [3, 0, 0], "radius": 1, "material": "glass" },
+                    { "type": "sphere", "center": [6, 0, 0], "radius": 1, "material": "paint" },
+                    { "type": "sphere", "center": [9, 0, 0], "radius": 1, "material": "panel" }
+                  ]
+                }
+                """);
+        Material silver = material(scene, "silver");
+        assertThat(silver.bsdf()).isEqualTo(new Mirror(new Rgb(0.95, 0.9, 0.85)));
+        assertThat(silver.isEmissive()).isFalse();
+
+        Material glass = material(scene, "glass");
+        assertThat(glass.bsdf()).isEqualTo(new Dielectric(2.5));
+        assertThat(glass.isEmissive()).isFalse();
+
+        Material paint = material(scene, "paint");
+        assertThat(paint.bsdf()).isEqualTo(Glossy.fromPhongExponent(new Rgb(0.2, 0.3, 0.4), new Rgb(0.5, 0.4, 0.3), 32));
+        Glossy g = (Glossy) paint.bsdf();
+        assertThat(g.diffuse()).isEqualTo(new Rgb(0.2, 0.3, 0.4));
+        assertThat(g.specular()).isEqualTo(new Rgb(0.5, 0.4, 0.3));
+        assertThat(g.alpha()).isCloseTo(Math.sqrt(2.0 / 34), within(1e-15));
+        assertThat(paint.isEmissive()).isFalse();
+
+        // A glossy emitter: a one-sided area light that also reflects.
+        Material panel = material(scene, "panel");
+        assertThat(panel.emission()).isEqualTo(new Rgb(2, 3, 4));
+        assertThat(((Glossy) panel.bsdf()).alpha()).isEqualTo(1);
+        assertThat(scene.lights().isEmpty()).isFalse();
+        assertThat(scene.notes()).isEmpty();
+    }
+
+    @Test
+    void mirrorReflectanceDefaultsToWhite() throws Exception {
+        Scene scene = read("""
+                {
+                  "materials": { "m": { "type": "mirror" } },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE));
+        assertThat(material(scene, "m").bsdf()).isEqualTo(new Mirror(Rgb.WHITE));
+        assertThat(material(scene, "m").emission()).isEqualTo(Rgb.BLACK);
+    }
+
+    @Test
+    void dielectricIorDefaultsTo15() throws Exception {
+        Scene scene = read("""
+                {
+                  "materials": { "m": { "type": "dielectric" } },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE));
+        assertThat(material(scene, "m").bsdf()).isEqualTo(new Dielectric(1.5));
+    }
+
+    @Test
+    void glossyDiffuseDefaultsToBlackAndEmissionToBlack() throws Exception {
+        Scene scene = read("""
+                {
+                  "materials": { "m": { "type": "glossy", "specular": [0.7, 0.7, 0.7], "exponent": 100 } },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE));
+        Material m = material(scene, "m");
+        Glossy g = (Glossy) m.bsdf();
+        assertThat(g.diffuse()).isEqualTo(Rgb.BLACK);
+        assertThat(g.specular()).isEqualTo(Rgb.gray(0.7));
+        assertThat(g.alpha()).isCloseTo(Glossy.alphaFromPhongExponent(100), within(1e-15));
+        assertThat(m.emission()).isEqualTo(Rgb.BLACK);
+    }
+
+    @Test
+    void glossyWithDiffusePlusSpecularAboveOneIsNormalisedLikeTheMtlRoute() throws Exception {
+        // The Glossy Cornell sphere: Kd + Ks = 1.363 in blue, so both are divided by 1.363 (DESIGN.md §3).
+        Scene scene = read("""
+                {
+                  "materials": { "m": { "type": "glossy", "diffuse": [0.486, 0.631, 0.663],
+                                        "specular": [0.7, 0.7, 0.7], "exponent": 32 } },
+                  "shapes": [ %s ],
+                  "environment": [1, 1, 1]
+                }
+                """.formatted(SPHERE));
+        Glossy g = (Glossy) material(scene, "m").bsdf();
+        assertThat(g.diffuse().b() + g.specular().b()).isCloseTo(1, within(1e-12));
+        assertThat(g.diffuse().r()).isCloseTo(0.486 / 1.363, within(1e-12));
+        assertThat(g.specular().g()).isCloseTo(0.7 / 1.363, within(1e-12));
+        assertThat(scene.notes()).as("the normalisation is the documented mapping, not a problem").isEmpty();
     }
 
     // ---- OBJ paths -------------------------------------------------------------------------------
@@ -484,11 +588,11 @@ class JsonSceneReaderTest {
             bad("unknown material type", 3, """
                 {
                   "materials": {
-                    "m": { "type": "glossy" }
+                    "m": { "type": "metal" }
                   },
                   "shapes": [ %s ]
                 }
-                """.formatted(SPHERE), "unknown material type 'glossy'", "materials.m", "known: diffuse"),
+                """.formatted(SPHERE), "unknown material type 'metal'", "materials.m", "known: dielectric, diffuse, glossy, mirror"),
             bad("unknown shape type", 4, """
                 {
                   %s
@@ -586,7 +690,168 @@ class JsonSceneReaderTest {
                   "shapes": [ %s ],
                   "camera": { "lookFrom": [0, 0, 5], "lookAt": [0, 0, 0], "fov": 180 }
                 }
-                """.formatted(MATERIALS, SPHERE), "bad 'camera'", "field of view"));
+                """.formatted(MATERIALS, SPHERE), "bad 'camera'", "field of view"),
+            // the material types beyond diffuse
+            bad("emission on a mirror", 4, """
+                {
+                  "materials": {
+                    "m": { "type": "mirror",
+                           "emission": [1, 1, 1] }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "'materials.m.emission'", "a mirror material cannot emit light", "diffuse and glossy"),
+            bad("emission on a dielectric", 3, """
+                {
+                  "materials": {
+                    "m": { "type": "dielectric", "ior": 1.5, "emission": [1, 1, 1] }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "'materials.m.emission'", "a dielectric material cannot emit light"),
+            bad("albedo on a mirror", 4, """
+                {
+                  "materials": {
+                    "m": { "type": "mirror",
+                           "albedo": [1, 1, 1] }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "unknown key 'albedo' in materials.m of type mirror", "known: reflectance, type"),
+            bad("eta instead of ior", 3, """
+                {
+                  "materials": {
+                    "m": { "type": "dielectric", "eta": 1.5 }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "unknown key 'eta' in materials.m of type dielectric", "known: ior, type"),
+            bad("roughness on a glossy material", 4, """
+                {
+                  "materials": {
+                    "m": { "type": "glossy", "specular": [0.5, 0.5, 0.5], "exponent": 10,
+                           "roughness": 0.1 }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "unknown key 'roughness' in materials.m of type glossy",
+                "known: diffuse, emission, exponent, specular, type"),
+            bad("mirror reflectance above 1", 3, """
+                {
+                  "materials": {
+                    "m": { "type": "mirror", "reflectance": [0.9, 1.1, 0.9] }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "'materials.m.reflectance' must lie in [0, 1]"),
+            bad("negative mirror reflectance", 3, """
+                {
+                  "materials": {
+                    "m": { "type": "mirror", "reflectance": [0.9, -0.1, 0.9] }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "'materials.m.reflectance' must not be negative"),
+            bad("mirror reflectance is a number", 3, """
+                {
+                  "materials": {
+                    "m": { "type": "mirror", "reflectance": 0.95 }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "'materials.m.reflectance' must be an array, got a number"),
+            bad("ior of zero", 4, """
+                {
+                  "materials": {
+                    "m": { "type": "dielectric",
+                           "ior": 0 }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "'materials.m.ior' must be positive, got 0"),
+            bad("negative ior", 3, """
+                {
+                  "materials": {
+                    "m": { "type": "dielectric", "ior": -1.5 }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "'materials.m.ior' must be positive, got -1.5"),
+            bad("ior is a string", 3, """
+                {
+                  "materials": {
+                    "m": { "type": "dielectric", "ior": "glass" }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "'materials.m.ior' must be a number, got a string"),
+            bad("glossy without specular", 3, """
+                {
+                  "materials": {
+                    "m": { "type": "glossy", "diffuse": [0.5, 0.5, 0.5], "exponent": 10 }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "missing required key 'specular'"),
+            bad("glossy without exponent", 3, """
+                {
+                  "materials": {
+                    "m": { "type": "glossy", "specular": [0.5, 0.5, 0.5] }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "missing required key 'exponent'"),
+            bad("negative glossy exponent", 5, """
+                {
+                  "materials": {
+                    "m": { "type": "glossy",
+                           "specular": [0.5, 0.5, 0.5],
+                           "exponent": -2 }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "'materials.m.exponent' must be >= 0, got -2"),
+            bad("glossy exponent is an array", 3, """
+                {
+                  "materials": {
+                    "m": { "type": "glossy", "specular": [0.5, 0.5, 0.5], "exponent": [10] }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "'materials.m.exponent' must be a number, got an array"),
+            bad("glossy specular above 1", 3, """
+                {
+                  "materials": {
+                    "m": { "type": "glossy", "specular": [1.5, 0.5, 0.5], "exponent": 10 }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "'materials.m.specular' must lie in [0, 1]"),
+            bad("glossy diffuse above 1", 4, """
+                {
+                  "materials": {
+                    "m": { "type": "glossy", "specular": [0.5, 0.5, 0.5], "exponent": 10,
+                           "diffuse": [0.5, 0.5, 2] }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "'materials.m.diffuse' must lie in [0, 1]"),
+            bad("glossy diffuse with two numbers", 3, """
+                {
+                  "materials": {
+                    "m": { "type": "glossy", "diffuse": [0.5, 0.5], "specular": [0.5, 0.5, 0.5], "exponent": 10 }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "'materials.m.diffuse' must have 3 numbers, got 2"),
+            bad("negative glossy emission", 3, """
+                {
+                  "materials": {
+                    "m": { "type": "glossy", "specular": [0.5, 0.5, 0.5], "exponent": 10, "emission": [-1, 0, 0] }
+                  },
+                  "shapes": [ %s ]
+                }
+                """.formatted(SPHERE), "'materials.m.emission' must not be negative"));
     }
 
     private static Arguments bad(String name, int line, String json, String... fragments) {
