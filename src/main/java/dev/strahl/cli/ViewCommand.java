@@ -1,0 +1,93 @@
+package dev.strahl.cli;
+
+import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.scene.SceneException;
+import dev.strahl.viewer.Theme;
+import dev.strahl.viewer.Viewer;
+import dev.strahl.viewer.ViewerOptions;
+import java.awt.AWTError;
+import java.awt.HeadlessException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code strahl view}: opens the interactive viewer. */
+@Command(name = "view",
+        mixinStandardHelpOptions = true,
+        versionProvider = Main.Version.class,
+        description = {"Opens a window that renders a scene progressively, one sample per pixel at a time.",
+            "Drag to orbit (left) or pan (right/middle), wheel to dolly; F1 in the window lists all controls.",
+            "Without SCENE, shows the Cornell Box (scenes/cornell-box.json)."},
+        sortOptions = false)
+final class ViewCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE", description = "Scene file: .json (strahl scene) or .obj (with its .mtl).")
+    Path scene;
+
+    @Option(names = "--width", defaultValue = "512", description = "Film width in pixels at start; resizing the window keeps the aspect (default: ${DEFAULT-VALUE}).")
+    int width;
+
+    @Option(names = "--height", defaultValue = "512", description = "Film height in pixels at start (default: ${DEFAULT-VALUE}).")
+    int height;
+
+    @Option(names = "--spp", defaultValue = "1024", description = "Stop at this many samples per pixel; 0 = never stop (default: ${DEFAULT-VALUE}).")
+    int spp;
+
+    @Option(names = "--max-depth", defaultValue = "-1",
+            description = "Path segments including the camera segment: 1 = emitters only, 2 = direct light, -1 = unbounded (default: ${DEFAULT-VALUE}).")
+    int maxDepth;
+
+    @Option(names = "--hemisphere", defaultValue = "cosine", paramLabel = "cosine|uniform",
+            description = "Diffuse direction sampling: cosine-weighted or uniform (default: ${DEFAULT-VALUE}).")
+    HemisphereSampling hemisphere;
+
+    @Option(names = "--integrator", defaultValue = "path", paramLabel = "path|direct|whitted",
+            description = "Light transport: path (unbiased global illumination), direct (direct light only) or whitted (recursive ray tracing) (default: ${DEFAULT-VALUE}).")
+    IntegratorKind integrator;
+
+    @Option(names = "--light-samples", defaultValue = "1", paramLabel = "N",
+            description = "Shadow rays per diffuse hit for direct and whitted (default: ${DEFAULT-VALUE}).")
+    int lightSamples;
+
+    @Option(names = "--threads", defaultValue = "0", description = "Worker threads; 0 = all processors (default: ${DEFAULT-VALUE}).")
+    int threads;
+
+    @Option(names = "--seed", defaultValue = "0", description = "Random seed (default: ${DEFAULT-VALUE}).")
+    long seed;
+
+    @Option(names = "--theme", defaultValue = "system", paramLabel = "system|light|dark",
+            description = "Light or dark look; system follows the desktop where it can (default: ${DEFAULT-VALUE}).")
+    String theme;
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        try {
+            ViewerOptions options = new ViewerOptions(scene, width, height, spp, maxDepth, hemisphere, threads, seed,
+                    integrator, lightSamples, Theme.parse(theme));
+            Viewer.open(options).awaitClosed();
+            return 0;
+        } catch (SceneException | IllegalArgumentException e) {
+            err.println("strahl: " + e.getMessage());
+            return 2;
+        } catch (HeadlessException e) {
+            err.println("strahl: view needs a display: DISPLAY is not set, or java.awt.headless is true");
+            return 1;
+        } catch (AWTError e) {
+            err.println("strahl: cannot open a window: " + e.getMessage());
+            return 1;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return 1;
+        }
+    }
+}

@@ -1,0 +1,155 @@
+package dev.strahl.viewer;
+
+import dev.strahl.film.ImageWriters;
+import dev.strahl.scene.Scene;
+import dev.strahl.scene.SceneException;
+import dev.strahl.scene.SceneLoader;
+import java.awt.event.KeyEvent;
+import java.io.File;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.ExecutionException;
+import java.util.function.Consumer;
+import javax.swing.Action;
+import javax.swing.JFileChooser;
+import javax.swing.JFrame;
+import javax.swing.JOptionPane;
+import javax.swing.KeyStroke;
+import javax.swing.SwingWorker;
+import javax.swing.filechooser.FileNameExtensionFilter;
+
+/**
+ * Opening a scene and saving the image. Files are read and written on background threads
+ * ({@link SwingWorker}); errors become a dialog with the one-line message, and a scene that fails
+ * to load leaves the current one on screen.
+ */
+final class FileActions {
+    private final JFrame frame;
+    private final RenderController controller;
+    private final FramePresenter presenter;
+    private final Consumer<String> status;
+    private final Consumer<Path> onSceneOpened;
+    private Path sceneFile;
+
+    final Action open;
+    final Action save;
+
+    FileActions(JFrame frame, RenderController controller, FramePresenter presenter, Consumer<String> status,
+                Path sceneFile, Consumer<Path> onSceneOpened) {
+        this.frame = frame;
+        this.controller = controller;
+        this.presenter = presenter;
+        this.status = status;
+        this.sceneFile = sceneFile;
+        this.onSceneOpened = onSceneOpened;
+        open = ViewerActions.action("Open scene…", Icons.open(), "Open a scene file (.json or .obj)",
+                KeyStroke.getKeyStroke(KeyEvent.VK_O, ViewerActions.menuMask()), e -> chooseScene());
+        save = ViewerActions.action("Save image…", Icons.save(), "Save the current image as PNG (sRGB) or PFM (linear)",
+                KeyStroke.getKeyStroke(KeyEvent.VK_S, ViewerActions.menuMask()), e -> chooseImageFile());
+    }
+
+    private void chooseScene() {
+        JFileChooser chooser = new JFileChooser(sceneFile != null && sceneFile.toAbsolutePath().getParent() != null
+                ? sceneFile.toAbsolutePath().getParent().toFile() : new File("."));
+        chooser.setDialogTitle("Open scene");
+        chooser.setFileFilter(new FileNameExtensionFilter("Scenes (*.json, *.obj)", "json", "obj"));
+        if (chooser.showOpenDialog(frame) == JFileChooser.APPROVE_OPTION) {
+            openScene(chooser.getSelectedFile().toPath());
+        }
+    }
+
+    /** Loads {@code file} in the background and shows it; on failure shows the error and keeps the current scene. */
+    void openScene(Path file) {
+        status.accept("Loading " + file.getFileName() + "…");
+        new SwingWorker<Scene, Void>() {
+            @Override
+            protected Scene doInBackground() throws SceneException {
+                return SceneLoader.load(file);
+            }
+
+            @Override
+            protected void done() {
+                try {
+                    controller.setScene(get());
+                    sceneFile = file;
+                    onSceneOpened.accept(file);
+                    status.accept("Opened " + file.getFileName());
+                } catch (ExecutionException e) {
+                    Throwable cause = e.getCause();
+                    String text = cause instanceof SceneException ? cause.getMessage() : file + ": " + cause;
+                    status.accept("Could not open " + file.getFileName());
+                    JOptionPane.showMessageDialog(frame, text, "Cannot open scene", JOptionPane.ERROR_MESSAGE);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }
+        }.execute();
+    }
+
+    private void chooseImageFile() {
+        RenderController.Frame shot = presenter.latest();
+        if (shot == null) {
+            status.accept("Nothing to save yet");
+            return;
+        }
+        FileNameExtensionFilter png = new FileNameExtensionFilter("PNG image, sRGB 8 bit (*.png)", "png");
+        FileNameExtensionFilter pfm = new FileNameExtensionFilter("PFM image, linear float (*.pfm)", "pfm");
+        JFileChooser chooser = new JFileChooser(new File("."));
+        chooser.setDialogTitle("Save image");
+        chooser.addChoosableFileFilter(png);
+        chooser.addChoosableFileFilter(pfm);
+        chooser.setFileFilter(png);
+        chooser.setSelectedFile(new File(defaultName(sceneFile, shot.samplesPerPixel())));
+        if (chooser.showSaveDialog(frame) != JFileChooser.APPROVE_OPTION) {
+            return;
+        }
+        Path out = withExtension(chooser.getSelectedFile().toPath(), chooser.getFileFilter() == pfm ? "pfm" : "png");
+        if (Files.exists(out) && JOptionPane.showConfirmDialog(frame, out + " exists. Replace it?", "Save image",
+                JOptionPane.OK_CANCEL_OPTION, JOptionPane.WARNING_MESSAGE) != JOptionPane.OK_OPTION) {
+            return;
+        }
+        saveImage(presenter.latest(), out);   // the newest image, not the one from when the dialog opened
+    }
+
+    /** Writes {@code shot} to {@code out} in the background (atomically, by {@link ImageWriters}). */
+    void saveImage(RenderController.Frame shot, Path out) {
+        new SwingWorker<Void, Void>() {
+            @Override
+            protected Void doInBackground() throws Exception {
+                ImageWriters.write(shot.image(), out);
+                return null;
+            }
+
+            @Override
+            protected void done() {
+                try {
+                    get();
+                    status.accept("Saved " + out.getFileName() + " (" + shot.samplesPerPixel() + " spp"
+                            + (shot.preview() ? ", preview" : "") + ")");
+                } catch (ExecutionException e) {
+                    JOptionPane.showMessageDialog(frame, "Cannot write " + out + ": " + e.getCause().getMessage(),
+                            "Cannot save image", JOptionPane.ERROR_MESSAGE);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }
+        }.execute();
+    }
+
+    /** "cornell-box-64spp.png" for the scene file and sample count. */
+    static String defaultName(Path scene, int spp) {
+        String base = scene == null || scene.getFileName() == null ? "strahl" : scene.getFileName().toString();
+        int dot = base.lastIndexOf('.');
+        return (dot > 0 ? base.substring(0, dot) : base) + "-" + spp + "spp.png";
+    }
+
+    /** {@code file} itself if it names a .png or .pfm, else with {@code ext} appended. */
+    static Path withExtension(Path file, String ext) {
+        String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
+        if (name.endsWith(".png") || name.endsWith(".pfm")) {
+            return file;
+        }
+        return file.resolveSibling(file.getFileName() + "." + ext);
+    }
+}

@@ -1,0 +1,465 @@
+package dev.strahl.viewer;
+
+import dev.strahl.film.Image;
+import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.render.RenderJob;
+import dev.strahl.render.RenderListener;
+import dev.strahl.render.RenderSettings;
+import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.scene.Scene;
+import java.util.Objects;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import java.util.function.LongSupplier;
+import java.util.function.UnaryOperator;
+
+/**
+ * What the viewer renders and when: the state machine behind pause, resume, restart, stop-at-N
+ * and camera moves. No Swing and no rendering code; it starts {@link RenderJob}s (through a
+ * {@link JobStarter}) and hands their images to a sink. Thread-safe: user actions call it from
+ * the event dispatch thread, render threads report passes, a timer ends camera moves. No method
+ * waits for rendering.
+ *
+ * <h2>Passes and holding</h2>
+ * Each job renders passes of 1 sample per pixel without end. After every pass the job's
+ * coordinator thread reports to this controller, which holds it there (the workers then idle)
+ * while the viewer is paused or has reached its stop-at count, and lets it go on when resumed or
+ * when the count is raised. So pausing keeps the accumulated samples, and holding costs nothing.
+ * A held thread is released at once when its job is replaced or the controller is closed.
+ *
+ * <h2>Moving the camera</h2>
+ * A camera move or a window resize starts a preview job at a quarter of the resolution in each
+ * axis; further moves while a preview has not yet shown its first pass are collected and applied
+ * when it has, so every preview job shows one image and the preview rate is the render rate.
+ * {@value #SETTLE_MILLIS} ms after the last move, full-resolution accumulation starts again.
+ * Other changes (start, restart, scene, integrator, depth, sampling, camera reset) render one
+ * reduced-resolution pass first, which takes a few milliseconds, so that the change shows at
+ * once, and then restart at full resolution.
+ */
+final class RenderController {
+
+    /** RUNNING: accumulating; PAUSED: held by the user; DONE: held at the stop-at count; CLOSED: for good. */
+    enum State { RUNNING, PAUSED, DONE, CLOSED }
+
+    /** Quiet time after the last camera move before full-resolution rendering restarts. */
+    static final long SETTLE_MILLIS = 150;
+    /** The preview's film is this many times smaller in each axis. */
+    static final int PREVIEW_DIVISOR = 4;
+    /** Stop-at value meaning "never stop". */
+    static final int UNLIMITED = 0;
+
+    /** A running render as the controller sees it: a {@link RenderJob}, or a stand-in in tests. */
+    interface Job {
+        void cancel();
+
+        long samplesDone();
+    }
+
+    /** Starts a job that reports its passes to {@code listener}. */
+    interface JobStarter {
+        Job start(Scene scene, RenderSettings settings, RenderListener listener);
+    }
+
+    /** Runs a task after a delay on some other thread; the returned handle cancels it. */
+    interface Scheduler {
+        Runnable schedule(Runnable task, long delayMillis);
+
+        void shutdown();
+    }
+
+    /** One image to show: the mean after {@code samplesPerPixel} samples of job number {@code generation}. */
+    record Frame(Image image, int samplesPerPixel, boolean preview, long generation) {}
+
+    /** What the status bar shows. {@code seconds} counts only the time the job was not held. */
+    record Status(State state, boolean preview, int samplesPerPixel, int stopAt, double seconds, long samples,
+                  int width, int height, IntegratorKind integrator, int maxDepth, HemisphereSampling hemisphere, long generation) {
+        double samplesPerSecond() {
+            return seconds > 0 ? samples / seconds : 0;
+        }
+    }
+
+    private final JobStarter starter;
+    private final Consumer<Frame> sink;
+    private final Scheduler scheduler;
+    private final LongSupplier nanoTime;
+
+    private Scene scene;
+    private OrbitCamera home;
+    private OrbitCamera camera;
+    private RenderSettings settings;          // full-resolution settings (size = the window's film)
+    private int stopAt;
+    private State state = State.RUNNING;
+
+    private long generation;
+    private Job job;
+    private boolean preview;
+    private int samplesPerPixel;
+    private int passes;
+    private boolean cameraPending;
+    private boolean glance;
+    private boolean waitingForDisplay;
+    private Runnable cancelSettle;
+    private long settleToken;
+    private long activeNanos;
+    private long runningSince = -1;
+
+    RenderController(Scene scene, RenderSettings settings, int stopAt,
+                     JobStarter starter, Consumer<Frame> sink, Scheduler scheduler, LongSupplier nanoTime) {
+        this.scene = Objects.requireNonNull(scene, "scene");
+        this.home = OrbitCamera.of(scene.camera());
+        this.camera = home;
+        this.settings = Objects.requireNonNull(settings, "settings");
+        this.stopAt = checkStopAt(stopAt);
+        this.starter = starter;
+        this.sink = sink;
+        this.scheduler = scheduler;
+        this.nanoTime = nanoTime;
+    }
+
+    /** A controller that runs real {@link RenderJob}s and times camera moves on its own daemon thread. */
+    static RenderController rendering(Scene scene, RenderSettings settings, int stopAt, Consumer<Frame> sink) {
+        return new RenderController(scene, settings, stopAt, RenderController::startRenderJob, sink,
+                executorScheduler(), System::nanoTime);
+    }
+
+    private static Job startRenderJob(Scene scene, RenderSettings settings, RenderListener listener) {
+        RenderJob job = RenderJob.start(scene, settings, listener);
+        return new Job() {
+            @Override
+            public void cancel() {
+                job.cancel();
+            }
+
+            @Override
+            public long samplesDone() {
+                return job.samplesDone();
+            }
+        };
+    }
+
+    private static Scheduler executorScheduler() {
+        ScheduledExecutorService timer = Executors.newSingleThreadScheduledExecutor(r -> {
+            Thread t = new Thread(r, "strahl-viewer-timer");
+            t.setDaemon(true);
+            return t;
+        });
+        return new Scheduler() {
+            @Override
+            public Runnable schedule(Runnable task, long delayMillis) {
+                ScheduledFuture<?> f = timer.schedule(task, delayMillis, TimeUnit.MILLISECONDS);
+                return () -> f.cancel(false);
+            }
+
+            @Override
+            public void shutdown() {
+                timer.shutdownNow();
+            }
+        };
+    }
+
+    private static int checkStopAt(int n) {
+        if (n < 0) {
+            throw new IllegalArgumentException("stop-at samples per pixel must be >= 0 (0 = never stop), got " + n);
+        }
+        return n;
+    }
+
+    // --- user actions ------------------------------------------------------------------------
+
+    /** Starts the first render. */
+    synchronized void start() {
+        if (job == null && state != State.CLOSED) {
+            startJob(Mode.GLANCE);
+        }
+    }
+
+    /**
+     * Starts with the quick reduced-resolution pass only, and holds there until
+     * {@link #displayReady()}: the window is built while only that small pass competes with it
+     * for the processors, and full-resolution rendering starts once it is on screen.
+     */
+    synchronized void startBeforeDisplay() {
+        waitingForDisplay = true;
+        start();
+    }
+
+    /** The window is on screen: full-resolution rendering may start. */
+    synchronized void displayReady() {
+        waitingForDisplay = false;
+        notifyAll();
+    }
+
+    /** Pauses a running render, or resumes a paused one; a finished one stays finished. */
+    synchronized void togglePause() {
+        if (state == State.RUNNING) {
+            state = State.PAUSED;
+        } else if (state == State.PAUSED) {
+            state = reachedStop() ? State.DONE : State.RUNNING;
+            notifyAll();
+        }
+    }
+
+    /** Throws away the samples and renders again from the first. */
+    synchronized void restart() {
+        if (state != State.CLOSED) {
+            startJob(Mode.GLANCE);
+        }
+    }
+
+    /** Samples per pixel at which to hold, or {@link #UNLIMITED}; raising it continues a finished render. */
+    synchronized void setStopAt(int n) {
+        stopAt = checkStopAt(n);
+        if (state == State.DONE && !reachedStop()) {
+            state = State.RUNNING;
+            notifyAll();
+        }
+    }
+
+    synchronized void setMaxDepth(int maxDepth) {
+        changeSettings(settings.withMaxDepth(maxDepth));
+    }
+
+    synchronized void setHemisphere(HemisphereSampling hemisphere) {
+        changeSettings(settings.withHemisphere(hemisphere));
+    }
+
+    synchronized void setIntegrator(IntegratorKind integrator) {
+        changeSettings(settings.withIntegrator(integrator));
+    }
+
+    private void changeSettings(RenderSettings s) {
+        if (!s.equals(settings)) {
+            settings = s;
+            if (state != State.CLOSED) {
+                startJob(Mode.GLANCE);
+            }
+        }
+    }
+
+    /** Shows another scene, from its own camera. */
+    synchronized void setScene(Scene newScene) {
+        scene = Objects.requireNonNull(newScene, "scene");
+        home = OrbitCamera.of(newScene.camera());
+        camera = home;
+        if (state != State.CLOSED) {
+            startJob(Mode.GLANCE);
+        }
+    }
+
+    /** Moves the camera (orbit, pan, dolly): preview now, full resolution once the moves stop. */
+    synchronized void moveCamera(UnaryOperator<OrbitCamera> move) {
+        camera = move.apply(camera);
+        moving();
+    }
+
+    /** Back to the scene's camera. */
+    synchronized void resetCamera() {
+        camera = home;
+        if (state != State.CLOSED) {
+            startJob(Mode.GLANCE);
+        }
+    }
+
+    /** The film follows the window: a new size previews like a camera move. */
+    synchronized void resize(int width, int height) {
+        if (width == settings.width() && height == settings.height()) {
+            return;
+        }
+        settings = settings.withSize(width, height);
+        moving();
+    }
+
+    /** Stops rendering for good: the workers stop after the row they are on; held threads are released. */
+    synchronized void close() {
+        state = State.CLOSED;
+        generation++;
+        if (job != null) {
+            job.cancel();
+            job = null;
+        }
+        if (cancelSettle != null) {
+            cancelSettle.run();
+        }
+        notifyAll();
+        scheduler.shutdown();
+    }
+
+    // --- queries -----------------------------------------------------------------------------
+
+    synchronized Status status() {
+        long samples = job != null ? job.samplesDone() : 0;
+        int w = preview ? previewSize(settings.width()) : settings.width();
+        int h = preview ? previewSize(settings.height()) : settings.height();
+        return new Status(state, preview, samplesPerPixel, stopAt, seconds(), samples, w, h, settings.integrator(),
+                settings.maxDepth(), settings.hemisphere(), generation);
+    }
+
+    synchronized OrbitCamera camera() {
+        return camera;
+    }
+
+    synchronized Scene scene() {
+        return scene;
+    }
+
+    synchronized RenderSettings settings() {
+        return settings;
+    }
+
+    synchronized int stopAt() {
+        return stopAt;
+    }
+
+    // --- jobs --------------------------------------------------------------------------------
+
+    private void moving() {
+        if (state == State.CLOSED) {
+            return;
+        }
+        scheduleSettle();
+        glance = false;                      // the settle timer decides when full resolution starts
+        if (preview && passes == 0 && job != null) {
+            cameraPending = true;            // applied when this preview has shown its first pass
+        } else {
+            startJob(Mode.PREVIEW);
+        }
+    }
+
+    private void scheduleSettle() {
+        if (cancelSettle != null) {
+            cancelSettle.run();
+        }
+        long token = ++settleToken;
+        cancelSettle = scheduler.schedule(() -> settle(token), SETTLE_MILLIS);
+    }
+
+    private synchronized void settle(long token) {
+        if (token == settleToken && state != State.CLOSED) {
+            cancelSettle = null;
+            startJob(Mode.FULL);
+        }
+    }
+
+    /**
+     * PREVIEW: reduced resolution while the camera moves. FULL: full resolution. GLANCE: one
+     * reduced-resolution pass first (a few milliseconds, so a change shows at once), then FULL.
+     */
+    private enum Mode { PREVIEW, GLANCE, FULL }
+
+    private void startJob(Mode mode) {
+        boolean previewJob = mode != Mode.FULL;
+        generation++;
+        if (job != null) {
+            job.cancel();
+        }
+        notifyAll();                         // releases the old job's coordinator if it is held
+        if (mode != Mode.PREVIEW && cancelSettle != null) {
+            cancelSettle.run();
+            cancelSettle = null;
+            settleToken++;
+        }
+        preview = previewJob;
+        glance = mode == Mode.GLANCE;
+        samplesPerPixel = 0;
+        passes = 0;
+        cameraPending = false;
+        activeNanos = 0;
+        runningSince = nanoTime.getAsLong();
+        if (state == State.DONE) {
+            state = State.RUNNING;
+        }
+        RenderSettings s = settings.withTimeLimit(java.time.Duration.ZERO);
+        if (previewJob) {
+            s = s.withSize(previewSize(s.width()), previewSize(s.height()));
+        }
+        s = s.withSamplesPerPixel(Integer.MAX_VALUE).withSamplesPerPass(1);
+        long g = generation;
+        job = starter.start(scene.withCamera(camera.toCamera()), s, new RenderListener() {
+            @Override
+            public void passCompleted(int spp, Image image) {
+                onPass(g, spp, image);
+            }
+        });
+    }
+
+    static int previewSize(int size) {
+        return Math.max(1, Math.round(size / (float) PREVIEW_DIVISOR));
+    }
+
+    /** Called by job {@code g}'s coordinator thread after each pass; holds it while paused or done. */
+    private void onPass(long g, int spp, Image image) {
+        Frame frame;
+        synchronized (this) {
+            if (g != generation) {
+                return;                      // a replaced job finishing its last pass
+            }
+            samplesPerPixel = spp;
+            passes++;
+            frame = new Frame(image, spp, preview, g);
+        }
+        sink.accept(frame);                  // outside the lock: the sink may take its time
+        synchronized (this) {
+            if (g != generation) {
+                return;
+            }
+            if (preview && cameraPending) {
+                startJob(Mode.PREVIEW);
+                return;
+            }
+            if (glance) {
+                try {
+                    while (g == generation && waitingForDisplay) {
+                        wait();
+                    }
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    return;
+                }
+                if (g == generation) {
+                    startJob(Mode.FULL);
+                }
+                return;
+            }
+            if (!preview && state == State.RUNNING && reachedStop()) {
+                state = State.DONE;
+            }
+            if (holds()) {
+                stopClock();
+                try {
+                    while (g == generation && holds()) {
+                        wait();
+                    }
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();   // the job is being torn down
+                    return;
+                }
+                if (g == generation) {
+                    runningSince = nanoTime.getAsLong();
+                }
+            }
+        }
+    }
+
+    private boolean holds() {
+        return state == State.PAUSED || state == State.DONE;
+    }
+
+    private boolean reachedStop() {
+        return !preview && stopAt != UNLIMITED && samplesPerPixel >= stopAt;
+    }
+
+    private void stopClock() {
+        if (runningSince >= 0) {
+            activeNanos += nanoTime.getAsLong() - runningSince;
+            runningSince = -1;
+        }
+    }
+
+    private double seconds() {
+        long running = runningSince >= 0 ? nanoTime.getAsLong() - runningSince : 0;
+        return (activeNanos + running) * 1e-9;
+    }
+}

@@ -1,0 +1,56 @@
+package dev.strahl.viewer;
+
+import dev.strahl.scene.Scene;
+import dev.strahl.scene.SceneException;
+import dev.strahl.scene.SceneLoader;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+
+/**
+ * Finds and loads the scene to show. Without a file named by the user, the default is the
+ * Cornell Box: {@code scenes/cornell-box.json} in the working directory when it exists (a
+ * checkout of strahl), else the copy packed into the jar under {@code /scenes/}, unpacked to a
+ * temporary directory because the loader reads files.
+ */
+final class SceneFiles {
+    static final Path DEFAULT = Path.of("scenes", "cornell-box.json");
+    private static final String[] BUNDLED = {"cornell-box.json", "cornell-box.obj", "cornell-box.mtl"};
+
+    private SceneFiles() {
+    }
+
+    /** Loads {@code file}, or the default scene when it is null. */
+    static Scene load(Path file) throws SceneException {
+        return SceneLoader.load(file != null ? file : defaultScene());
+    }
+
+    /** The file of the default scene. */
+    static Path defaultScene() throws SceneException {
+        if (Files.isRegularFile(DEFAULT)) {
+            return DEFAULT;
+        }
+        if (SceneFiles.class.getResource("/scenes/" + BUNDLED[0]) == null) {
+            throw new SceneException(DEFAULT, "file not found (and no Cornell Box packed in this build): name a scene file");
+        }
+        try {
+            Path dir = Files.createTempDirectory("strahl-scenes");
+            dir.toFile().deleteOnExit();
+            for (String name : BUNDLED) {
+                try (InputStream in = SceneFiles.class.getResourceAsStream("/scenes/" + name)) {
+                    if (in == null) {
+                        throw new SceneException(DEFAULT, "the packed Cornell Box lacks " + name);
+                    }
+                    Path out = dir.resolve(name);
+                    Files.copy(in, out, StandardCopyOption.REPLACE_EXISTING);
+                    out.toFile().deleteOnExit();
+                }
+            }
+            return dir.resolve(BUNDLED[0]);
+        } catch (IOException e) {
+            throw new SceneException(DEFAULT, "cannot unpack the packed Cornell Box: " + e.getMessage(), e);
+        }
+    }
+}

@@ -1,0 +1,116 @@
+package dev.strahl.viewer;
+
+import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.sampling.HemisphereSampling;
+import java.awt.FlowLayout;
+import java.util.Locale;
+import javax.swing.BorderFactory;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JSeparator;
+import javax.swing.SwingConstants;
+import javax.swing.UIManager;
+
+/**
+ * The line under the image: state, samples per pixel, render time, samples per second, film
+ * resolution, and the integrator with its max depth and sampling. Updated on the event dispatch thread by the viewer's timer.
+ */
+final class StatusBar extends JPanel {
+    private final JLabel state = label("Starting");
+    private final JLabel spp = label("0 spp");
+    private final JLabel time = label("0:00.0");
+    private final JLabel rate = label("–");
+    private final JLabel size = label("");
+    private final JLabel integrator = label("");
+
+    StatusBar() {
+        super(new FlowLayout(FlowLayout.LEADING, 8, 2));
+        setBorder(BorderFactory.createMatteBorder(1, 0, 0, 0, UIManager.getColor("Separator.foreground")));
+        JLabel[] parts = {state, spp, time, rate, size, integrator};
+        for (int i = 0; i < parts.length; i++) {
+            if (i > 0) {
+                add(new JSeparator(SwingConstants.VERTICAL) {
+                    @Override
+                    public java.awt.Dimension getPreferredSize() {
+                        return new java.awt.Dimension(1, 14);
+                    }
+                });
+            }
+            add(parts[i]);
+        }
+        state.setToolTipText("Rendering, paused, done (reached the stop-at count) or previewing a camera move");
+        spp.setToolTipText("Samples per pixel accumulated (and the stop-at count)");
+        time.setToolTipText("Render time of this image, pauses excluded");
+        rate.setToolTipText("Camera samples per second");
+        size.setToolTipText("Film resolution in pixels");
+        integrator.setToolTipText("Integrator, max depth and hemisphere sampling");
+    }
+
+    private static JLabel label(String text) {
+        return new JLabel(text);
+    }
+
+    void update(RenderController.Status s) {
+        state.setText(stateText(s));
+        spp.setText(sppText(s.samplesPerPixel(), s.stopAt()));
+        time.setText(timeText(s.seconds()));
+        rate.setText(rateText(s.samplesPerSecond()));
+        size.setText(s.width() + " × " + s.height());
+        integrator.setText(integratorText(s.integrator(), s.maxDepth(), s.hemisphere()));
+    }
+
+    /** The whole line as text, as a user reads it. */
+    String text() {
+        StringBuilder b = new StringBuilder();
+        for (JLabel l : new JLabel[] {state, spp, time, rate, size, integrator}) {
+            if (!l.getText().isEmpty()) {
+                b.append(b.length() > 0 ? " | " : "").append(l.getText());
+            }
+        }
+        return b.toString();
+    }
+
+    static String stateText(RenderController.Status s) {
+        if (s.state() == RenderController.State.RUNNING && s.preview()) {
+            return "Preview";
+        }
+        return switch (s.state()) {
+            case RUNNING -> "Rendering";
+            case PAUSED -> "Paused";
+            case DONE -> "Done";
+            case CLOSED -> "Closed";
+        };
+    }
+
+    static String sppText(int spp, int stopAt) {
+        return stopAt == RenderController.UNLIMITED ? spp + " spp" : spp + " / " + stopAt + " spp";
+    }
+
+    static String timeText(double seconds) {
+        long tenths = (long) Math.floor(seconds * 10);
+        long minutes = tenths / 600;
+        return String.format(Locale.ROOT, "%d:%02d.%d", minutes, (tenths / 10) % 60, tenths % 10);
+    }
+
+    static String rateText(double samplesPerSecond) {
+        if (samplesPerSecond <= 0) {
+            return "– samples/s";
+        }
+        if (samplesPerSecond >= 1e6) {
+            return String.format(Locale.ROOT, "%.2f M samples/s", samplesPerSecond / 1e6);
+        }
+        return String.format(Locale.ROOT, "%.0f k samples/s", samplesPerSecond / 1e3);
+    }
+
+    static String integratorText(IntegratorKind integrator, int maxDepth, HemisphereSampling hemisphere) {
+        return integrator.id() + " · depth " + depthText(maxDepth) + " · " + hemisphere.name().toLowerCase(Locale.ROOT);
+    }
+
+    static String depthText(int maxDepth) {
+        return maxDepth < 0 ? "∞" : Integer.toString(maxDepth);
+    }
+
+    static String exposureText(double stops) {
+        return String.format(Locale.ROOT, "EV %+.1f", stops);
+    }
+}

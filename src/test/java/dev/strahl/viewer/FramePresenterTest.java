@@ -1,0 +1,95 @@
+package dev.strahl.viewer;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import dev.strahl.film.Image;
+import dev.strahl.film.Tonemap;
+import java.awt.image.BufferedImage;
+import java.util.concurrent.Semaphore;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+
+/** Tone mapping for display: exposure, re-conversion without re-rendering, whole-image swaps. */
+class FramePresenterTest {
+    final FramePresenter presenter = new FramePresenter();
+    final Semaphore shown = new Semaphore(0);
+
+    FramePresenterTest() {
+        presenter.onShown(shown::release);
+    }
+
+    @AfterEach
+    void close() {
+        presenter.close();
+    }
+
+    /** A 2×1 image: a grey of radiance {@code v} and black. */
+    static RenderController.Frame frame(float v, long generation) {
+        return new RenderController.Frame(new Image(2, 1, new float[] {v, v, v, 0, 0, 0}), 1, false, generation);
+    }
+
+    FramePresenter.Shown awaitShown() throws InterruptedException {
+        assertThat(shown.tryAcquire(5, TimeUnit.SECONDS)).as("a frame was converted").isTrue();
+        return presenter.shown();
+    }
+
+    static int red(BufferedImage img, int x) {
+        return (img.getRGB(x, 0) >> 16) & 0xFF;
+    }
+
+    @Test
+    void convertsToSrgbLikeThePngWriter() throws Exception {
+        presenter.accept(frame(0.2f, 1));
+        FramePresenter.Shown s = awaitShown();
+        assertThat(s.image().getWidth()).isEqualTo(2);
+        assertThat(red(s.image(), 0)).isEqualTo(Tonemap.toSrgb8(0.2f));
+        assertThat(red(s.image(), 1)).isZero();
+        assertThat(s.image().getType()).isEqualTo(BufferedImage.TYPE_INT_RGB);
+    }
+
+    @Test
+    void eachStopOfExposureDoublesTheDisplayedRadianceWithoutANewFrame() throws Exception {
+        presenter.accept(frame(0.1f, 1));
+        BufferedImage before = awaitShown().image();
+        presenter.setExposure(1);
+        FramePresenter.Shown after = awaitShown();
+        assertThat(red(after.image(), 0)).isEqualTo(Tonemap.toSrgb8(0.1f * 2.0));
+        assertThat(after.exposure()).isEqualTo(1);
+        assertThat(after.image()).as("a new image is swapped in, the old one is not changed").isNotSameAs(before);
+        assertThat(red(before, 0)).isEqualTo(Tonemap.toSrgb8(0.1f));
+        presenter.setExposure(-2);
+        assertThat(red(awaitShown().image(), 0)).isEqualTo(Tonemap.toSrgb8(0.1f * 0.25));
+    }
+
+    @Test
+    void exposureIsClampedAndMustBeFinite() {
+        presenter.setExposure(100);
+        assertThat(presenter.exposure()).isEqualTo(FramePresenter.MAX_EXPOSURE);
+        assertThatThrownBy(() -> presenter.setExposure(Double.NaN)).isInstanceOf(IllegalArgumentException.class);
+    }
+
+    @Test
+    void framesOfAReplacedJobAreDropped() throws Exception {
+        presenter.accept(frame(0.5f, 3));
+        awaitShown();
+        presenter.accept(frame(0.9f, 2));
+        assertThat(presenter.latest().generation()).isEqualTo(3);
+        assertThat(shown.tryAcquire(200, TimeUnit.MILLISECONDS)).isFalse();
+        assertThat(red(presenter.shown().image(), 0)).isEqualTo(Tonemap.toSrgb8(0.5f));
+    }
+
+    @Test
+    void manyFramesAtOnceEndWithTheNewestShown() throws Exception {
+        for (int i = 1; i <= 200; i++) {
+            presenter.accept(frame(i / 200f, 1));
+        }
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+        while (System.nanoTime() < deadline && red(presenter.shown() == null ? new BufferedImage(2, 1, 1) : presenter.shown().image(), 0) != 255) {
+            shown.tryAcquire(50, TimeUnit.MILLISECONDS);
+        }
+        assertThat(red(presenter.shown().image(), 0)).isEqualTo(255);
+        assertThat(shown.availablePermits()).as("coalesced: far fewer conversions than frames").isLessThan(200);
+    }
+}

@@ -1,0 +1,375 @@
+package dev.strahl.viewer;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+import dev.strahl.film.Image;
+import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.render.RenderListener;
+import dev.strahl.render.RenderSettings;
+import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.scene.Scene;
+import dev.strahl.scene.SceneLoader;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+
+/** The controller's state machine, driven by hand: fake jobs, a manual timer and a manual clock. */
+class RenderControllerTest {
+    static Scene cornell;
+
+    /** A job that renders nothing: the test reports its passes. */
+    static final class FakeJob implements RenderController.Job {
+        final Scene scene;
+        final RenderSettings settings;
+        final RenderListener listener;
+        volatile boolean cancelled;
+
+        FakeJob(Scene scene, RenderSettings settings, RenderListener listener) {
+            this.scene = scene;
+            this.settings = settings;
+            this.listener = listener;
+        }
+
+        /** Reports a finished pass (on the calling thread, which the controller may hold). */
+        void pass(int spp) {
+            listener.passCompleted(spp, new Image(settings.width(), settings.height(), new float[3 * settings.width() * settings.height()]));
+        }
+
+        /** Reports a pass on a new thread and returns it, perhaps held by the controller. */
+        Thread passInBackground(int spp) throws InterruptedException {
+            Thread t = new Thread(() -> pass(spp));
+            t.start();
+            t.join(200);
+            return t;
+        }
+
+        @Override
+        public void cancel() {
+            cancelled = true;
+        }
+
+        @Override
+        public long samplesDone() {
+            return 1000;
+        }
+    }
+
+    /** Runs scheduled tasks when the test says so. */
+    static final class ManualScheduler implements RenderController.Scheduler {
+        final List<Runnable> tasks = new ArrayList<>();
+
+        @Override
+        public Runnable schedule(Runnable task, long delayMillis) {
+            assertThat(delayMillis).isEqualTo(RenderController.SETTLE_MILLIS);
+            tasks.add(task);
+            return () -> tasks.remove(task);
+        }
+
+        void runAll() {
+            List<Runnable> now = new ArrayList<>(tasks);
+            tasks.clear();
+            now.forEach(Runnable::run);
+        }
+
+        @Override
+        public void shutdown() {
+            tasks.clear();
+        }
+    }
+
+    final List<FakeJob> jobs = new CopyOnWriteArrayList<>();
+    final List<RenderController.Frame> frames = new CopyOnWriteArrayList<>();
+    final ManualScheduler timer = new ManualScheduler();
+    volatile long now;
+    RenderController controller;
+
+    @BeforeAll
+    static void load() throws Exception {
+        cornell = SceneLoader.load(Path.of("scenes", "cornell-box.json"));
+    }
+
+    @BeforeEach
+    void start() {
+        controller = controller(RenderController.UNLIMITED);
+    }
+
+    RenderController controller(int stopAt) {
+        RenderSettings settings = RenderSettings.defaults().withSize(64, 48).withThreads(1);
+        RenderController c = new RenderController(cornell, settings, stopAt,
+                (scene, s, listener) -> {
+                    FakeJob job = new FakeJob(scene, s, listener);
+                    jobs.add(job);
+                    return job;
+                }, frames::add, timer, () -> now);
+        c.start();
+        glance();
+        frames.clear();
+        return c;
+    }
+
+    /** Lets the quick reduced-resolution pass that precedes every full restart finish; returns the full job. */
+    FakeJob glance() {
+        FakeJob quick = job();
+        assertThat(quick.settings.width()).as("a glance at a quarter of the resolution").isEqualTo(16);
+        quick.pass(1);
+        assertThat(quick.cancelled).isTrue();
+        assertThat(job().settings.width()).isEqualTo(64);
+        return job();
+    }
+
+    FakeJob job() {
+        return jobs.get(jobs.size() - 1);
+    }
+
+    @Test
+    void startsWithAGlanceThenOneFullResolutionJobOfOneSamplePerPassWithoutEnd() {
+        assertThat(jobs).hasSize(2);
+        assertThat(jobs.get(0).settings.width()).isEqualTo(16);
+        assertThat(jobs.get(0).settings.height()).isEqualTo(12);
+        RenderSettings s = job().settings;
+        assertThat(s.width()).isEqualTo(64);
+        assertThat(s.height()).isEqualTo(48);
+        assertThat(s.samplesPerPass()).isEqualTo(1);
+        assertThat(s.samplesPerPixel()).isEqualTo(Integer.MAX_VALUE);
+        assertThat(controller.status().state()).isEqualTo(RenderController.State.RUNNING);
+        assertThat(controller.status().preview()).isFalse();
+    }
+
+    @Test
+    void everyPassIsShownAndCounted() {
+        job().pass(1);
+        job().pass(2);
+        assertThat(frames).extracting(RenderController.Frame::samplesPerPixel).containsExactly(1, 2);
+        assertThat(frames).allSatisfy(f -> assertThat(f.preview()).isFalse());
+        assertThat(controller.status().samplesPerPixel()).isEqualTo(2);
+    }
+
+    @Test
+    void pauseHoldsTheJobAfterItsPassAndResumeLetsItGoOn() throws Exception {
+        job().pass(1);
+        controller.togglePause();
+        assertThat(controller.status().state()).isEqualTo(RenderController.State.PAUSED);
+        Thread held = job().passInBackground(2);
+        assertThat(held.isAlive()).as("the job's thread is held at the pass boundary").isTrue();
+        assertThat(frames).hasSize(2);          // the pass that finished is still shown
+        assertThat(jobs).hasSize(2);            // and its samples are kept: no new job
+        controller.togglePause();
+        held.join(2000);
+        assertThat(held.isAlive()).isFalse();
+        assertThat(controller.status().state()).isEqualTo(RenderController.State.RUNNING);
+        assertThat(job().cancelled).isFalse();
+    }
+
+    @Test
+    void pausedTimeDoesNotCountAsRenderTime() throws Exception {
+        now = TimeUnit.SECONDS.toNanos(2);
+        controller.togglePause();
+        Thread held = job().passInBackground(1);  // held from t = 2 s
+        now = TimeUnit.SECONDS.toNanos(10);
+        assertThat(controller.status().seconds()).isCloseTo(2, within(1e-9));
+        controller.togglePause();
+        held.join(2000);
+        now = TimeUnit.SECONDS.toNanos(11);
+        assertThat(controller.status().seconds()).isCloseTo(3, within(1e-9));
+    }
+
+    @Test
+    void stopAtHoldsAtTheCountAndRaisingItContinuesTheSameAccumulation() throws Exception {
+        controller = controller(4);
+        FakeJob j = job();
+        for (int spp = 1; spp <= 3; spp++) {
+            j.pass(spp);
+        }
+        assertThat(controller.status().state()).isEqualTo(RenderController.State.RUNNING);
+        Thread held = j.passInBackground(4);
+        assertThat(held.isAlive()).isTrue();
+        assertThat(controller.status().state()).isEqualTo(RenderController.State.DONE);
+        controller.togglePause();               // a finished render stays finished
+        assertThat(controller.status().state()).isEqualTo(RenderController.State.DONE);
+        controller.setStopAt(8);
+        held.join(2000);
+        assertThat(held.isAlive()).isFalse();
+        assertThat(controller.status().state()).isEqualTo(RenderController.State.RUNNING);
+        assertThat(job()).as("same job, samples kept").isSameAs(j);
+        j.pass(5);
+        assertThat(controller.status().samplesPerPixel()).isEqualTo(5);
+    }
+
+    @Test
+    void unlimitedNeverHolds() {
+        for (int spp = 1; spp <= 100; spp++) {
+            job().pass(spp);
+        }
+        assertThat(controller.status().state()).isEqualTo(RenderController.State.RUNNING);
+    }
+
+    @Test
+    void restartCancelsTheJobAndStartsFromZero() {
+        FakeJob first = job();
+        first.pass(1);
+        first.pass(2);
+        controller.restart();
+        assertThat(first.cancelled).isTrue();
+        assertThat(jobs).hasSize(3);
+        assertThat(controller.status().samplesPerPixel()).isZero();
+        first.pass(3);                          // a late pass of the old job is ignored
+        assertThat(frames).hasSize(2);
+        assertThat(controller.status().samplesPerPixel()).isZero();
+    }
+
+    @Test
+    void aCameraMoveRestartsAccumulationWithAPreviewThenFullResolutionWhenTheMovesStop() {
+        FakeJob full = job();
+        full.pass(1);
+        full.pass(2);
+        long generation = controller.status().generation();
+        controller.moveCamera(c -> c.orbit(0.3, 0.1));
+        assertThat(full.cancelled).isTrue();
+        FakeJob preview = job();
+        assertThat(preview.settings.width()).isEqualTo(16);
+        assertThat(preview.settings.height()).isEqualTo(12);
+        assertThat(preview.scene.camera().lookFrom().distance(cornell.camera().lookFrom())).isGreaterThan(0.1);
+        RenderController.Status s = controller.status();
+        assertThat(s.preview()).isTrue();
+        assertThat(s.samplesPerPixel()).isZero();
+        assertThat(s.generation()).isGreaterThan(generation);
+        preview.pass(1);
+        assertThat(frames.get(frames.size() - 1).preview()).isTrue();
+
+        timer.runAll();                          // 150 ms without a move
+        FakeJob again = job();
+        assertThat(preview.cancelled).isTrue();
+        assertThat(again.settings.width()).isEqualTo(64);
+        assertThat(again.scene.camera().lookFrom()).isEqualTo(preview.scene.camera().lookFrom());
+        assertThat(controller.status().preview()).isFalse();
+    }
+
+    @Test
+    void movesDuringAPreviewPassAreAppliedTogetherWhenItEnds() {
+        controller.moveCamera(c -> c.orbit(0.1, 0));
+        FakeJob preview = job();
+        controller.moveCamera(c -> c.orbit(0.1, 0));
+        controller.moveCamera(c -> c.orbit(0.1, 0));
+        assertThat(job()).as("no restart before the preview has shown a pass").isSameAs(preview);
+        preview.pass(1);
+        FakeJob next = job();
+        assertThat(next).isNotSameAs(preview);
+        assertThat(next.scene.camera().lookFrom().distance(controller.camera().toCamera().lookFrom())).isZero();
+        assertThat(jobs).hasSize(4);
+        controller.moveCamera(c -> c.orbit(0.1, 0));
+        assertThat(job()).as("waits for this preview's first pass too").isSameAs(next);
+        next.pass(1);
+        assertThat(jobs).hasSize(5);
+        assertThat(timer.tasks).as("one pending settle, re-armed by each move").hasSize(1);
+    }
+
+    @Test
+    void resetCameraGoesBackToTheSceneCamera() {
+        controller.moveCamera(c -> c.orbit(1, 0.5).pan(0.2, 0.1).dolly(0.5));
+        controller.resetCamera();
+        assertThat(timer.tasks).as("the pending settle is dropped: the reset restarts at once").isEmpty();
+        glance();
+        assertThat(job().scene.camera().lookFrom().distance(cornell.camera().lookFrom())).isLessThan(1e-12);
+        assertThat(controller.status().preview()).isFalse();
+    }
+
+    @Test
+    void resizingPreviewsAtTheNewSize() {
+        controller.resize(64, 48);
+        assertThat(jobs).as("same size: nothing to do").hasSize(2);
+        controller.resize(200, 150);
+        assertThat(job().settings.width()).isEqualTo(50);
+        timer.runAll();
+        assertThat(job().settings.width()).isEqualTo(200);
+        assertThat(job().settings.height()).isEqualTo(150);
+    }
+
+    @Test
+    void renderSettingsRestartOnlyWhenTheyChange() {
+        controller.setMaxDepth(-1);
+        controller.setHemisphere(HemisphereSampling.COSINE);
+        controller.setIntegrator(IntegratorKind.PATH);
+        assertThat(jobs).hasSize(2);
+        controller.setMaxDepth(3);
+        assertThat(glance().settings.maxDepth()).isEqualTo(3);
+        controller.setHemisphere(HemisphereSampling.UNIFORM);
+        assertThat(glance().settings.hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
+        controller.setIntegrator(IntegratorKind.WHITTED);
+        assertThat(glance().settings.integrator()).isEqualTo(IntegratorKind.WHITTED);
+        assertThat(controller.status().integrator()).isEqualTo(IntegratorKind.WHITTED);
+        assertThat(jobs).hasSize(8);
+        assertThat(jobs.subList(0, 7)).allSatisfy(j -> assertThat(j.cancelled).isTrue());
+    }
+
+    @Test
+    void aNewSceneStartsFromItsOwnCamera() {
+        controller.moveCamera(c -> c.orbit(1, 0));
+        controller.setScene(cornell);
+        assertThat(timer.tasks).isEmpty();
+        assertThat(glance().scene.camera().lookFrom().distance(cornell.camera().lookFrom())).isLessThan(1e-12);
+        assertThat(controller.status().preview()).isFalse();
+    }
+
+    @Test
+    void closeCancelsTheJobAndReleasesAHeldThread() throws Exception {
+        controller.togglePause();
+        Thread held = job().passInBackground(1);
+        assertThat(held.isAlive()).isTrue();
+        controller.close();
+        held.join(2000);
+        assertThat(held.isAlive()).isFalse();
+        assertThat(job().cancelled).isTrue();
+        assertThat(controller.status().state()).isEqualTo(RenderController.State.CLOSED);
+        controller.restart();
+        controller.moveCamera(c -> c.orbit(1, 0));
+        assertThat(jobs).as("nothing starts after closing").hasSize(2);
+    }
+
+    @Test
+    void aMoveDuringTheGlanceWaitsForItAndThenPreviews() {
+        controller.restart();
+        FakeJob quick = job();
+        controller.moveCamera(c -> c.orbit(0.2, 0));
+        assertThat(job()).isSameAs(quick);
+        quick.pass(1);
+        assertThat(job().settings.width()).as("a preview, not the full job the glance would start").isEqualTo(16);
+        assertThat(controller.status().preview()).isTrue();
+        timer.runAll();
+        assertThat(job().settings.width()).isEqualTo(64);
+    }
+
+    @Test
+    void beforeTheWindowIsShownOnlyTheGlanceRenders() throws Exception {
+        jobs.clear();
+        RenderController c = new RenderController(cornell, RenderSettings.defaults().withSize(64, 48), RenderController.UNLIMITED,
+                (scene, s, listener) -> {
+                    FakeJob job = new FakeJob(scene, s, listener);
+                    jobs.add(job);
+                    return job;
+                }, frames::add, timer, () -> now);
+        c.startBeforeDisplay();
+        Thread held = job().passInBackground(1);
+        assertThat(held.isAlive()).as("the glance waits for the window").isTrue();
+        assertThat(jobs).hasSize(1);
+        assertThat(frames).as("but its image is shown").hasSize(1);
+        c.displayReady();
+        held.join(2000);
+        assertThat(held.isAlive()).isFalse();
+        assertThat(jobs).hasSize(2);
+        assertThat(job().settings.width()).isEqualTo(64);
+        c.close();
+    }
+
+    @Test
+    void previewSizeIsAQuarterAndNeverZero() {
+        assertThat(RenderController.previewSize(512)).isEqualTo(128);
+        assertThat(RenderController.previewSize(3)).isEqualTo(1);
+        assertThat(RenderController.previewSize(1)).isEqualTo(1);
+    }
+}

@@ -1,0 +1,210 @@
+package dev.strahl.viewer;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.sampling.HemisphereSampling;
+import java.awt.GraphicsEnvironment;
+import java.awt.Point;
+import java.awt.Rectangle;
+import java.awt.Robot;
+import java.awt.event.InputEvent;
+import java.awt.event.WindowEvent;
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import javax.imageio.ImageIO;
+import javax.swing.SwingUtilities;
+import org.joml.Vector3d;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * The viewer in a real window: it shows the Cornell Box converging, the status bar counts the
+ * samples, a mouse drag orbits the camera and restarts accumulation, and closing the window stops
+ * the render threads. Needs a display; CI runs it under {@code xvfb-run}, elsewhere without a
+ * display it is skipped.
+ */
+class ViewerEndToEndTest {
+    static final int SIZE = 256;
+    static final Pattern SPP = Pattern.compile("\\b(\\d+)(?: / \\d+)? spp\\b");
+
+    @Test
+    @Timeout(value = 60, unit = TimeUnit.SECONDS)
+    void showsTheCornellBoxConvergingAndOrbitsOnADrag() throws Exception {
+        assumeTrue(!GraphicsEnvironment.isHeadless(), "no display (headless): run under xvfb-run to include this test");
+
+        List<RenderController.Frame> shown = new CopyOnWriteArrayList<>();
+        ViewerOptions options = new ViewerOptions(Path.of("scenes", "cornell-box.json"), SIZE, SIZE, RenderController.UNLIMITED,
+                -1, HemisphereSampling.COSINE, 0, 1, IntegratorKind.PATH, 1, Theme.LIGHT);
+        Viewer viewer = Viewer.open(options);
+        try {
+            viewer.presenter().onShown(() -> shown.add(viewer.presenter().shown().frame()));
+            ViewerFrame ui = viewer.ui();
+            Robot robot = new Robot();
+
+            // --- converges: >= 8 spp on screen and in the status bar -------------------------------
+            waitFor("8 spp shown and in the status bar", 20,
+                    () -> !shown.isEmpty() && last(shown).samplesPerPixel() >= 8 && statusSpp(ui) >= 8);
+            robot.waitForIdle();
+            robot.delay(300);                   // the repaint of the last frame reaches the screen
+            BufferedImage before = capture(robot, ui);
+            assertThat(statusSpp(ui)).isGreaterThanOrEqualTo(8);
+            try {
+                assertShowsTheCornellBox(before);
+            } catch (AssertionError e) {
+                Path file = Files.createTempFile("strahl-viewer-e2e-", ".png");
+                ImageIO.write(before, "png", file.toFile());
+                throw new AssertionError(e.getMessage() + "\n(the captured window is in " + file + ")", e);
+            }
+
+            // --- a left drag orbits: preview, then accumulation from zero at full resolution ---------
+            long generation = viewer.controller().status().generation();
+            int sppBefore = viewer.controller().status().samplesPerPixel();
+            Rectangle r = onEdt(() -> screenBounds(ui));
+            Point start = new Point(r.x + r.width / 2, r.y + r.height / 2);
+            robot.mouseMove(start.x, start.y);
+            robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+            for (int i = 1; i <= 12; i++) {
+                robot.mouseMove(start.x + 6 * i, start.y);
+                robot.delay(15);
+            }
+            robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+
+            Vector3d eye = viewer.controller().camera().eye();
+            Vector3d sceneEye = new Vector3d(viewer.controller().scene().camera().lookFrom());
+            assertThat(eye.distance(sceneEye)).as("the camera orbited").isGreaterThan(0.5);
+            assertThat(eye.distance(viewer.controller().camera().target())).as("at the same distance")
+                    .isCloseTo(sceneEye.distance(viewer.controller().scene().camera().lookAt()), org.assertj.core.api.Assertions.within(1e-9));
+            assertThat(viewer.controller().status().generation()).as("the render restarted").isGreaterThan(generation);
+            waitFor("a full-resolution frame after the drag", 10, () -> {
+                RenderController.Frame f = last(shown);
+                return f.generation() > generation && !f.preview();
+            });
+            assertThat(shown).as("previews were shown while moving")
+                    .anySatisfy(f -> assertThat(f.preview() && f.generation() > generation).isTrue());
+            RenderController.Frame after = last(shown);
+            assertThat(after.image().width()).isEqualTo(SIZE);
+            assertThat(after.samplesPerPixel()).as("accumulation started again").isLessThan(Math.max(sppBefore, 8));
+            robot.waitForIdle();
+            robot.delay(200);
+            assertThat(meanAbsDifference(before, capture(robot, ui))).as("the picture changed").isGreaterThan(10);
+
+            // --- closing the window stops the render threads at once ---------------------------------
+            SwingUtilities.invokeLater(() -> ui.frame.dispatchEvent(new WindowEvent(ui.frame, WindowEvent.WINDOW_CLOSING)));
+            assertThat(viewer.awaitClosed(5, TimeUnit.SECONDS)).isTrue();
+            waitFor("render threads gone", 2, () -> Thread.getAllStackTraces().keySet().stream()
+                    .noneMatch(t -> t.isAlive() && t.getName().startsWith("strahl-render")));
+        } finally {
+            viewer.close();
+        }
+    }
+
+    /** Red wall on the left, green on the right, the light bright at the top centre. */
+    static void assertShowsTheCornellBox(BufferedImage img) {
+        int w = img.getWidth();
+        int h = img.getHeight();
+        double[] left = mean(img, (int) (0.07 * w), (int) (0.45 * h), (int) (0.05 * w), (int) (0.1 * h));
+        double[] right = mean(img, (int) (0.88 * w), (int) (0.45 * h), (int) (0.05 * w), (int) (0.1 * h));
+        double[] light = mean(img, (int) (0.47 * w), (int) (0.15 * h), (int) (0.06 * w), (int) (0.02 * h));
+        double[] wall = mean(img, (int) (0.45 * w), (int) (0.45 * h), (int) (0.1 * w), (int) (0.1 * h));
+        // Albedos (0.63, 0.065, 0.05) and (0.14, 0.45, 0.091): after the sRGB curve the dominant
+        // channel is still about 2.8 and 1.7 times the others.
+        assertThat(left[0]).as("left wall red: %s", Arrays.toString(left)).isGreaterThan(1.3 * left[1]).isGreaterThan(1.3 * left[2]).isGreaterThan(60);
+        assertThat(right[1]).as("right wall green: %s", Arrays.toString(right)).isGreaterThan(1.3 * right[0]).isGreaterThan(1.3 * right[2]).isGreaterThan(60);
+        assertThat(Math.min(light[0], Math.min(light[1], light[2]))).as("light white at the top: %s", Arrays.toString(light)).isGreaterThan(240);
+        assertThat(light[0] + light[1] + light[2]).as("light brighter than the back wall")
+                .isGreaterThan(1.5 * (wall[0] + wall[1] + wall[2]));
+    }
+
+    static double[] mean(BufferedImage img, int x0, int y0, int w, int h) {
+        double[] m = new double[3];
+        for (int y = y0; y < y0 + h; y++) {
+            for (int x = x0; x < x0 + w; x++) {
+                int rgb = img.getRGB(x, y);
+                m[0] += (rgb >> 16) & 0xFF;
+                m[1] += (rgb >> 8) & 0xFF;
+                m[2] += rgb & 0xFF;
+            }
+        }
+        for (int c = 0; c < 3; c++) {
+            m[c] /= (double) w * h;
+        }
+        return m;
+    }
+
+    static double meanAbsDifference(BufferedImage a, BufferedImage b) {
+        double s = 0;
+        for (int y = 0; y < a.getHeight(); y++) {
+            for (int x = 0; x < a.getWidth(); x++) {
+                int p = a.getRGB(x, y);
+                int q = b.getRGB(x, y);
+                for (int shift = 0; shift <= 16; shift += 8) {
+                    s += Math.abs(((p >> shift) & 0xFF) - ((q >> shift) & 0xFF));
+                }
+            }
+        }
+        return s / (3.0 * a.getWidth() * a.getHeight());
+    }
+
+    /** The image area of the window as the screen shows it. */
+    static BufferedImage capture(Robot robot, ViewerFrame ui) throws Exception {
+        return robot.createScreenCapture(onEdt(() -> screenBounds(ui)));
+    }
+
+    static Rectangle screenBounds(ViewerFrame ui) {
+        Rectangle r = ui.image.imageBounds();
+        Point p = ui.image.getLocationOnScreen();
+        return new Rectangle(p.x + r.x, p.y + r.y, r.width, r.height);
+    }
+
+    static int statusSpp(ViewerFrame ui) {
+        String text;
+        try {
+            text = onEdt(ui.status::text);
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
+        }
+        Matcher m = SPP.matcher(text);
+        return m.find() ? Integer.parseInt(m.group(1)) : -1;
+    }
+
+    static RenderController.Frame last(List<RenderController.Frame> frames) {
+        return frames.get(frames.size() - 1);
+    }
+
+    static <T> T onEdt(java.util.concurrent.Callable<T> task) throws Exception {
+        AtomicReference<T> result = new AtomicReference<>();
+        AtomicReference<Exception> error = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> {
+            try {
+                result.set(task.call());
+            } catch (Exception e) {
+                error.set(e);
+            }
+        });
+        if (error.get() != null) {
+            throw error.get();
+        }
+        return result.get();
+    }
+
+    static void waitFor(String what, int seconds, BooleanSupplier condition) throws Exception {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
+        while (!condition.getAsBoolean()) {
+            if (System.nanoTime() > deadline) {
+                throw new AssertionError("timed out after " + seconds + " s waiting for: " + what);
+            }
+            Thread.sleep(20);
+        }
+    }
+}
