@@ -26,7 +26,8 @@ final class JsonNode {
     }
 
     static JsonNode parse(Path file, String text) throws SceneException {
-        JsonFactory factory = JsonFactory.builder().enable(StreamReadFeature.STRICT_DUPLICATE_DETECTION).build();
+        JsonFactory factory = JsonFactory.builder().enable(StreamReadFeature.STRICT_DUPLICATE_DETECTION)
+                .disable(StreamReadFeature.INCLUDE_SOURCE_IN_LOCATION).build();
         try (JsonParser p = factory.createParser(text)) {
             if (p.nextToken() == null) {
                 throw new SceneException(file, 1, "empty scene file");

@@ -20,8 +20,8 @@ import javax.swing.JComponent;
  * with, and the largest rectangle of that aspect that fits the panel is filled, centred, with
  * bars of the panel's background colour around it. The film size follows that rectangle in
  * DEVICE pixels (the panel size times the screen's scale factor), so on a HiDPI screen one film
- * pixel is one screen pixel. Reduced-resolution previews are scaled up smoothly; full-resolution
- * frames are drawn one to one.
+ * pixel is one screen pixel. Reduced-resolution previews are scaled up (bilinear where the
+ * graphics pipeline honours the hint); full-resolution frames are drawn one to one.
  */
 final class ImagePanel extends JComponent {
     /** The neutral dark grey around the image, in both themes (as in image editors). */

@@ -8,10 +8,6 @@ import dev.strahl.render.RenderSettings;
 import dev.strahl.sampling.HemisphereSampling;
 import dev.strahl.scene.Scene;
 import java.util.Objects;
-import java.util.concurrent.Executors;
-import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.ScheduledFuture;
-import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 import java.util.function.UnaryOperator;
@@ -121,43 +117,7 @@ final class RenderController {
 
     /** A controller that runs real {@link RenderJob}s and times camera moves on its own daemon thread. */
     static RenderController rendering(Scene scene, RenderSettings settings, int stopAt, Consumer<Frame> sink) {
-        return new RenderController(scene, settings, stopAt, RenderController::startRenderJob, sink,
-                executorScheduler(), System::nanoTime);
-    }
-
-    private static Job startRenderJob(Scene scene, RenderSettings settings, RenderListener listener) {
-        RenderJob job = RenderJob.start(scene, settings, listener);
-        return new Job() {
-            @Override
-            public void cancel() {
-                job.cancel();
-            }
-
-            @Override
-            public long samplesDone() {
-                return job.samplesDone();
-            }
-        };
-    }
-
-    private static Scheduler executorScheduler() {
-        ScheduledExecutorService timer = Executors.newSingleThreadScheduledExecutor(r -> {
-            Thread t = new Thread(r, "strahl-viewer-timer");
-            t.setDaemon(true);
-            return t;
-        });
-        return new Scheduler() {
-            @Override
-            public Runnable schedule(Runnable task, long delayMillis) {
-                ScheduledFuture<?> f = timer.schedule(task, delayMillis, TimeUnit.MILLISECONDS);
-                return () -> f.cancel(false);
-            }
-
-            @Override
-            public void shutdown() {
-                timer.shutdownNow();
-            }
-        };
+        return new RenderController(scene, settings, stopAt, RenderJobs::start, sink, RenderJobs.timer(), System::nanoTime);
     }
 
     private static int checkStopAt(int n) {
