@@ -3,11 +3,9 @@ package dev.strahl.cli;
 import dev.strahl.camera.Camera;
 import dev.strahl.film.Film;
 import dev.strahl.film.ImageWriters;
-import dev.strahl.integrator.IntegratorKind;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
-import dev.strahl.sampling.HemisphereSampling;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
 import dev.strahl.scene.SceneLoader;
@@ -22,6 +20,7 @@ import java.util.concurrent.TimeUnit;
 import org.joml.Vector3d;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -38,6 +37,9 @@ final class RenderCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
+    @Mixin
+    TransportOptions transport;
+
     @Parameters(index = "0", paramLabel = "SCENE", description = "Scene file: .json (strahl scene) or .obj (with its .mtl).")
     Path scene;
 
@@ -53,9 +55,6 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--spp", defaultValue = "64", description = "Samples per pixel (default: ${DEFAULT-VALUE}).")
     int spp;
 
-    @Option(names = "--max-depth", defaultValue = "-1",
-            description = "Path segments including the camera segment: 1 = emitters only, 2 = direct light, -1 = unbounded (default: ${DEFAULT-VALUE}).")
-    int maxDepth;
 
     @Option(names = "--seed", defaultValue = "0", description = "Random seed; the same seed gives the same image (default: ${DEFAULT-VALUE}).")
     long seed;
@@ -63,17 +62,7 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--threads", defaultValue = "0", description = "Worker threads; 0 = all processors (default: ${DEFAULT-VALUE}).")
     int threads;
 
-    @Option(names = "--hemisphere", defaultValue = "cosine", paramLabel = "cosine|uniform",
-            description = "Diffuse direction sampling: cosine-weighted or uniform; same image, uniform is noisier (default: ${DEFAULT-VALUE}).")
-    HemisphereSampling hemisphere;
 
-    @Option(names = "--integrator", defaultValue = "path", paramLabel = "path|direct|whitted",
-            description = "Light transport: path (unbiased global illumination), direct (direct light only) or whitted (recursive ray tracing) (default: ${DEFAULT-VALUE}).")
-    IntegratorKind integrator;
-
-    @Option(names = "--light-samples", defaultValue = "1", paramLabel = "N",
-            description = "Shadow rays per diffuse hit for direct and whitted: more gives smoother soft shadows (default: ${DEFAULT-VALUE}).")
-    int lightSamples;
 
     @Option(names = "--time-limit", paramLabel = "DURATION", converter = Durations.class,
             description = "Stop at the end of the pass that crosses this time (e.g. 90s, 5m, 1h30m) and write the image.")
@@ -132,7 +121,7 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     private RenderSettings settings() {
-        return new RenderSettings(width, height, spp, maxDepth, seed, threads, hemisphere, cullBackFaces, 0, integrator, lightSamples,
+        return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0, transport.integrator, transport.lightSamples,
                 timeLimit == null ? Duration.ZERO : timeLimit);
     }
 
@@ -176,7 +165,7 @@ final class RenderCommand implements Callable<Integer> {
         ImageWriters.write(film, output);
         if (!quiet) {
             err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %d spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
-                    integrator.id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
+                    transport.integrator.id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
                     ProgressBar.si(stats.samplesPerSecond()), ProgressBar.si(stats.raysPerSecond()), stats.threads(), output));
             if (stats.invalidSamples() > 0) {
                 err.println("strahl: warning: " + stats.invalidSamples() + " samples were NaN or infinite and counted as black");

@@ -1,7 +1,5 @@
 package dev.strahl.cli;
 
-import dev.strahl.integrator.IntegratorKind;
-import dev.strahl.sampling.HemisphereSampling;
 import dev.strahl.scene.SceneException;
 import dev.strahl.viewer.Theme;
 import dev.strahl.viewer.Viewer;
@@ -13,6 +11,7 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -30,6 +29,9 @@ final class ViewCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
+    @Mixin
+    TransportOptions transport;
+
     @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE", description = "Scene file: .json (strahl scene) or .obj (with its .mtl).")
     Path scene;
 
@@ -42,21 +44,9 @@ final class ViewCommand implements Callable<Integer> {
     @Option(names = "--spp", defaultValue = "1024", description = "Stop at this many samples per pixel; 0 = never stop (default: ${DEFAULT-VALUE}).")
     int spp;
 
-    @Option(names = "--max-depth", defaultValue = "-1",
-            description = "Path segments including the camera segment: 1 = emitters only, 2 = direct light, -1 = unbounded (default: ${DEFAULT-VALUE}).")
-    int maxDepth;
 
-    @Option(names = "--hemisphere", defaultValue = "cosine", paramLabel = "cosine|uniform",
-            description = "Diffuse direction sampling: cosine-weighted or uniform (default: ${DEFAULT-VALUE}).")
-    HemisphereSampling hemisphere;
 
-    @Option(names = "--integrator", defaultValue = "path", paramLabel = "path|direct|whitted",
-            description = "Light transport: path (unbiased global illumination), direct (direct light only) or whitted (recursive ray tracing) (default: ${DEFAULT-VALUE}).")
-    IntegratorKind integrator;
 
-    @Option(names = "--light-samples", defaultValue = "1", paramLabel = "N",
-            description = "Shadow rays per diffuse hit for direct and whitted (default: ${DEFAULT-VALUE}).")
-    int lightSamples;
 
     @Option(names = "--threads", defaultValue = "0", description = "Worker threads; 0 = all processors (default: ${DEFAULT-VALUE}).")
     int threads;
@@ -72,8 +62,8 @@ final class ViewCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         try {
-            ViewerOptions options = new ViewerOptions(scene, width, height, spp, maxDepth, hemisphere, threads, seed,
-                    integrator, lightSamples, Theme.parse(theme));
+            ViewerOptions options = new ViewerOptions(scene, width, height, spp, transport.maxDepth, transport.hemisphere, threads, seed,
+                    transport.integrator, transport.lightSamples, Theme.parse(theme));
             Viewer.open(options).awaitClosed();
             return 0;
         } catch (SceneException | IllegalArgumentException e) {

@@ -1,0 +1,25 @@
+package dev.strahl.cli;
+
+import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.sampling.HemisphereSampling;
+import picocli.CommandLine.Option;
+
+/** The light-transport options that {@code render} and {@code view} share, defined once. */
+final class TransportOptions {
+
+    @Option(names = "--integrator", defaultValue = "path", paramLabel = "path|direct|whitted",
+            description = "Light transport: path (unbiased global illumination), direct (direct light only) or whitted (recursive ray tracing) (default: ${DEFAULT-VALUE}).")
+    IntegratorKind integrator;
+
+    @Option(names = "--max-depth", defaultValue = "-1",
+            description = "Path segments including the camera segment: 1 = emitters only, 2 = direct light, -1 = unbounded (default: ${DEFAULT-VALUE}).")
+    int maxDepth;
+
+    @Option(names = "--hemisphere", defaultValue = "cosine", paramLabel = "cosine|uniform",
+            description = "Diffuse direction sampling: cosine-weighted or uniform; same image, uniform is noisier (default: ${DEFAULT-VALUE}).")
+    HemisphereSampling hemisphere;
+
+    @Option(names = "--light-samples", defaultValue = "1", paramLabel = "N",
+            description = "Shadow rays per diffuse hit for direct and whitted: more gives smoother soft shadows (default: ${DEFAULT-VALUE}).")
+    int lightSamples;
+}
