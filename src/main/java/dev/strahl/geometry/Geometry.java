@@ -1,6 +1,7 @@
 package dev.strahl.geometry;
 
 import java.util.Arrays;
+import org.joml.Vector3d;
 
 /**
  * All primitives of a scene in flat arrays: triangles of every mesh concatenated (indexed
@@ -216,18 +217,10 @@ public final class Geometry {
             int i0 = 3 * a, i1 = 3 * b, i2 = 3 * c;
             double b1 = hit.b1, b2 = hit.b2, b0 = 1 - b1 - b2;
             // The barycentric point lies on the triangle's plane, unlike o + t·d with its round-off.
-            sp.p.set(b0 * pos[i0] + b1 * pos[i1] + b2 * pos[i2],
-                    b0 * pos[i0 + 1] + b1 * pos[i1 + 1] + b2 * pos[i2 + 1],
-                    b0 * pos[i0 + 2] + b1 * pos[i1 + 2] + b2 * pos[i2 + 2]);
-            // Edges in double like the intersection test: float subtraction would round them and
-            // tilt ng by up to ~1e-7 off the plane the ray met, enough to misplace spawned origins.
-            double e1x = (double) pos[i1] - pos[i0], e1y = (double) pos[i1 + 1] - pos[i0 + 1], e1z = (double) pos[i1 + 2] - pos[i0 + 2];
-            double e2x = (double) pos[i2] - pos[i0], e2y = (double) pos[i2 + 1] - pos[i0 + 1], e2z = (double) pos[i2 + 2] - pos[i0 + 2];
-            sp.ng.set(e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x).normalize();
+            interpolate(pos, i0, i1, i2, b0, b1, b2, sp.p);
+            edgeCross(i0, i1, i2, sp.ng).normalize();
             if (nrm != null && !Float.isNaN(nrm[i0]) && !Float.isNaN(nrm[i1]) && !Float.isNaN(nrm[i2])) {
-                sp.n.set(b0 * nrm[i0] + b1 * nrm[i1] + b2 * nrm[i2],
-                        b0 * nrm[i0 + 1] + b1 * nrm[i1 + 1] + b2 * nrm[i2 + 1],
-                        b0 * nrm[i0 + 2] + b1 * nrm[i1 + 2] + b2 * nrm[i2 + 2]);
+                interpolate(nrm, i0, i1, i2, b0, b1, b2, sp.n);
                 double len = sp.n.length();
                 if (len > 0 && Double.isFinite(len)) {
                     sp.n.div(len);
@@ -252,10 +245,7 @@ public final class Geometry {
     public double area(int prim) {
         if (prim < triangleCount) {
             int i0 = 3 * tri[3 * prim], i1 = 3 * tri[3 * prim + 1], i2 = 3 * tri[3 * prim + 2];
-            double e1x = (double) pos[i1] - pos[i0], e1y = (double) pos[i1 + 1] - pos[i0 + 1], e1z = (double) pos[i1 + 2] - pos[i0 + 2];
-            double e2x = (double) pos[i2] - pos[i0], e2y = (double) pos[i2 + 1] - pos[i0 + 1], e2z = (double) pos[i2 + 2] - pos[i0 + 2];
-            double cx = e1y * e2z - e1z * e2y, cy = e1z * e2x - e1x * e2z, cz = e1x * e2y - e1y * e2x;
-            return 0.5 * Math.sqrt(cx * cx + cy * cy + cz * cz);
+            return 0.5 * edgeCross(i0, i1, i2, new Vector3d()).length();
         }
         double r = sph[4 * (prim - triangleCount) + 3];
         return 4 * Math.PI * r * r;
@@ -272,12 +262,8 @@ public final class Geometry {
             int i0 = 3 * tri[3 * prim], i1 = 3 * tri[3 * prim + 1], i2 = 3 * tri[3 * prim + 2];
             double su = Math.sqrt(u1);
             double b0 = 1 - su, b1 = u2 * su, b2 = 1 - b0 - b1;
-            sp.p.set(b0 * pos[i0] + b1 * pos[i1] + b2 * pos[i2],
-                    b0 * pos[i0 + 1] + b1 * pos[i1 + 1] + b2 * pos[i2 + 1],
-                    b0 * pos[i0 + 2] + b1 * pos[i1 + 2] + b2 * pos[i2 + 2]);
-            double e1x = (double) pos[i1] - pos[i0], e1y = (double) pos[i1 + 1] - pos[i0 + 1], e1z = (double) pos[i1 + 2] - pos[i0 + 2];
-            double e2x = (double) pos[i2] - pos[i0], e2y = (double) pos[i2 + 1] - pos[i0 + 1], e2z = (double) pos[i2 + 2] - pos[i0 + 2];
-            sp.ng.set(e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x).normalize();
+            interpolate(pos, i0, i1, i2, b0, b1, b2, sp.p);
+            edgeCross(i0, i1, i2, sp.ng).normalize();
         } else {
             int k = 4 * (prim - triangleCount);
             double z = 1 - 2 * u1;
@@ -288,6 +274,24 @@ public final class Geometry {
             sp.p.set(sph[k] + r * sp.ng.x, sph[k + 1] + r * sp.ng.y, sph[k + 2] + r * sp.ng.z);
         }
         sp.n.set(sp.ng);
+    }
+
+    /**
+     * cross(v1 − v0, v2 − v0) of the triangle with vertex offsets i0, i1, i2 into {@code dest}.
+     * The edges are formed in double like the intersection test: float subtraction would round
+     * them and tilt ng by up to ~1e-7 off the plane the ray met, enough to misplace spawned origins.
+     */
+    private Vector3d edgeCross(int i0, int i1, int i2, Vector3d dest) {
+        double e1x = (double) pos[i1] - pos[i0], e1y = (double) pos[i1 + 1] - pos[i0 + 1], e1z = (double) pos[i1 + 2] - pos[i0 + 2];
+        double e2x = (double) pos[i2] - pos[i0], e2y = (double) pos[i2 + 1] - pos[i0 + 1], e2z = (double) pos[i2 + 2] - pos[i0 + 2];
+        return dest.set(e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x);
+    }
+
+    /** b0·a[i0..] + b1·a[i1..] + b2·a[i2..] for a per-vertex triple array, into {@code dest}. */
+    private static Vector3d interpolate(float[] a, int i0, int i1, int i2, double b0, double b1, double b2, Vector3d dest) {
+        return dest.set(b0 * a[i0] + b1 * a[i1] + b2 * a[i2],
+                b0 * a[i0 + 1] + b1 * a[i1 + 1] + b2 * a[i2 + 1],
+                b0 * a[i0 + 2] + b1 * a[i1 + 2] + b2 * a[i2 + 2]);
     }
 
     /** Collects meshes and spheres with their material indices. */
