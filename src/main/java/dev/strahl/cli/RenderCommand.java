@@ -122,7 +122,7 @@ final class RenderCommand implements Callable<Integer> {
 
     private RenderSettings settings() {
         return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0, transport.integrator, transport.lightSamples,
-                timeLimit == null ? Duration.ZERO : timeLimit);
+                timeLimit == null ? Duration.ZERO : timeLimit).withPhotons(transport.photons).withPhotonRadius(transport.photonRadius);
     }
 
     /** Refuses an unwritable output before spending time on the render. */

@@ -1,14 +1,16 @@
 package dev.strahl.cli;
 
 import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.integrator.PhotonParameters;
 import dev.strahl.sampling.HemisphereSampling;
 import picocli.CommandLine.Option;
 
 /** The light-transport options that {@code render} and {@code view} share, defined once. */
 final class TransportOptions {
 
-    @Option(names = "--integrator", defaultValue = "path", paramLabel = "path|direct|whitted",
-            description = "Light transport: path (unbiased global illumination), direct (direct light only) or whitted (recursive ray tracing) (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--integrator", defaultValue = "path", paramLabel = "path|direct|whitted|photon",
+            description = "Light transport: path (unbiased global illumination), direct (direct light only), whitted (recursive ray tracing) "
+                    + "or photon (progressive photon mapping: clean caustics early) (default: ${DEFAULT-VALUE}).")
     IntegratorKind integrator;
 
     @Option(names = "--max-depth", defaultValue = "-1",
@@ -22,4 +24,13 @@ final class TransportOptions {
     @Option(names = "--light-samples", defaultValue = "1", paramLabel = "N",
             description = "Shadow rays per diffuse hit for direct and whitted: more gives smoother soft shadows (default: ${DEFAULT-VALUE}).")
     int lightSamples;
+
+    @Option(names = "--photons", defaultValue = "" + PhotonParameters.DEFAULT_PHOTONS, paramLabel = "N",
+            description = "Photons per iteration (one iteration per sample per pixel) for photon (default: ${DEFAULT-VALUE}).")
+    int photons;
+
+    @Option(names = "--photon-radius", defaultValue = "0", paramLabel = "R",
+            description = "Initial photon gather radius in scene units for photon; it shrinks with the iterations. "
+                    + "0 = 1/100 of the scene's bounding-box diagonal (default: ${DEFAULT-VALUE}).")
+    double photonRadius;
 }

@@ -63,7 +63,7 @@ final class ViewCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         try {
             ViewerOptions options = new ViewerOptions(scene, width, height, spp, transport.maxDepth, transport.hemisphere, threads, seed,
-                    transport.integrator, transport.lightSamples, Theme.parse(theme));
+                    transport.integrator, transport.lightSamples, Theme.parse(theme), transport.photons, transport.photonRadius);
             Viewer.open(options).awaitClosed();
             return 0;
         } catch (SceneException | IllegalArgumentException e) {

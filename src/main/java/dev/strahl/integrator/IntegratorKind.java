@@ -11,7 +11,9 @@ public enum IntegratorKind {
     /** Direct lighting only, MIS between light and BSDF sampling: equals PATH at max depth 2. */
     DIRECT,
     /** Recursive (Whitted) ray tracing: specular reflection and refraction, direct light with soft shadows, no indirect diffuse light. */
-    WHITTED;
+    WHITTED,
+    /** Progressive photon mapping (PPPM): clean caustics early; consistent, converges to PATH as iterations grow. */
+    PHOTON;
 
     /** The name used on the command line and in scene files. */
     public String id() {
@@ -24,10 +26,22 @@ public enum IntegratorKind {
      * @param lightSamples shadow rays per diffuse or glossy hit (DIRECT and WHITTED; PATH takes one)
      */
     public Integrator create(Scene scene, int maxDepth, HemisphereSampling hemisphere, boolean cullBackFaces, int lightSamples) {
+        return create(scene, maxDepth, hemisphere, cullBackFaces, lightSamples, PhotonParameters.defaults());
+    }
+
+    /**
+     * Creates the integrator.
+     *
+     * @param lightSamples shadow rays per diffuse or glossy hit (DIRECT and WHITTED; PATH and PHOTON take one)
+     * @param photons      photons per iteration and initial radius (PHOTON only)
+     */
+    public Integrator create(Scene scene, int maxDepth, HemisphereSampling hemisphere, boolean cullBackFaces, int lightSamples,
+                             PhotonParameters photons) {
         return switch (this) {
             case PATH -> new PathTracer(scene, maxDepth, hemisphere, cullBackFaces, PathTracer.Strategy.MIS);
             case DIRECT -> new DirectLighting(scene, hemisphere, cullBackFaces, lightSamples);
             case WHITTED -> new Whitted(scene, maxDepth, cullBackFaces, lightSamples);
+            case PHOTON -> new PhotonMapper(scene, maxDepth, hemisphere, cullBackFaces, photons);
         };
     }
 }

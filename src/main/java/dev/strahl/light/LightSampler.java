@@ -82,13 +82,7 @@ public final class LightSampler {
         if (prims.length == 0) {
             return false;
         }
-        int i = Arrays.binarySearch(cdf, uLight);
-        i = i >= 0 ? i + 1 : -i - 1;                 // first entry with cdf > uLight
-        if (i >= prims.length) {
-            i = prims.length - 1;
-        }
-        int prim = prims[i];
-        geometry.samplePoint(prim, u1, u2, scratch);
+        geometry.samplePoint(pick(uLight), u1, u2, scratch);
         out.p.set(scratch.p);
         out.ng.set(scratch.ng);
         double dx = out.p.x - ref.x(), dy = out.p.y - ref.y(), dz = out.p.z - ref.z();
@@ -106,6 +100,27 @@ public final class LightSampler {
         out.pdf = pdf(scratch.material, dist, cosLight);
         out.radiance = emission[scratch.material];
         return out.pdf > 0 && Double.isFinite(out.pdf);
+    }
+
+    /**
+     * Picks an emissive primitive in proportion to its power and a point on it uniformly by area,
+     * as {@link #sample} does but without a reference point: the start of a light path (photon
+     * emission). Writes the point, its geometric normal and material into {@code dest} and returns
+     * the point's density per unit area, mean(Le) / {@link #totalPower()}; 0 if there is no light.
+     */
+    public double samplePoint(double uLight, double u1, double u2, SurfacePoint dest) {
+        if (prims.length == 0) {
+            return 0;
+        }
+        geometry.samplePoint(pick(uLight), u1, u2, dest);
+        return weight(dest.material) / totalPower;
+    }
+
+    /** The emissive primitive whose power interval holds u: the first with cdf > u. */
+    private int pick(double u) {
+        int i = Arrays.binarySearch(cdf, u);
+        i = i >= 0 ? i + 1 : -i - 1;
+        return prims[Math.min(i, prims.length - 1)];
     }
 
     /**

@@ -5,6 +5,7 @@ import dev.strahl.film.Film;
 import dev.strahl.film.Image;
 import dev.strahl.geometry.Ray;
 import dev.strahl.integrator.Integrator;
+import dev.strahl.integrator.Parallel;
 import dev.strahl.math.Rgb;
 import dev.strahl.sampling.Rng;
 import dev.strahl.scene.Scene;
@@ -24,7 +25,9 @@ import java.util.concurrent.atomic.AtomicLong;
 /**
  * A render running in the background: passes over the whole image, each adding a few samples
  * per pixel, on a fixed pool of worker threads that take {@value Film#TILE}-pixel tiles from an
- * atomic counter. The random numbers of a sample depend only on (seed, pixel, sample index), and
+ * atomic counter. An integrator that {@linkplain Integrator#preparesEachSample prepares each
+ * sample index} (the photon mapper) gets passes of one sample per pixel, each preceded by its
+ * {@link Integrator#prepareSample} on the same threads. The random numbers of a sample depend only on (seed, pixel, sample index), and
  * each pixel adds its samples in index order, so the image is bit-identical for any thread count.
  *
  * <pre>{@code
@@ -83,7 +86,7 @@ public final class RenderJob implements AutoCloseable {
     public static RenderJob start(Scene scene, RenderSettings settings, RenderListener listener) {
         Objects.requireNonNull(settings, "settings");
         Integrator integrator = settings.integrator().create(scene, settings.maxDepth(), settings.hemisphere(),
-                settings.cullBackFaces(), settings.lightSamples());
+                settings.cullBackFaces(), settings.lightSamples(), settings.photonParameters());
         return start(scene, settings, integrator, listener);
     }
 
@@ -190,11 +193,18 @@ public final class RenderJob implements AutoCloseable {
     private void run() {
         try {
             int spp = settings.samplesPerPixel();
+            boolean prepares = integrator.preparesEachSample();
             int start = 0;
             int pass = 0;
             while (start < spp && !cancelled) {
-                int size = settings.samplesPerPass() > 0 ? settings.samplesPerPass() : autoPassSize(pass);
+                int size = prepares ? 1 : settings.samplesPerPass() > 0 ? settings.samplesPerPass() : autoPassSize(pass);
                 int end = Math.min(spp, start + size);
+                if (prepares) {
+                    integrator.prepareSample(settings.seed(), start, this::runChunks);
+                    if (cancelled) {
+                        break;
+                    }
+                }
                 renderPass(start, end);
                 if (cancelled) {
                     break;
@@ -238,6 +248,36 @@ public final class RenderJob implements AutoCloseable {
         }
         for (Future<?> task : tasks) {
             task.get();
+        }
+    }
+
+    /** {@link Parallel} on the job's workers: chunks are taken from an atomic counter, each run with its thread's worker. */
+    private void runChunks(int count, Parallel.Task task) {
+        AtomicInteger next = new AtomicInteger();
+        List<Future<?>> tasks = new ArrayList<>(threads);
+        for (WorkerState w : workers) {
+            tasks.add(pool.submit(() -> {
+                for (int i = next.getAndIncrement(); i < count && !cancelled; i = next.getAndIncrement()) {
+                    task.run(i, w.integrator);
+                }
+            }));
+        }
+        try {
+            for (Future<?> t : tasks) {
+                t.get();
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            cancelled = true;
+            throw new IllegalStateException("interrupted while preparing a pass", e);
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof RuntimeException r) {
+                throw r;
+            }
+            if (e.getCause() instanceof Error err) {
+                throw err;
+            }
+            throw new IllegalStateException(e.getCause());
         }
     }
 

@@ -1,6 +1,7 @@
 package dev.strahl.render;
 
 import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.integrator.PhotonParameters;
 import dev.strahl.sampling.HemisphereSampling;
 import java.time.Duration;
 import java.util.Objects;
@@ -21,10 +22,13 @@ import java.util.Objects;
  * @param integrator      which light transport algorithm computes the radiance
  * @param lightSamples    shadow rays per diffuse or glossy hit for the direct and Whitted integrators
  * @param timeLimit       stop at the end of the pass during which this much time has passed; zero for no limit
+ * @param photons         photons emitted per iteration (= per sample per pixel) by the photon mapper
+ * @param photonRadius    the photon mapper's initial gather radius in scene units; 0 = automatic (from the scene size)
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, long seed, int threads,
                              HemisphereSampling hemisphere, boolean cullBackFaces, int samplesPerPass,
-                             IntegratorKind integrator, int lightSamples, Duration timeLimit) {
+                             IntegratorKind integrator, int lightSamples, Duration timeLimit,
+                             int photons, double photonRadius) {
 
     /** Largest accepted film edge, to refuse absurd sizes before allocating. */
     public static final int MAX_SIZE = 1 << 15;
@@ -57,6 +61,15 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         if (timeLimit.isNegative()) {
             throw new IllegalArgumentException("time limit must not be negative, got " + timeLimit);
         }
+        new PhotonParameters(photons, photonRadius);        // validates
+    }
+
+    /** Settings with the photon mapper's defaults ({@value PhotonParameters#DEFAULT_PHOTONS} photons, automatic radius). */
+    public RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, long seed, int threads,
+                          HemisphereSampling hemisphere, boolean cullBackFaces, int samplesPerPass,
+                          IntegratorKind integrator, int lightSamples, Duration timeLimit) {
+        this(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples,
+                timeLimit, PhotonParameters.DEFAULT_PHOTONS, 0);
     }
 
     /** 512×512, 64 spp, unbounded depth, seed 0, all processors, cosine sampling, no culling, path tracing. */
@@ -65,47 +78,61 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
     }
 
     public RenderSettings withSize(int w, int h) {
-        return new RenderSettings(w, h, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit);
+        return new RenderSettings(w, h, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, photons, photonRadius);
     }
 
     public RenderSettings withSamplesPerPixel(int spp) {
-        return new RenderSettings(width, height, spp, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit);
+        return new RenderSettings(width, height, spp, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, photons, photonRadius);
     }
 
     public RenderSettings withMaxDepth(int depth) {
-        return new RenderSettings(width, height, samplesPerPixel, depth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit);
+        return new RenderSettings(width, height, samplesPerPixel, depth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, photons, photonRadius);
     }
 
     public RenderSettings withSeed(long s) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, s, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, s, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, photons, photonRadius);
     }
 
     public RenderSettings withThreads(int n) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, n, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, n, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, photons, photonRadius);
     }
 
     public RenderSettings withHemisphere(HemisphereSampling h) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, h, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, h, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, photons, photonRadius);
     }
 
     public RenderSettings withCullBackFaces(boolean cull) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cull, samplesPerPass, integrator, lightSamples, timeLimit);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cull, samplesPerPass, integrator, lightSamples, timeLimit, photons, photonRadius);
     }
 
     public RenderSettings withSamplesPerPass(int n) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, n, integrator, lightSamples, timeLimit);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, n, integrator, lightSamples, timeLimit, photons, photonRadius);
     }
 
     public RenderSettings withIntegrator(IntegratorKind kind) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, kind, lightSamples, timeLimit);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, kind, lightSamples, timeLimit, photons, photonRadius);
     }
 
     public RenderSettings withLightSamples(int n) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, n, timeLimit);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, n, timeLimit, photons, photonRadius);
     }
 
     public RenderSettings withTimeLimit(Duration limit) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, limit);
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, limit, photons, photonRadius);
+    }
+
+    public RenderSettings withPhotons(int n) {
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, n, photonRadius);
+    }
+
+    /** The photon mapper's initial radius; 0 chooses it from the scene size. */
+    public RenderSettings withPhotonRadius(double radius) {
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, photons, radius);
+    }
+
+    /** The photon mapper's parameters. */
+    public PhotonParameters photonParameters() {
+        return new PhotonParameters(photons, photonRadius);
     }
 
     /** The thread count to use: {@link #threads()}, or the available processors when it is 0. */

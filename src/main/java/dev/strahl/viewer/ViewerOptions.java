@@ -1,6 +1,7 @@
 package dev.strahl.viewer;
 
 import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.integrator.PhotonParameters;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.sampling.HemisphereSampling;
 import java.nio.file.Path;
@@ -20,9 +21,12 @@ import java.util.Objects;
  * @param integrator   the light transport algorithm
  * @param lightSamples shadow rays per diffuse hit for the direct and Whitted integrators
  * @param theme      light, dark, or follow the system
+ * @param photons      photons per iteration for the photon mapper
+ * @param photonRadius the photon mapper's initial gather radius; 0 = automatic
  */
 public record ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere,
-                            int threads, long seed, IntegratorKind integrator, int lightSamples, Theme theme) {
+                            int threads, long seed, IntegratorKind integrator, int lightSamples, Theme theme,
+                            int photons, double photonRadius) {
 
     public ViewerOptions {
         if (stopAt < 0) {
@@ -31,7 +35,14 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
         Objects.requireNonNull(hemisphere, "hemisphere");
         Objects.requireNonNull(integrator, "integrator");
         Objects.requireNonNull(theme, "theme");
-        renderSettings(width, height, maxDepth, hemisphere, threads, seed, integrator, lightSamples);   // validates
+        renderSettings(width, height, maxDepth, hemisphere, threads, seed, integrator, lightSamples, photons, photonRadius);   // validates
+    }
+
+    /** Options with the photon mapper's default parameters. */
+    public ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere,
+                         int threads, long seed, IntegratorKind integrator, int lightSamples, Theme theme) {
+        this(scene, width, height, stopAt, maxDepth, hemisphere, threads, seed, integrator, lightSamples, theme,
+                PhotonParameters.DEFAULT_PHOTONS, 0);
     }
 
     /** The Cornell Box at 512×512, stopping at 1024 spp, unbounded depth, cosine sampling, all processors. */
@@ -41,12 +52,13 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
 
     /** The render settings these options describe (validated by {@link RenderSettings}). */
     RenderSettings renderSettings() {
-        return renderSettings(width, height, maxDepth, hemisphere, threads, seed, integrator, lightSamples);
+        return renderSettings(width, height, maxDepth, hemisphere, threads, seed, integrator, lightSamples, photons, photonRadius);
     }
 
     private static RenderSettings renderSettings(int width, int height, int maxDepth, HemisphereSampling hemisphere, int threads, long seed,
-                                                 IntegratorKind integrator, int lightSamples) {
+                                                 IntegratorKind integrator, int lightSamples, int photons, double photonRadius) {
         return RenderSettings.defaults().withSize(width, height).withMaxDepth(maxDepth).withHemisphere(hemisphere)
-                .withThreads(threads).withSeed(seed).withIntegrator(integrator).withLightSamples(lightSamples).withSamplesPerPass(1);
+                .withThreads(threads).withSeed(seed).withIntegrator(integrator).withLightSamples(lightSamples).withSamplesPerPass(1)
+                .withPhotons(photons).withPhotonRadius(photonRadius);
     }
 }
