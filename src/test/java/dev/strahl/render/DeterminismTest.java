@@ -3,6 +3,7 @@ package dev.strahl.render;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import dev.strahl.film.Image;
+import dev.strahl.integrator.IntegratorKind;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneLoader;
 import dev.strahl.testing.Renders;
@@ -33,6 +34,23 @@ class DeterminismTest {
         Image auto = Renders.render(scene, SETTINGS);
         Image single = Renders.render(scene, SETTINGS.withSamplesPerPass(1));
         assertThat(single.rgb()).isEqualTo(auto.rgb());
+    }
+
+    /**
+     * The photon mapper traces each iteration's photons in chunks on the job's threads: the map,
+     * and so the image, must not depend on how many threads took the chunks.
+     */
+    @Test
+    void photonMappingGivesIdenticalBitsOnOneTwoAndThreeThreads() throws Exception {
+        Scene scene = SceneLoader.load(Path.of("scenes/cornell-sphere.json"));      // glass and mirror: caustic photons
+        RenderSettings photon = SETTINGS.withSamplesPerPixel(3).withIntegrator(IntegratorKind.PHOTON).withPhotons(10_000);
+        Image one = Renders.render(scene, photon.withThreads(1));
+        Image two = Renders.render(scene, photon.withThreads(2));
+        Image three = Renders.render(scene, photon.withThreads(3));
+        assertThat(two.rgb()).isEqualTo(one.rgb());
+        assertThat(three.rgb()).isEqualTo(one.rgb());
+        assertThat(Renders.render(scene, photon.withThreads(2).withSamplesPerPass(4)).rgb()).isEqualTo(one.rgb());
+        assertThat(Renders.render(scene, photon.withSeed(43)).rgb()).isNotEqualTo(one.rgb());
     }
 
     @Test
