@@ -63,6 +63,7 @@ public final class PhotonMapper implements Integrator {
     private final boolean cullBackFaces;
     private final int photonsPerIteration;
     private final double initialRadius;
+    private final int minPhotonSegments;
     private final boolean tracesPhotons;
     private final PhotonList[] chunks;
     private final PhotonList all = new PhotonList();
@@ -82,7 +83,9 @@ public final class PhotonMapper implements Integrator {
         this.photonsPerIteration = parameters.photonsPerIteration();
         this.initialRadius = parameters.initialRadius() > 0 ? parameters.initialRadius() : automaticRadius(scene);
         boolean emits = !scene.lights().isEmpty() || !scene.environment().isBlack();
-        this.tracesPhotons = emits && (maxDepth < 0 || maxDepth >= 3);      // a photon path has >= 2 segments
+        // Stored photons have >= 2 segments, or >= 1 if they come from the environment.
+        this.minPhotonSegments = scene.environment().isBlack() ? 2 : 1;
+        this.tracesPhotons = emits && (maxDepth < 0 || maxDepth >= 1 + minPhotonSegments);
         int chunkCount = tracesPhotons ? (photonsPerIteration + PHOTONS_PER_CHUNK - 1) / PHOTONS_PER_CHUNK : 0;
         this.chunks = new PhotonList[chunkCount];
         for (int i = 0; i < chunkCount; i++) {
@@ -200,7 +203,7 @@ public final class PhotonMapper implements Integrator {
                     if (!lights.isEmpty()) {
                         tracer.direct.add(bsdf, s.sp, s.frame, s.woLocal, rng, 1, 0, beta, out);
                     }
-                    if (maxDepth < 0 || depth + 2 <= maxDepth) {
+                    if (maxDepth < 0 || depth + minPhotonSegments <= maxDepth) {
                         gather(it, depth, out);
                     }
                     return;

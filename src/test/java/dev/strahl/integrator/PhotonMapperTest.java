@@ -56,19 +56,21 @@ class PhotonMapperTest {
     /**
      * A diffuse sphere under a uniform environment L: it sees only the environment, so its
      * radiance is ρ·L everywhere. No area light: all its light comes from environment photons,
-     * stored from their first hit. Tolerance 3 %: over seeds 1–6 the image mean scatters by
+     * stored from their first hit, so that max depth 2 (one bounce) already has all of it, and
+     * max depth 1 none. Tolerance 3 %: over seeds 1–6 the image mean scatters by
      * 1.7 % (σ) around 1.217.
      */
-    @Test
-    void sphereUnderUniformEnvironmentReflectsAlbedoTimesRadiance() {
+    @ParameterizedTest(name = "maxDepth {0}")
+    @CsvSource({"-1, 1.2", "2, 1.2", "1, 0"})
+    void sphereUnderUniformEnvironmentReflectsAlbedoTimesRadiance(int maxDepth, double expected) {
         Scene scene = Scene.builder()
                 .addSphere(new Sphere(new Vector3d(), 1), Material.diffuse("ball", Rgb.gray(0.6)))
                 .environment(Rgb.gray(2))
                 .camera(new Camera(new Vector3d(0, 0, 4), new Vector3d(), new Vector3d(0, 1, 0), 10))     // only the sphere in view
                 .build();
-        Image img = Renders.render(scene, photonSettings(-1, 8, 100_000, 0.1));
+        Image img = Renders.render(scene, photonSettings(maxDepth, 8, 100_000, 0.1));
         for (int c = 0; c < 3; c++) {
-            assertThat(img.mean()[c]).isCloseTo(1.2, within(0.03 * 1.2));
+            assertThat(img.mean()[c]).isCloseTo(expected, within(0.03 * expected));
         }
     }
 

@@ -1,0 +1,33 @@
+package dev.strahl.viewer;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.integrator.PhotonParameters;
+import dev.strahl.sampling.HemisphereSampling;
+import org.junit.jupiter.api.Test;
+
+/** The photon mapper is one of the viewer's integrators and gets its parameters. */
+class ViewerPhotonOptionsTest {
+
+    @Test
+    void photonParametersReachTheRenderSettings() {
+        ViewerOptions o = new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PHOTON, 1, Theme.LIGHT, 5000, 0.03);
+        assertThat(o.renderSettings().integrator()).isEqualTo(IntegratorKind.PHOTON);
+        assertThat(o.renderSettings().photonParameters()).isEqualTo(new PhotonParameters(5000, 0.03));
+        assertThat(ViewerOptions.defaults().renderSettings().photonParameters()).isEqualTo(PhotonParameters.defaults());
+    }
+
+    @Test
+    void badPhotonParametersAreRefused() {
+        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PHOTON, 1, Theme.LIGHT, 0, 0))
+                .hasMessageContaining("photons per iteration");
+    }
+
+    @Test
+    void theIntegratorChoiceOffersPhoton() {
+        assertThat(IntegratorKind.values()).contains(IntegratorKind.PHOTON);
+        assertThat(IntegratorKind.PHOTON.id()).isEqualTo("photon");
+    }
+}
