@@ -3,6 +3,8 @@ package dev.strahl.cli;
 import dev.strahl.camera.Camera;
 import dev.strahl.film.Film;
 import dev.strahl.film.ImageWriters;
+import dev.strahl.render.Checkpoint;
+import dev.strahl.render.CheckpointException;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
@@ -11,6 +13,7 @@ import dev.strahl.scene.SceneException;
 import dev.strahl.scene.SceneLoader;
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -25,12 +28,17 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
-/** {@code strahl render}: renders a scene file to an image. */
+/**
+ * {@code strahl render}: renders a scene file to an image. Exit codes: 0 done, 1 a failure while
+ * rendering or writing, 2 bad usage or input (nothing is written), 130/143 interrupted by
+ * SIGINT/SIGTERM (the image rendered so far, and a checkpoint if asked for, are written).
+ */
 @Command(name = "render",
         mixinStandardHelpOptions = true,
         versionProvider = Main.Version.class,
         description = {"Renders a scene (.json scene file or .obj) to a PNG (sRGB, 8 bit) or PFM (linear float) image.",
-            "Without camera options the scene's camera is used; an OBJ is framed from +Z."},
+            "Without camera options the scene's camera is used; an OBJ is framed from +Z.",
+            "Ctrl-C stops and writes the image rendered so far; a second Ctrl-C exits at once."},
         sortOptions = false)
 final class RenderCommand implements Callable<Integer> {
 
@@ -55,18 +63,28 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--spp", defaultValue = "64", description = "Samples per pixel (default: ${DEFAULT-VALUE}).")
     int spp;
 
-
     @Option(names = "--seed", defaultValue = "0", description = "Random seed; the same seed gives the same image (default: ${DEFAULT-VALUE}).")
     long seed;
 
     @Option(names = "--threads", defaultValue = "0", description = "Worker threads; 0 = all processors (default: ${DEFAULT-VALUE}).")
     int threads;
 
-
-
     @Option(names = "--time-limit", paramLabel = "DURATION", converter = Durations.class,
             description = "Stop at the end of the pass that crosses this time (e.g. 90s, 5m, 1h30m) and write the image.")
     Duration timeLimit;
+
+    @Option(names = "--checkpoint", paramLabel = "FILE",
+            description = "Save the render's state to FILE periodically, when interrupted and at the end, for --resume.")
+    Path checkpoint;
+
+    @Option(names = "--checkpoint-interval", paramLabel = "DURATION", converter = Durations.class, defaultValue = "5m",
+            description = "Time between periodic checkpoints (default: ${DEFAULT-VALUE}).")
+    Duration checkpointInterval;
+
+    @Option(names = "--resume", paramLabel = "FILE",
+            description = "Continue the render saved in checkpoint FILE (same scene and settings; --spp may be raised)."
+                    + " New checkpoints go to FILE too unless --checkpoint names another.")
+    Path resume;
 
     @Option(names = "--cull-back-faces", description = "Skip back faces of closed meshes for camera and bounce rays.")
     boolean cullBackFaces;
@@ -86,56 +104,114 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = {"-q", "--quiet"}, description = "Print nothing but errors.")
     boolean quiet;
 
+    @Mixin
+    DebugOption debug;
+
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
-        try {
-            RenderSettings settings = settings();
-            if (fov != null && !(fov > 0 && fov < 180)) {
-                throw new IllegalArgumentException("--fov: the field of view must be in (0, 180) degrees, got " + fov);
-            }
-            checkOutput();
-            Scene loaded = SceneLoader.load(scene);
-            Scene s = loaded.withCamera(camera(loaded.camera()));
-            if (!quiet) {
-                for (String note : s.notes()) {
-                    err.println("strahl: note: " + note);
-                }
-                err.flush();
-            }
-            return render(s, settings, err);
-        } catch (SceneException e) {
-            err.println("strahl: " + e.getMessage());
-            return 2;
+        try (Interrupts irq = Interrupts.install(err)) {
+            return run(err, irq);
+        } catch (SceneException | CheckpointException e) {
+            return fail(err, e, e.getMessage(), 2);
         } catch (IllegalArgumentException e) {
-            err.println("strahl: " + e.getMessage());
-            return 2;
-        } catch (IOException e) {
-            err.println("strahl: cannot write " + output + ": " + e.getMessage());
-            return 1;
+            return fail(err, e, e.getMessage(), 2);
+        } catch (OutOfMemoryError e) {
+            return fail(err, e, "out of memory (the Java heap has at most " + HeapCheck.bytes(Runtime.getRuntime().maxMemory())
+                    + "): give Java more memory (java -Xmx...) or render a smaller scene or image", 1);
+        } catch (RenderFailure e) {
+            return fail(err, e.getCause(), e.getMessage(), 1);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            err.println("strahl: interrupted");
-            return 1;
+            return fail(err, e, "interrupted", 1);
+        }
+    }
+
+    private int fail(PrintWriter err, Throwable e, String message, int code) {
+        err.println("strahl: " + message);
+        if (debug.enabled && e != null) {
+            e.printStackTrace(err);
+        }
+        err.flush();
+        return code;
+    }
+
+    private int run(PrintWriter err, Interrupts irq) throws SceneException, CheckpointException, InterruptedException {
+        RenderSettings settings = settings();
+        if (fov != null && !(fov > 0 && fov < 180)) {
+            throw new IllegalArgumentException("--fov: the field of view must be in (0, 180) degrees, got " + fov);
+        }
+        checkOutput(output, "output");
+        Path checkpointFile = checkpoint != null ? checkpoint : resume;
+        if (checkpointFile != null) {
+            checkCheckpointFile(checkpointFile);
+        }
+        HeapCheck.checkFilm(width, height);
+        Scene loaded = load();
+        Scene s = loaded.withCamera(camera(loaded.camera()));
+        if (!quiet) {
+            for (String note : s.notes()) {
+                err.println("strahl: note: " + note);
+            }
+            err.flush();
+        }
+        Checkpoint identity = checkpointFile != null ? Checkpoint.of(s, settings) : null;
+        Checkpoint.Restored restored = resume != null ? restore(identity) : null;
+        if (restored != null && !quiet) {
+            err.println(String.format(Locale.ROOT, "strahl: resuming %s at %d spp (%.1f s rendered before)", resume,
+                    restored.samplesPerPixel(), restored.seconds()));
+            err.flush();
+        }
+        return render(s, settings, identity, checkpointFile, restored, err, irq);
+    }
+
+    private Scene load() throws SceneException {
+        try {
+            return SceneLoader.load(scene);
+        } catch (OutOfMemoryError e) {
+            throw new IllegalArgumentException(scene + ": the scene does not fit in the Java heap (at most "
+                    + HeapCheck.bytes(Runtime.getRuntime().maxMemory()) + "): give Java more memory (java -Xmx...)", e);
+        }
+    }
+
+    private Checkpoint.Restored restore(Checkpoint identity) throws CheckpointException {
+        try {
+            return identity.restore(resume);
+        } catch (IOException e) {
+            throw new CheckpointException(resume, "cannot read the checkpoint: " + e.getMessage());
         }
     }
 
     private RenderSettings settings() {
-        return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0, transport.integrator, transport.lightSamples,
-                timeLimit == null ? Duration.ZERO : timeLimit);
+        return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0,
+                transport.integrator, transport.lightSamples, timeLimit == null ? Duration.ZERO : timeLimit);
     }
 
     /** Refuses an unwritable output before spending time on the render. */
-    private void checkOutput() {
-        if (!ImageWriters.isSupported(output)) {
-            throw new IllegalArgumentException("unknown image format of " + output + ": use .png or .pfm");
+    private void checkOutput(Path file, String what) {
+        if (!ImageWriters.isSupported(file)) {
+            throw new IllegalArgumentException("unknown image format of " + file + ": use .png or .pfm");
         }
-        Path dir = output.toAbsolutePath().getParent();
+        checkWritable(file, what);
+    }
+
+    private void checkCheckpointFile(Path file) {
+        if (file.toAbsolutePath().normalize().equals(output.toAbsolutePath().normalize())) {
+            throw new IllegalArgumentException("the checkpoint " + file + " and the output image must be different files");
+        }
+        checkWritable(file, "checkpoint");
+    }
+
+    private static void checkWritable(Path file, String what) {
+        Path dir = file.toAbsolutePath().getParent();
         if (dir == null || !Files.isDirectory(dir)) {
-            throw new IllegalArgumentException("output directory does not exist: " + dir);
+            throw new IllegalArgumentException(what + " directory does not exist: " + dir);
         }
         if (!Files.isWritable(dir)) {
-            throw new IllegalArgumentException("output directory is not writable: " + dir);
+            throw new IllegalArgumentException(what + " directory is not writable: " + dir);
+        }
+        if (Files.isDirectory(file)) {
+            throw new IllegalArgumentException(what + " " + file + " is a directory");
         }
     }
 
@@ -144,33 +220,62 @@ final class RenderCommand implements Callable<Integer> {
                 up != null ? up : base.up(), fov != null ? fov : base.fovDegrees());
     }
 
-    private int render(Scene s, RenderSettings settings, PrintWriter err) throws IOException, InterruptedException {
+    private int render(Scene s, RenderSettings settings, Checkpoint identity, Path checkpointFile, Checkpoint.Restored restored,
+                       PrintWriter err, Interrupts irq) throws InterruptedException {
+        Film film = restored != null ? restored.film() : new Film(settings.width(), settings.height());
+        var saver = identity == null ? null
+                : new CheckpointSaver(identity, checkpointFile, film, checkpointInterval, restored, err);
         boolean showProgress = !quiet && Terminal.isStderrTerminal();
         ProgressBar bar = new ProgressBar(System.err);
         RenderStats stats;
-        Film film;
-        try (RenderJob job = RenderJob.start(s, settings)) {
+        try (RenderJob job = RenderJob.resume(s, settings, film, saver != null ? saver : new dev.strahl.render.RenderListener() {})) {
+            if (saver != null) {
+                saver.attach(job);
+            }
+            irq.onFirstSignal(job::cancel);
             while (!job.await(200, TimeUnit.MILLISECONDS)) {
                 if (showProgress) {
                     bar.update(job.progress(), job.elapsedSeconds(), job.samplesDone());
                 }
             }
-            stats = job.awaitStats();
-            film = job.film();
+            try {
+                stats = job.awaitStats();
+            } catch (IllegalStateException e) {
+                throw new RenderFailure("the render failed: " + e.getCause(), e.getCause());
+            }
         } finally {
             if (showProgress) {
                 bar.finish();
             }
         }
-        ImageWriters.write(film, output);
-        if (!quiet) {
+        try {
+            ImageWriters.write(film, output);
+        } catch (IOException | UncheckedIOException e) {
+            throw new RenderFailure("cannot write " + output + ": " + e.getMessage(), e);
+        }
+        boolean savedCheckpoint = saver != null && saver.saveFinal(stats);
+        irq.written();
+        long invalid = stats.invalidSamples() + (restored != null ? restored.invalidSamples() : 0);
+        if (irq.interrupted()) {
+            err.println(String.format(Locale.ROOT, "strahl: interrupted at %d of %d spp after %.2f s: wrote %s%s",
+                    stats.samplesPerPixel(), settings.samplesPerPixel(), stats.seconds(), output,
+                    savedCheckpoint ? "; continue with --resume " + checkpointFile : ""));
+        } else if (!quiet) {
             err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %d spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
                     transport.integrator.id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
                     ProgressBar.si(stats.samplesPerSecond()), ProgressBar.si(stats.raysPerSecond()), stats.threads(), output));
-            if (stats.invalidSamples() > 0) {
-                err.println("strahl: warning: " + stats.invalidSamples() + " samples were NaN or infinite and counted as black");
-            }
         }
-        return 0;
+        if (!quiet && invalid > 0) {
+            err.println("strahl: warning: " + invalid + " samples were NaN or infinite and counted as black");
+        }
+        err.flush();
+        return irq.interrupted() ? irq.exitCode() : 0;
+    }
+
+    /** A failure while rendering or writing the result: exit code 1. */
+    static final class RenderFailure extends RuntimeException {
+        RenderFailure(String message, Throwable cause) {
+            super(message, cause);
+        }
     }
 }

@@ -58,6 +58,9 @@ final class ViewCommand implements Callable<Integer> {
             description = "Light or dark look; system follows the desktop where it can (default: ${DEFAULT-VALUE}).")
     String theme;
 
+    @Mixin
+    DebugOption debug;
+
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
@@ -68,6 +71,9 @@ final class ViewCommand implements Callable<Integer> {
             return 0;
         } catch (SceneException | IllegalArgumentException e) {
             err.println("strahl: " + e.getMessage());
+            if (debug.enabled) {
+                e.printStackTrace(err);
+            }
             return 2;
         } catch (HeadlessException e) {
             err.println("strahl: view needs a display: DISPLAY is not set, or java.awt.headless is true");

@@ -78,6 +78,51 @@ public final class Film {
         return count[pixelIndex(x, y)];
     }
 
+    /** Number of samples the pixel with this {@link #pixelIndex} has received. */
+    public int sampleCountAt(int pixelIndex) {
+        return count[pixelIndex];
+    }
+
+    /** The fewest samples any pixel has received: every pixel holds at least this many. */
+    public int minSampleCount() {
+        int min = Integer.MAX_VALUE;
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                min = Math.min(min, count[pixelIndex(x, y)]);
+            }
+        }
+        return min;
+    }
+
+    /**
+     * The saved state of pixel (x, y), for checkpoints: its r, g, b sums go into
+     * {@code sumsDest[0..2]}, and its sample count is returned. Only consistent while nothing
+     * renders into the film (between passes, or after the render).
+     */
+    public int pixelState(int x, int y, double[] sumsDest) {
+        int p = pixelIndex(x, y);
+        sumsDest[0] = sum[3 * p];
+        sumsDest[1] = sum[3 * p + 1];
+        sumsDest[2] = sum[3 * p + 2];
+        return count[p];
+    }
+
+    /**
+     * Sets pixel (x, y) to a state saved by {@link #pixelState}: the sums of its first
+     * {@code samples} samples. Rendering then continues each pixel from the sample index it has
+     * reached, so a restored film gives the same bits as one that was never saved.
+     */
+    public void restorePixel(int x, int y, int samples, double r, double g, double b) {
+        if (samples < 0) {
+            throw new IllegalArgumentException("sample count must not be negative, got " + samples);
+        }
+        int p = pixelIndex(x, y);
+        sum[3 * p] = r;
+        sum[3 * p + 1] = g;
+        sum[3 * p + 2] = b;
+        count[p] = samples;
+    }
+
     /** The mean radiance per pixel, in row-major order; pixels without samples are black. */
     public Image toImage() {
         float[] rgb = new float[3 * width * height];

@@ -51,12 +51,13 @@ public final class RenderJob implements AutoCloseable {
     private final WorkerState[] workers;
     private volatile boolean cancelled;
     private volatile int completedSpp;
+    private volatile long restoredSamples;           // held by a resumed film before this job began
     private final long startNanos;
 
-    private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener) {
+    private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener, Film film) {
         this.settings = settings;
         this.listener = listener;
-        this.film = new Film(settings.width(), settings.height());
+        this.film = film != null ? film : new Film(settings.width(), settings.height());
         this.cameraRays = scene.camera().rays(settings.width(), settings.height());
         this.integrator = integrator;
         this.threads = settings.effectiveThreads();
@@ -96,7 +97,32 @@ public final class RenderJob implements AutoCloseable {
         Objects.requireNonNull(settings, "settings");
         Objects.requireNonNull(integrator, "integrator");
         Objects.requireNonNull(listener, "listener");
-        RenderJob job = new RenderJob(scene, settings, integrator, listener);
+        return launch(new RenderJob(scene, settings, integrator, listener, null));
+    }
+
+    /**
+     * Continues a render into {@code film}, which holds the state of an earlier one with the same
+     * scene and settings (restored from a checkpoint, see {@link Film#restorePixel}). Each pixel
+     * goes on from the sample index it has reached, and the samples of a pixel are added in index
+     * order as always, so the result is bit-identical to a render that was never interrupted.
+     * The listener may read {@code film} in {@link RenderListener#passCompleted}: no worker writes
+     * to it until that returns.
+     */
+    public static RenderJob resume(Scene scene, RenderSettings settings, Film film, RenderListener listener) {
+        Objects.requireNonNull(scene, "scene");
+        Objects.requireNonNull(settings, "settings");
+        Objects.requireNonNull(film, "film");
+        Objects.requireNonNull(listener, "listener");
+        if (film.width() != settings.width() || film.height() != settings.height()) {
+            throw new IllegalArgumentException("film " + film.width() + "x" + film.height() + " does not match the settings' "
+                    + settings.width() + "x" + settings.height());
+        }
+        Integrator integrator = settings.integrator().create(scene, settings.maxDepth(), settings.hemisphere(),
+                settings.cullBackFaces(), settings.lightSamples());
+        return launch(new RenderJob(scene, settings, integrator, listener, film));
+    }
+
+    private static RenderJob launch(RenderJob job) {
         Thread coordinator = new Thread(job::run, "strahl-render-" + JOB_NUMBER.get());
         coordinator.setDaemon(true);
         coordinator.start();
@@ -125,12 +151,17 @@ public final class RenderJob implements AutoCloseable {
     /** Fraction of the requested samples taken, in [0, 1]. */
     public double progress() {
         double total = (double) settings.samplesPerPixel() * settings.width() * settings.height();
-        return Math.min(1, samplesDone.get() / total);
+        return Math.min(1, (restoredSamples + samplesDone.get()) / total);
     }
 
-    /** Camera samples taken so far. */
+    /** Camera samples taken so far by this job (not counting those of a resumed film). */
     public long samplesDone() {
         return samplesDone.get();
+    }
+
+    /** Samples of this job whose radiance was NaN or infinite (added to the film as black). */
+    public long invalidSamples() {
+        return invalidSamples.get();
     }
 
     /** Seconds since the job started. */
@@ -190,7 +221,9 @@ public final class RenderJob implements AutoCloseable {
     private void run() {
         try {
             int spp = settings.samplesPerPixel();
-            int start = 0;
+            int start = film.minSampleCount();             // 0, unless the film was restored
+            completedSpp = Math.min(start, spp);
+            restoredSamples = samplesIn(film);
             int pass = 0;
             while (start < spp && !cancelled) {
                 int size = settings.samplesPerPass() > 0 ? settings.samplesPerPass() : autoPassSize(pass);
@@ -215,6 +248,16 @@ public final class RenderJob implements AutoCloseable {
         } finally {
             pool.shutdownNow();
         }
+    }
+
+    private static long samplesIn(Film film) {
+        long n = 0;
+        for (int y = 0; y < film.height(); y++) {
+            for (int x = 0; x < film.width(); x++) {
+                n += film.sampleCount(x, y);
+            }
+        }
+        return n;
     }
 
     /** Passes of 1, 1, 2, 4, 8 and then 16 samples per pixel: a first image at once, little overhead later. */
@@ -252,9 +295,13 @@ public final class RenderJob implements AutoCloseable {
             int y1 = Math.min(y0 + Film.TILE, film.height());
             long invalid = 0;
             for (int y = y0; y < y1 && !cancelled; y++) {
+                long rowSamples = 0;
                 for (int x = x0; x < x1; x++) {
                     int pixel = film.pixelIndex(x, y);
-                    for (int s = firstSample; s < endSample; s++) {
+                    // a restored film may hold more samples in some pixels: they go on from there
+                    int s0 = Math.max(firstSample, film.sampleCountAt(pixel));
+                    rowSamples += Math.max(0, endSample - s0);
+                    for (int s = s0; s < endSample; s++) {
                         w.rng.seed(Rng.streamSeed(seed, x, y, s));
                         cameraRays.generate(x + w.rng.nextDouble(), y + w.rng.nextDouble(), w.ray);
                         w.integrator.radiance(w.ray, w.rng, w.radiance);
@@ -266,7 +313,7 @@ public final class RenderJob implements AutoCloseable {
                         }
                     }
                 }
-                samplesDone.addAndGet((long) (x1 - x0) * (endSample - firstSample));
+                samplesDone.addAndGet(rowSamples);
             }
             if (invalid > 0) {
                 invalidSamples.addAndGet(invalid);
