@@ -1,5 +1,6 @@
 package dev.strahl.cli;
 
+import dev.strahl.film.AtomicFile;
 import java.io.PrintWriter;
 import java.lang.reflect.Constructor;
 import java.lang.reflect.Method;
@@ -84,6 +85,7 @@ final class Interrupts implements AutoCloseable {
         if (signals.incrementAndGet() > 1 || stop == null) {
             err.println("strahl: " + name + (stop == null ? ": nothing rendered yet, exiting" : " again: exiting at once"));
             err.flush();
+            AtomicFile.abandonWritesInProgress();
             Runtime.getRuntime().halt(exitCode != 0 ? exitCode : code);
         }
         exitCode = code;

@@ -12,6 +12,8 @@ import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.util.Objects;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ThreadLocalRandom;
 
 /**
@@ -29,7 +31,25 @@ public final class AtomicFile {
         void writeTo(OutputStream out) throws IOException;
     }
 
+    /** Temporary files being written right now, so that a hard exit can remove them. */
+    private static final Set<Path> IN_FLIGHT = ConcurrentHashMap.newKeySet();
+
     private AtomicFile() {
+    }
+
+    /**
+     * Deletes the temporary files of writes still in progress, for a program that is about to
+     * end at once ({@link Runtime#halt}) and so would leave them behind. The targets are
+     * untouched: they keep their old content, or do not exist.
+     */
+    public static void abandonWritesInProgress() {
+        for (Path tmp : IN_FLIGHT) {
+            try {
+                Files.deleteIfExists(tmp);
+            } catch (IOException | SecurityException e) {
+                // best effort on the way out; a hidden .tmp file is all that can remain
+            }
+        }
     }
 
     /**
@@ -59,6 +79,7 @@ public final class AtomicFile {
                 try {
                     channel = FileChannel.open(candidate, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
                     tmp = candidate;
+                    IN_FLIGHT.add(tmp);
                 } catch (FileAlreadyExistsException e) {
                     if (attempt == 99) {
                         throw e;
@@ -72,6 +93,7 @@ public final class AtomicFile {
                 ch.force(true);                // the bytes are on the disk before the name points to them
             }
             move(tmp, target);
+            IN_FLIGHT.remove(tmp);
         } catch (Throwable t) {
             if (tmp != null) {
                 try {
@@ -79,6 +101,7 @@ public final class AtomicFile {
                 } catch (IOException e) {
                     t.addSuppressed(e);
                 }
+                IN_FLIGHT.remove(tmp);
             }
             throw t;
         }
