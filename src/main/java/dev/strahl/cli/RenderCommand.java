@@ -151,7 +151,7 @@ final class RenderCommand implements Callable<Integer> {
         Scene s = loaded.withCamera(camera(loaded.camera()));
         if (!quiet) {
             for (String note : s.notes()) {
-                err.println("strahl: note: " + note);
+                err.println("strahl: " + (note.startsWith("warning: ") ? note : "note: " + note));
             }
             err.flush();
         }
@@ -202,16 +202,19 @@ final class RenderCommand implements Callable<Integer> {
         checkWritable(file, "checkpoint");
     }
 
+    /** The directory must exist and take a new file: tried for real, since permissions alone do not tell (root, read-only mounts). */
     private static void checkWritable(Path file, String what) {
         Path dir = file.toAbsolutePath().getParent();
         if (dir == null || !Files.isDirectory(dir)) {
             throw new IllegalArgumentException(what + " directory does not exist: " + dir);
         }
-        if (!Files.isWritable(dir)) {
-            throw new IllegalArgumentException(what + " directory is not writable: " + dir);
-        }
         if (Files.isDirectory(file)) {
             throw new IllegalArgumentException(what + " " + file + " is a directory");
+        }
+        try {
+            Files.delete(Files.createTempFile(dir, ".strahl-write-test", ".tmp"));
+        } catch (IOException | SecurityException e) {
+            throw new IllegalArgumentException(what + " directory is not writable: " + dir);
         }
     }
 

@@ -43,7 +43,10 @@ public final class SceneLoader {
         throw new SceneException(file, "unknown scene format (expected .json or .obj)");
     }
 
-    /** Adds the triangles of an OBJ file, with their MTL materials, to a scene under construction. */
+    /**
+     * Adds the triangles of an OBJ file, with their MTL materials, to a scene under construction.
+     * The reader's warnings become notes that start with {@code "warning: "}.
+     */
     static void addObj(Path obj, Scene.Builder builder) throws SceneException {
         ObjModel model = ObjReader.read(obj);
         List<Material> palette = new ArrayList<>(model.materials().size());
@@ -51,7 +54,7 @@ public final class SceneLoader {
             palette.add(toMaterial(m, builder));
         }
         for (String w : model.warnings()) {
-            builder.note(w);
+            builder.note("warning: " + w);
         }
         builder.addMesh(model.mesh(), model.triangleMaterial(), palette);
     }

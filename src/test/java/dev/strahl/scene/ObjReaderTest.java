@@ -348,6 +348,9 @@ class ObjReaderTest {
                 Arguments.of("v NaN 0 0\n", 1, "'NaN' in 'v' is not finite"),
                 Arguments.of("v 0 -Infinity 0\n", 1, "'-Infinity' in 'v' is not finite"),
                 Arguments.of("v 0 0 1e39\n", 1, "'1e39' in 'v' is too large for a float"),
+                Arguments.of("v 0 0 1e30\n", 1, "'1e30' in 'v' is too large (the limit is 1e18 in magnitude)"),
+                Arguments.of("v 0 -2e18 0\n", 1, "'-2e18' in 'v' is too large"),
+                Arguments.of("vn 0 0 1e39\n", 1, "'1e39' in 'vn' is too large for a float"),
                 Arguments.of("v 0 0 0 w\n", 1, "bad number 'w' in 'v'"),
                 Arguments.of("vn 0 1\n", 1, "'vn' needs 3 numbers"),
                 Arguments.of("vn 0 x 1\n", 1, "bad number 'x' in 'vn'"),
@@ -373,7 +376,8 @@ class ObjReaderTest {
                 Arguments.of(eight + "f 1 2 1.5\n", 9, "bad vertex index '1.5' in 'f'"),
                 Arguments.of(eight + "f 1/x 2 3\n", 9, "bad texture index 'x' in 'f'"),
                 Arguments.of(eight + "f 1//-0 2 3\n", 9, "normal index '-0' is invalid"),
-                Arguments.of("# nothing\n" + eight + "g only vertices\n", 0, "no faces"));
+                Arguments.of("# nothing\n" + eight + "g only vertices\n", 0, "no faces: the file holds no geometry"),
+                Arguments.of(eight + "f 1 2 2\nf 1 1 1 1\n", 0, "no geometry: all 3 triangles have zero area"));
     }
 
     @ParameterizedTest

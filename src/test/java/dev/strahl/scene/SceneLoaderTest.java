@@ -165,12 +165,12 @@ class SceneLoaderTest {
         Files.writeString(obj, SQUARE + "v 2 0 0\nv 3 0 0\nf 1 2 3\nf 1 2 5\n");   // the second is a segment
         Scene one = SceneLoader.load(obj);
         assertThat(one.geometry().triangleCount()).isEqualTo(1);
-        assertThat(one.notes()).contains("skipped 1 degenerate triangle (zero area)");
+        assertThat(one.notes()).contains("warning: " + obj + ": skipped 1 degenerate triangle (zero area), the first at line 8");
 
         Files.writeString(obj, SQUARE + "v 2 0 0\nv 3 0 0\nf 1 2 3\nf 1 2 5\nf 1 1 3\n");
         Scene two = SceneLoader.load(obj);
         assertThat(two.geometry().triangleCount()).isEqualTo(1);
-        assertThat(two.notes()).contains("skipped 2 degenerate triangles (zero area)");
+        assertThat(two.notes()).contains("warning: " + obj + ": skipped 2 degenerate triangles (zero area), the first at line 8");
     }
 
     @Test
