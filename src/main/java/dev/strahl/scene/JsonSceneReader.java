@@ -145,7 +145,12 @@ final class JsonSceneReader {
             case "obj": {
                 allowOnly(s, "shapes[] of type obj", Set.of("type", "file"));
                 String name = string(require(s, "file", node), "shapes[].file");
-                Path obj = file.toAbsolutePath().getParent().resolve(name);
+                Path obj;
+                try {
+                    obj = file.toAbsolutePath().getParent().resolve(name);
+                } catch (java.nio.file.InvalidPathException e) {
+                    throw new SceneException(file, s.get("file").line, "'shapes[].file' is not a valid file name: " + e.getReason());
+                }
                 if (!Files.isRegularFile(obj)) {
                     throw new SceneException(file, s.get("file").line, "OBJ file not found: " + obj);
                 }
