@@ -36,7 +36,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "render",
         mixinStandardHelpOptions = true,
         versionProvider = Main.Version.class,
-        description = {"Renders a scene (.json scene file or .obj) to a PNG (sRGB, 8 bit) or PFM (linear float) image.",
+        description = {"Renders a scene (.json scene file, .obj or .ply) to a PNG (sRGB, 8 bit) or PFM (linear float) image.",
             "Without camera options the scene's camera is used; an OBJ is framed from +Z.",
             "Ctrl-C stops and writes the image rendered so far; a second Ctrl-C exits at once."},
         sortOptions = false)
@@ -48,7 +48,7 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     TransportOptions transport;
 
-    @Parameters(index = "0", paramLabel = "SCENE", description = "Scene file: .json (strahl scene) or .obj (with its .mtl).")
+    @Parameters(index = "0", paramLabel = "SCENE", description = "Scene file: .json (strahl scene), .obj (with its .mtl) or .ply.")
     Path scene;
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE", description = "Output image; the extension chooses the format: .png or .pfm.")

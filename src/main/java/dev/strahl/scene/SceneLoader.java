@@ -17,10 +17,14 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * Loads a scene from a file: a strahl scene file ({@code .json}) or a Wavefront OBJ with its MTL
- * materials ({@code .obj}; the camera then frames the scene from +Z).
+ * Loads a scene from a file: a strahl scene file ({@code .json}), a Wavefront OBJ with its MTL
+ * materials ({@code .obj}) or a PLY mesh ({@code .ply}, ASCII or binary, made of the grey diffuse
+ * {@link #DEFAULT_MATERIAL}). An OBJ or PLY has no camera: the scene is framed from +Z.
  */
 public final class SceneLoader {
+    /** The material of a PLY mesh loaded directly: Lambertian, albedo 0.8 (the MTL default Kd). */
+    public static final Material DEFAULT_MATERIAL = Material.diffuse("default", MtlMaterial.DEFAULT_KD);
+
     private SceneLoader() {}
 
     /** Loads and builds the scene in {@code file}. */
@@ -40,7 +44,12 @@ public final class SceneLoader {
             addObj(file, builder);
             return builder.build();
         }
-        throw new SceneException(file, "unknown scene format (expected .json or .obj)");
+        if (name.endsWith(".ply")) {
+            Scene.Builder builder = Scene.builder();
+            addPly(file, builder, DEFAULT_MATERIAL);
+            return builder.build();
+        }
+        throw new SceneException(file, "unknown scene format (expected .json, .obj or .ply)");
     }
 
     /**
@@ -57,6 +66,15 @@ public final class SceneLoader {
             builder.note("warning: " + w);
         }
         builder.addMesh(model.mesh(), model.triangleMaterial(), palette);
+    }
+
+    /** Adds the triangles of a PLY file, all of one material, to a scene under construction. */
+    static void addPly(Path ply, Scene.Builder builder, Material material) throws SceneException {
+        PlyReader.PlyModel model = PlyReader.read(ply);
+        for (String w : model.warnings()) {
+            builder.note(w);
+        }
+        builder.addMesh(model.mesh(), material);
     }
 
     /**
