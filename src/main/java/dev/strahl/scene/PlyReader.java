@@ -162,6 +162,16 @@ final class PlyReader {
         }
         long needed = indexCount + 3 * (n - 2);
         if (needed > indices.length) {
+            // every index takes at least one byte: a list longer than the rest of the file is not grown into
+            long left;
+            try {
+                left = in.fileSize() - in.offset();
+            } catch (IOException e) {
+                throw SceneLoader.cannotRead(file, e);
+            }
+            if (n > left) {
+                throw truncated("face", f);
+            }
             if (needed > MAX_ARRAY) {
                 throw error("face", f, "too many triangles for one mesh (more than " + MAX_ARRAY / 3 + ")");
             }

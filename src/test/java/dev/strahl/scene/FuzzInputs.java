@@ -144,6 +144,51 @@ final class FuzzInputs {
                 });
     }
 
+    /** Small PLY meshes in every encoding and with several types, as mutation seeds. */
+    static List<byte[]> plySeeds() {
+        List<byte[]> seeds = new ArrayList<>();
+        PlyHeader.Type[] coordinate = {PlyHeader.Type.FLOAT, PlyHeader.Type.DOUBLE, PlyHeader.Type.SHORT};
+        PlyHeader.Type[] count = {PlyHeader.Type.UCHAR, PlyHeader.Type.INT, PlyHeader.Type.USHORT};
+        PlyHeader.Type[] index = {PlyHeader.Type.INT, PlyHeader.Type.UINT, PlyHeader.Type.USHORT};
+        int i = 0;
+        for (PlyHeader.Format format : PlyHeader.Format.values()) {
+            for (int k = 0; k < 3; k++, i++) {
+                seeds.add(PlyFiles.write(format, PlyFiles.randomMesh(i, 8 + 4 * k, 6 + 5 * k, coordinate[k], count[k], index[(k + i) % 3], k != 1)));
+            }
+        }
+        return seeds;
+    }
+
+    /** PLY headers from the grammar (hostile counts, types, orders) followed by a random body. */
+    static Arbitrary<byte[]> randomPly() {
+        Arbitrary<String> type = Arbitraries.of("char", "uchar", "short", "ushort", "int", "uint", "float", "double", "int8", "uint8",
+                "int16", "uint16", "int32", "uint32", "float32", "float64", "long", "");
+        Arbitrary<String> count = Arbitraries.of("0", "1", "3", "8", "12", "-1", "4294967296", "2147483647", "999999999999", "x", "1e3");
+        Arbitrary<String> property = Arbitraries.frequencyOf(
+                Tuple.of(5, Combinators.combine(type, Arbitraries.of("x", "y", "z", "nx", "ny", "nz", "red", "confidence", "x")).as((t, n) -> "property " + t + " " + n)),
+                Tuple.of(3, Combinators.combine(type, type, Arbitraries.of("vertex_indices", "vertex_index", "texcoord"))
+                        .as((c, t, n) -> "property list " + c + " " + t + " " + n)),
+                Tuple.of(1, Arbitraries.of("property", "property list uchar", "property float", "comment x", "obj_info y")));
+        Arbitrary<String> element = Combinators.combine(Arbitraries.of("vertex", "face", "edge", "material", "vertex"), count,
+                property.list().ofMaxSize(7)).as((n, c, props) -> "element " + n + " " + c + "\n" + String.join("\n", props));
+        Arbitrary<String> format = Arbitraries.of("ascii 1.0", "binary_little_endian 1.0", "binary_big_endian 1.0", "ascii 2.0", "binary 1.0",
+                "ascii");
+        Arbitrary<byte[]> body = Arbitraries.frequencyOf(
+                Tuple.of(2, Arbitraries.bytes().array(byte[].class).ofMaxSize(400)),
+                Tuple.of(2, number().list().ofMaxSize(120).map(l -> String.join(" ", l).getBytes(StandardCharsets.US_ASCII))));
+        return Combinators.combine(format, element.list().ofMaxSize(4), body, Arbitraries.of("end_header\n", "end_header\r\n",
+                "end_header", "end_header \n", "")).as((f, els, b, end) -> {
+                    byte[] head = ("ply\nformat " + f + "\n" + String.join("\n", els) + "\n" + end).getBytes(StandardCharsets.US_ASCII);
+                    byte[] all = java.util.Arrays.copyOf(head, head.length + b.length);
+                    System.arraycopy(b, 0, all, head.length, b.length);
+                    return all;
+                });
+    }
+
+    static final List<String> PLY_WORDS = List.of("ply\n", "format ", "ascii", "binary_little_endian", "binary_big_endian", "1.0",
+            "element ", "vertex", "face", "property ", "list ", "uchar", "int", "uint", "float", "double", "vertex_indices", "x", "nx",
+            "end_header\n", "comment ", "\n", " ", "4294967295", "-1", "0", "NaN", "1e39", "99999999");
+
     private static Arbitrary<String> jsonValue() {
         return Arbitraries.frequencyOf(
                 Tuple.of(4, Arbitraries.of("1", "0", "-1", "0.5", "1e999", "\"diffuse\"", "\"sphere\"", "\"obj\"", "\"cornell-box.obj\"",

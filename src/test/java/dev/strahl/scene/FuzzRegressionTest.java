@@ -35,7 +35,7 @@ class FuzzRegressionTest {
 
     static Stream<Path> regressionCases() throws IOException {
         List<Path> cases = new ArrayList<>();
-        for (String kind : List.of("obj", "mtl", "json")) {
+        for (String kind : List.of("obj", "mtl", "ply", "json")) {
             Path dir = CORPUS.resolve(kind);
             if (Files.isDirectory(dir)) {
                 try (Stream<Path> files = Files.list(dir)) {
@@ -53,6 +53,7 @@ class FuzzRegressionTest {
         Fuzzer.Target target = switch (kind) {
             case "obj" -> ParserFuzzTest.objTarget();
             case "mtl" -> ParserFuzzTest.mtlTarget();
+            case "ply" -> ParserFuzzTest.plyTarget();
             default -> ParserFuzzTest.jsonTarget();
         };
         Fuzzer fuzzer = new Fuzzer("regression-" + kind, target, SceneException.class, work.resolve("regression." + kind));

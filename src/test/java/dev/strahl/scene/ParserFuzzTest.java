@@ -18,7 +18,7 @@ import net.jqwik.api.lifecycle.AfterContainer;
 import net.jqwik.api.lifecycle.BeforeContainer;
 
 /**
- * Fuzzing of the OBJ, MTL and scene-file readers: random and mutated files may be accepted or
+ * Fuzzing of the OBJ, MTL, PLY and scene-file readers: random and mutated files may be accepted or
  * rejected with a {@link SceneException}, never end in another exception, a hang or running out
  * of memory. Each parser gets a bounded budget ({@link Fuzzer#budget()}); every input that once
  * broke a parser is kept in {@code src/test/resources/fuzz/} and replayed by
@@ -67,6 +67,10 @@ class ParserFuzzTest {
         return file -> MtlReader.read(file, new ArrayList<>());
     }
 
+    static Fuzzer.Target plyTarget() {
+        return SceneLoader::load;                   // reading, then building the scene and its BVH
+    }
+
     static Fuzzer.Target jsonTarget() {
         return SceneLoader::load;
     }
@@ -88,6 +92,11 @@ class ParserFuzzTest {
         fuzz("json", jsonTarget(), "fuzz.json", Arbitraries.frequencyOf(Tuple.of(1, FuzzInputs.randomJson()),
                 Tuple.of(2, FuzzInputs.randomScene()),
                 Tuple.of(2, FuzzInputs.mutated(FuzzInputs.shippedFiles(".json"), FuzzInputs.JSON_WORDS))));
+    }
+
+    @Example
+    void plyReaderOnlyEverThrowsSceneException() throws IOException {
+        fuzz("ply", plyTarget(), "fuzz.ply", mix(FuzzInputs.randomPly(), FuzzInputs.mutated(FuzzInputs.plySeeds(), FuzzInputs.PLY_WORDS)));
     }
 
     private static Arbitrary<byte[]> mix(Arbitrary<byte[]> random, Arbitrary<byte[]> mutated) {
