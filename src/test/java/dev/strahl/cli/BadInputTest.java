@@ -32,6 +32,9 @@ class BadInputTest {
     static final String LIT = "mtllib lit.mtl\nusemtl lamp\n";
     static final String LIT_MTL = "newmtl lamp\nKd 0.5 0.5 0.5\nKe 1 1 1\n";
 
+    static final String PLY_HEADER = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+            + "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+
     @TempDir
     Path in;
 
@@ -64,6 +67,17 @@ class BadInputTest {
             m.put(nameContent[i], nameContent[i + 1].getBytes(StandardCharsets.UTF_8));
         }
         return m;
+    }
+
+    /** A case the PLY fuzzer found: an 856-byte binary file whose face list length ran the heap out. */
+    static Map<String, byte[]> plyFuzzCase() {
+        try {
+            Map<String, byte[]> m = new LinkedHashMap<>();
+            m.put("t.ply", Files.readAllBytes(Path.of("src/test/resources/fuzz/ply/binary-face-list-longer-than-file-1.ply")));
+            return m;
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
     }
 
     static Map<String, byte[]> obj(String text) {
@@ -139,6 +153,21 @@ class BadInputTest {
                     args(), "$IN/lit.mtl:2: ", "'illum' must be an integer 0..10"),
             refused("MTL binary file", files("t.obj", LIT + SQUARE + "f 1 2 3\n", "lit.mtl", "newmtl \u0000\u0001\u0002\n"),
                     args(), "$IN/lit.mtl:1: ", "not a text MTL file (NUL byte)"),
+            // ---- PLY ----
+            refused("PLY without magic", files("t.ply", "plx\nformat ascii 1.0\n"), scene("$IN/t.ply"), "$IN/t.ply:1: ", "not a PLY file"),
+            refused("PLY header syntax", files("t.ply", "ply\nformat ascii 1.0\nelement vertex many\n"), scene("$IN/t.ply"),
+                    "$IN/t.ply:3: ", "bad count 'many' for element 'vertex'"),
+            refused("PLY number that does not parse", files("t.ply", PLY_HEADER + "0 abc 0\n1 0 0\n0 1 0\n3 0 1 2\n"), scene("$IN/t.ply"),
+                    "$IN/t.ply:10: ", "bad value 'abc' for property 'y'"),
+            refused("PLY NaN coordinate", files("t.ply", PLY_HEADER + "0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"), scene("$IN/t.ply"),
+                    "$IN/t.ply:11: ", "is not a finite float"),
+            refused("PLY index out of range", files("t.ply", PLY_HEADER + "0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n"), scene("$IN/t.ply"),
+                    "$IN/t.ply:13: ", "vertex index 5 is out of range"),
+            refused("PLY truncated", files("t.ply", PLY_HEADER + "0 0 0\n1 0 0\n"), scene("$IN/t.ply"), "$IN/t.ply", "truncated"),
+            refused("PLY binary face list beyond the file", plyFuzzCase(), scene("$IN/t.ply"), "$IN/t.ply: element 'face' 0 (byte ",
+                    "the file ends here"),
+            refused("PLY without triangles", files("t.ply", PLY_HEADER.replace("face 1", "face 2") + "0 0 0\n1 0 0\n0 1 0\n2 0 1\n1 2\n"),
+                    scene("$IN/t.ply"), "$IN/t.ply: ", "the mesh has no triangles"),
             // ---- scene file (JSON) ----
             refused("JSON syntax", files("s.json", "{\n  \"shapes\": [\n    " + sphere + ",\n  ]\n}\n"), scene("$IN/s.json"),
                     "$IN/s.json:4: ", "malformed JSON"),
