@@ -264,6 +264,11 @@ final class RenderCommand implements Callable<Integer> {
                     stats.samplesPerPixel(), settings.samplesPerPixel(), stats.seconds(), output,
                     savedCheckpoint ? "; continue with --resume " + checkpointFile : ""));
         } else if (!quiet) {
+            if (stats.samplesPerPixel() < settings.samplesPerPixel()) {
+                err.println("strahl: note: the time limit of " + ProgressBar.formatDuration(timeLimit.toMillis() / 1000.0)
+                        + " ended the render at " + stats.samplesPerPixel() + " of " + settings.samplesPerPixel() + " spp"
+                        + (savedCheckpoint ? "; continue with --resume " + checkpointFile : ""));
+            }
             err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %d spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
                     transport.integrator.id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
                     ProgressBar.si(stats.samplesPerSecond()), ProgressBar.si(stats.raysPerSecond()), stats.threads(), output));
