@@ -265,7 +265,7 @@ final class RenderCommand implements Callable<Integer> {
                     savedCheckpoint ? "; continue with --resume " + checkpointFile : ""));
         } else if (!quiet) {
             if (stats.samplesPerPixel() < settings.samplesPerPixel()) {
-                err.println("strahl: note: the time limit of " + ProgressBar.formatDuration(timeLimit.toMillis() / 1000.0)
+                err.println("strahl: note: the time limit of " + limitText(timeLimit)
                         + " ended the render at " + stats.samplesPerPixel() + " of " + settings.samplesPerPixel() + " spp"
                         + (savedCheckpoint ? "; continue with --resume " + checkpointFile : ""));
             }
@@ -278,6 +278,15 @@ final class RenderCommand implements Callable<Integer> {
         }
         err.flush();
         return irq.interrupted() ? irq.exitCode() : 0;
+    }
+
+    /** "0.3 s", "90 s", "5:00", "1:30:00". */
+    static String limitText(Duration d) {
+        double seconds = d.toNanos() * 1e-9;
+        if (seconds >= 100) {
+            return ProgressBar.formatDuration(seconds);
+        }
+        return new java.math.BigDecimal(seconds).round(new java.math.MathContext(3)).stripTrailingZeros().toPlainString() + " s";
     }
 
     /** A failure while rendering or writing the result: exit code 1. */
