@@ -6,6 +6,7 @@ import dev.strahl.film.ImageWriters;
 import dev.strahl.render.Checkpoint;
 import dev.strahl.render.CheckpointException;
 import dev.strahl.render.RenderJob;
+import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
 import dev.strahl.scene.Scene;
@@ -14,6 +15,8 @@ import dev.strahl.scene.SceneLoader;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
+import java.math.BigDecimal;
+import java.math.MathContext;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -231,7 +234,7 @@ final class RenderCommand implements Callable<Integer> {
         boolean showProgress = !quiet && Terminal.isStderrTerminal();
         ProgressBar bar = new ProgressBar(System.err);
         RenderStats stats;
-        try (RenderJob job = RenderJob.resume(s, settings, film, saver != null ? saver : new dev.strahl.render.RenderListener() {})) {
+        try (RenderJob job = RenderJob.resume(s, settings, film, saver != null ? saver : new RenderListener() {})) {
             if (saver != null) {
                 saver.attach(job);
             }
@@ -286,7 +289,7 @@ final class RenderCommand implements Callable<Integer> {
         if (seconds >= 100) {
             return ProgressBar.formatDuration(seconds);
         }
-        return new java.math.BigDecimal(seconds).round(new java.math.MathContext(3)).stripTrailingZeros().toPlainString() + " s";
+        return new BigDecimal(seconds).round(new MathContext(3)).stripTrailingZeros().toPlainString() + " s";
     }
 
     /** A failure while rendering or writing the result: exit code 1. */
