@@ -251,6 +251,10 @@ final class ObjReader {
             throw cur.error("too many triangles for one mesh");
         }
         if (newCount * 3 > tri.length) {
+            String tooMany = HeapBudget.tooMany(newCount);
+            if (tooMany != null) {
+                throw cur.error(tooMany);
+            }
             tri = grow(tri, newCount * 3);
         }
         if (newCount > triSlot.length) {
@@ -445,6 +449,10 @@ final class ObjReader {
         if (triCount == 0) {
             throw new SceneException(obj, degenerateCount == 0 ? "no faces: the file holds no geometry"
                     : "no geometry: all " + degenerateCount + " triangles have zero area");
+        }
+        String tooMany = HeapBudget.tooMany(triCount);
+        if (tooMany != null) {
+            throw new SceneException(obj, tooMany.replace(" so far", ""));
         }
         if (degenerateCount > 0) {
             warnings.add(obj + ": skipped " + degenerateCount + " degenerate triangle" + (degenerateCount == 1 ? "" : "s")

@@ -548,4 +548,32 @@ class ObjReaderTest {
         }
         return names;
     }
+
+    @Test
+    void aMeshTooLargeForTheHeapIsRefusedWhileReadingSayingWhatItNeeds() throws Exception {
+        StringBuilder text = new StringBuilder("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n");
+        for (int i = 0; i < 3000; i++) {
+            text.append(i % 2 == 0 ? "f 1 2 3\n" : "f 2 4 3\n");
+        }
+        Path file = write("big.obj", text.toString());
+        long saved = HeapBudget.limit;
+        try {
+            HeapBudget.limit = 100_000;                       // room for 666 triangles at 150 bytes each
+            assertThatThrownBy(() -> ObjReader.read(file)).isInstanceOf(SceneException.class)
+                    .hasMessageStartingWith(file + ":")
+                    .hasMessageContaining("the mesh needs at least ")
+                    .hasMessageContaining(" KiB (")
+                    .hasMessageContaining("triangles so far, at least 150 bytes each), more than the Java heap's 97.7 KiB")
+                    .hasMessageEndingWith("give Java more memory (java -Xmx...)")
+                    .satisfies(e -> assertThat(((SceneException) e).line()).isBetween(5 + 666, 5 + 3000));
+            HeapBudget.limit = 2999 * 150;                    // passes every check while reading, not the one at the end
+            assertThatThrownBy(() -> ObjReader.read(file)).isInstanceOf(SceneException.class)
+                    .hasMessage(file + ": the mesh needs at least 439.5 KiB (3000 triangles, at least 150 bytes each), more than"
+                            + " the Java heap's 439.3 KiB: give Java more memory (java -Xmx...)");
+            HeapBudget.limit = 3000 * 150;
+            assertThat(ObjReader.read(file).mesh().triangleCount()).isEqualTo(3000);
+        } finally {
+            HeapBudget.limit = saved;
+        }
+    }
 }
