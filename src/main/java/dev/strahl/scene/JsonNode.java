@@ -40,7 +40,7 @@ final class JsonNode {
         } catch (JsonParseException e) {
             String msg = e.getOriginalMessage();
             int nl = msg.indexOf('\n');
-            throw new SceneException(file, e.getLocation() == null ? 0 : (int) e.getLocation().getLineNr(),
+            throw new SceneException(file, e.getLocation() == null ? 0 : e.getLocation().getLineNr(),
                     "malformed JSON: " + (nl >= 0 ? msg.substring(0, nl) : msg));
         } catch (IOException e) {
             throw new SceneException(file, "cannot parse: " + e.getMessage(), e);
@@ -48,7 +48,7 @@ final class JsonNode {
     }
 
     private static int line(JsonParser p) {
-        return (int) p.currentTokenLocation().getLineNr();
+        return p.currentTokenLocation().getLineNr();
     }
 
     private static JsonNode read(JsonParser p, Path file) throws IOException, SceneException {
