@@ -2,6 +2,7 @@ package dev.strahl.render;
 
 import dev.strahl.integrator.IntegratorKind;
 import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.scene.SceneSettings;
 import java.time.Duration;
 import java.util.Objects;
 
@@ -106,6 +107,57 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
 
     public RenderSettings withTimeLimit(Duration limit) {
         return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, limit);
+    }
+
+    /**
+     * These settings with what a scene file asks for applied on top (its {@code film} and
+     * {@code integrator} keys); keys the file leaves out keep their value here.
+     *
+     * @param scene the scene file's settings ({@code scene.settings()})
+     * @return the combined settings
+     * @throws IllegalArgumentException if the file names an unknown integrator
+     */
+    public RenderSettings withScene(SceneSettings scene) {
+        RenderSettings s = this;
+        if (scene.width() != null || scene.height() != null) {
+            s = s.withSize(scene.width() != null ? scene.width() : width, scene.height() != null ? scene.height() : height);
+        }
+        if (scene.samplesPerPixel() != null) {
+            s = s.withSamplesPerPixel(scene.samplesPerPixel());
+        }
+        if (scene.maxDepth() != null) {
+            s = s.withMaxDepth(scene.maxDepth());
+        }
+        if (scene.seed() != null) {
+            s = s.withSeed(scene.seed());
+        }
+        if (scene.lightSamples() != null) {
+            s = s.withLightSamples(scene.lightSamples());
+        }
+        if (scene.hemisphere() != null) {
+            s = s.withHemisphere(scene.hemisphere());
+        }
+        if (scene.integrator() != null) {
+            s = s.withIntegrator(integratorNamed(scene.integrator()));
+        }
+        return s;
+    }
+
+    /**
+     * The integrator of a name as used on the command line and in scene files.
+     *
+     * @param name "path", "direct", "whitted", ...
+     * @return the integrator kind
+     * @throws IllegalArgumentException for an unknown name
+     */
+    public static IntegratorKind integratorNamed(String name) {
+        for (IntegratorKind k : IntegratorKind.values()) {
+            if (k.id().equals(name)) {
+                return k;
+            }
+        }
+        throw new IllegalArgumentException("unknown integrator '" + name + "' (known: "
+                + String.join(", ", java.util.Arrays.stream(IntegratorKind.values()).map(IntegratorKind::id).toList()) + ")");
     }
 
     /** The thread count to use: {@link #threads()}, or the available processors when it is 0. */

@@ -17,7 +17,7 @@ import java.util.Map;
  * name its line. Parsed with Jackson's streaming parser; duplicate keys are refused.
  */
 final class JsonNode {
-    final Object value;          // Map<String, JsonNode>, List<JsonNode>, Double, String, Boolean or null
+    final Object value;          // Map<String, JsonNode>, List<JsonNode>, Long, Double, String, Boolean or null
     final int line;
 
     private JsonNode(Object value, int line) {
@@ -72,6 +72,9 @@ final class JsonNode {
                 return new JsonNode(list, line);
             }
             case VALUE_NUMBER_INT:
+                // whole numbers keep all their digits (a seed may use 64 bits); beyond a long, a double
+                return new JsonNode(p.getNumberType() == JsonParser.NumberType.BIG_INTEGER ? (Object) p.getDoubleValue()
+                        : (Object) p.getLongValue(), line);
             case VALUE_NUMBER_FLOAT:
                 return new JsonNode(p.getDoubleValue(), line);
             case VALUE_STRING:
@@ -110,7 +113,7 @@ final class JsonNode {
         if (value instanceof List) {
             return "an array";
         }
-        if (value instanceof Double) {
+        if (value instanceof Double || value instanceof Long) {
             return "a number";
         }
         if (value instanceof String) {
