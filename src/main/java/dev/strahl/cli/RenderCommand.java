@@ -9,6 +9,7 @@ import dev.strahl.render.RenderStats;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
 import dev.strahl.scene.SceneLoader;
+import dev.strahl.scene.SceneSettings;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -18,6 +19,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
 import org.joml.Vector3d;
+import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Mixin;
@@ -97,6 +99,7 @@ final class RenderCommand implements Callable<Integer> {
             checkOutput();
             Scene loaded = SceneLoader.load(scene);
             Scene s = loaded.withCamera(camera(loaded.camera()));
+            settings = withSceneFile(loaded.settings());
             if (!quiet) {
                 for (String note : s.notes()) {
                     err.println("strahl: note: " + note);
@@ -123,6 +126,43 @@ final class RenderCommand implements Callable<Integer> {
     private RenderSettings settings() {
         return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0, transport.integrator, transport.lightSamples,
                 timeLimit == null ? Duration.ZERO : timeLimit);
+    }
+
+    /**
+     * The scene file's film and integrator keys, overridden by every option given on the command
+     * line (an option left at its default does not override the file).
+     */
+    private RenderSettings withSceneFile(SceneSettings file) {
+        RenderSettings s;
+        try {
+            s = RenderSettings.defaults().withThreads(threads).withCullBackFaces(cullBackFaces)
+                    .withTimeLimit(timeLimit == null ? Duration.ZERO : timeLimit).withScene(file);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(scene + ": " + e.getMessage(), e);
+        }
+        CommandLine.ParseResult given = spec.commandLine().getParseResult();
+        if (given.hasMatchedOption("--width") || given.hasMatchedOption("--height")) {
+            s = s.withSize(given.hasMatchedOption("--width") ? width : s.width(), given.hasMatchedOption("--height") ? height : s.height());
+        }
+        if (given.hasMatchedOption("--spp")) {
+            s = s.withSamplesPerPixel(spp);
+        }
+        if (given.hasMatchedOption("--seed")) {
+            s = s.withSeed(seed);
+        }
+        if (given.hasMatchedOption("--max-depth")) {
+            s = s.withMaxDepth(transport.maxDepth);
+        }
+        if (given.hasMatchedOption("--integrator")) {
+            s = s.withIntegrator(transport.integrator);
+        }
+        if (given.hasMatchedOption("--hemisphere")) {
+            s = s.withHemisphere(transport.hemisphere);
+        }
+        if (given.hasMatchedOption("--light-samples")) {
+            s = s.withLightSamples(transport.lightSamples);
+        }
+        return s;
     }
 
     /** Refuses an unwritable output before spending time on the render. */
@@ -165,7 +205,7 @@ final class RenderCommand implements Callable<Integer> {
         ImageWriters.write(film, output);
         if (!quiet) {
             err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %d spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
-                    transport.integrator.id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
+                    settings.integrator().id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
                     ProgressBar.si(stats.samplesPerSecond()), ProgressBar.si(stats.raysPerSecond()), stats.threads(), output));
             if (stats.invalidSamples() > 0) {
                 err.println("strahl: warning: " + stats.invalidSamples() + " samples were NaN or infinite and counted as black");
