@@ -23,6 +23,16 @@ public record Image(int width, int height, float[] rgb) {
         return rgb.clone();
     }
 
+    /**
+     * The image for display: sRGB-encoded, clamped, 8 bits per channel, exposure 0 (as the PNG
+     * writer stores it; see {@link Tonemap#toBufferedImage}).
+     *
+     * @return a new {@link java.awt.image.BufferedImage#TYPE_INT_RGB} image
+     */
+    public java.awt.image.BufferedImage toBufferedImage() {
+        return Tonemap.toBufferedImage(this, 0);
+    }
+
     /** Channel c (0 = r, 1 = g, 2 = b) of pixel (x, y). */
     public float get(int x, int y, int c) {
         return rgb[3 * (y * width + x) + c];

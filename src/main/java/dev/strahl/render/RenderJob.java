@@ -51,6 +51,8 @@ public final class RenderJob implements AutoCloseable {
     private final WorkerState[] workers;
     private volatile boolean cancelled;
     private volatile int completedSpp;
+    /** The mean image at the end of the last completed pass: what {@link #snapshot()} returns. */
+    private volatile Image lastPass;
     private final long startNanos;
 
     private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener) {
@@ -112,9 +114,17 @@ public final class RenderJob implements AutoCloseable {
         return film;
     }
 
-    /** The mean image of all samples taken so far. */
+    /**
+     * A consistent image of the render so far: the mean of all samples of the passes completed
+     * up to now, every pixel with the same sample count (black before the first pass ends).
+     * Safe to call from any thread at any time; the render goes on meanwhile. Use
+     * {@link Image#rgb()} for linear float RGB and {@link Image#toBufferedImage()} for display.
+     *
+     * @return the image, immutable
+     */
     public Image snapshot() {
-        return film.toImage();
+        Image image = lastPass;
+        return image != null ? image : new Image(settings.width(), settings.height(), new float[3 * settings.width() * settings.height()]);
     }
 
     /** Samples per pixel of all completed passes. */
@@ -200,7 +210,10 @@ public final class RenderJob implements AutoCloseable {
                     break;
                 }
                 completedSpp = end;
-                listener.passCompleted(end, film.toImage());
+                Image image = film.toImage();
+                lastPass = image;
+                double seconds = elapsedSeconds();
+                listener.passFinished(new RenderListener.Pass(pass + 1, end, samplesDone.get(), seconds), image);
                 start = end;
                 pass++;
                 if (!settings.timeLimit().isZero() && elapsedSeconds() >= settings.timeLimit().toNanos() * 1e-9) {
