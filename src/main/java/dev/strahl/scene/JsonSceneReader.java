@@ -41,6 +41,9 @@ final class JsonSceneReader {
     /** The largest film edge, as RenderSettings.MAX_SIZE (which lives above this layer). */
     static final int MAX_FILM = 1 << 15;
     static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment");
+    static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov");
+    static final Set<String> FILM_KEYS = Set.of("width", "height");
+    static final Set<String> INTEGRATOR_KEYS = Set.of("type", "spp", "maxDepth", "seed", "lightSamples", "hemisphere");
 
     private final Path file;
     private final JsonValues v;
@@ -243,7 +246,7 @@ final class JsonSceneReader {
 
     private Camera camera(JsonNode node) throws SceneException {
         Map<String, JsonNode> c = v.object(node, "camera");
-        v.allowOnly(c, "camera", Set.of("lookFrom", "lookAt", "up", "fov"));
+        v.allowOnly(c, "camera", CAMERA_KEYS);
         Vector3d from = v.vector(v.require(c, "lookFrom", node), "camera.lookFrom");
         Vector3d at = v.vector(v.require(c, "lookAt", node), "camera.lookAt");
         Vector3d up = c.containsKey("up") ? v.vector(c.get("up"), "camera.up") : new Vector3d(0, 1, 0);
@@ -262,13 +265,13 @@ final class JsonSceneReader {
         HemisphereSampling hemisphere = null;
         if (film != null) {
             Map<String, JsonNode> f = v.object(film, "film");
-            v.allowOnly(f, "film", Set.of("width", "height"));
+            v.allowOnly(f, "film", FILM_KEYS);
             width = f.containsKey("width") ? v.integer(f.get("width"), "film.width", 1, MAX_FILM) : null;
             height = f.containsKey("height") ? v.integer(f.get("height"), "film.height", 1, MAX_FILM) : null;
         }
         if (integrator != null) {
             Map<String, JsonNode> i = v.object(integrator, "integrator");
-            v.allowOnly(i, "integrator", Set.of("type", "spp", "maxDepth", "seed", "lightSamples", "hemisphere"));
+            v.allowOnly(i, "integrator", INTEGRATOR_KEYS);
             type = i.containsKey("type") ? v.string(i.get("type"), "integrator.type") : null;
             spp = i.containsKey("spp") ? v.integer(i.get("spp"), "integrator.spp", 1, Integer.MAX_VALUE) : null;
             if (i.containsKey("maxDepth")) {
