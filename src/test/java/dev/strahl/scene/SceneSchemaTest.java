@@ -60,6 +60,20 @@ class SceneSchemaTest {
     }
 
     @Test
+    void theExampleOfTheFormatDocumentIsValidAndReadable() throws Exception {
+        String doc = Files.readString(Path.of("docs", "scene-format.md"));
+        String example = doc.substring(doc.indexOf("```json\n") + 8, doc.indexOf("```", doc.indexOf("```json\n") + 8));
+        assertThat(example).contains("\"film\"", "\"integrator\"", "\"triangles\"", "\"transform\"");
+        assertThat(errors(example)).isEmpty();
+        Files.copy(Path.of("scenes", "cornell-empty-rg.obj"), dir.resolve("cornell-empty-rg.obj"));
+        Files.copy(Path.of("scenes", "cornell-empty-rg.mtl"), dir.resolve("cornell-empty-rg.mtl"));
+        Files.writeString(dir.resolve("bunny.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                + "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n0.1 0 0\n0 0.1 0\n3 0 1 2\n");
+        Scene scene = SceneLoader.load(Files.writeString(dir.resolve("example.json"), example));
+        assertThat(scene.settings().samplesPerPixel()).isEqualTo(256);
+    }
+
+    @Test
     void theSchemaKnowsExactlyTheKeysOfTheReader() {
         JsonNode defs = get(schemaTree, "$defs");
         assertThat(keys(schemaTree)).isEqualTo(new TreeSet<>(JsonSceneReader.TOP_KEYS));
