@@ -20,6 +20,12 @@ public final class Film {
     private final double[] sum;
     private final int[] count;
 
+    /**
+     * An empty film.
+     *
+     * @param width  width in pixels, positive
+     * @param height height in pixels, positive
+     */
     public Film(int width, int height) {
         if (width <= 0 || height <= 0) {
             throw new IllegalArgumentException("film size must be positive, got " + width + "x" + height);
@@ -36,35 +42,75 @@ public final class Film {
         this.count = new int[(int) pixels];
     }
 
-    /** Bytes a film of this size needs, to refuse absurd sizes before allocating. */
+    /**
+     * Bytes a film of this size needs, to refuse absurd sizes before allocating.
+     *
+     * @param width  width in pixels
+     * @param height height in pixels
+     * @return the bytes of its buffers
+     */
     public static long bytesNeeded(int width, int height) {
         long tiles = (long) ((width + TILE - 1) / TILE) * ((height + TILE - 1) / TILE);
         return tiles * TILE * TILE * (3 * 8 + 4);
     }
 
+    /**
+     * The width.
+     *
+     * @return pixels
+     */
     public int width() {
         return width;
     }
 
+    /**
+     * The height.
+     *
+     * @return pixels
+     */
     public int height() {
         return height;
     }
 
+    /**
+     * Tiles per row.
+     *
+     * @return the count
+     */
     public int tileCountX() {
         return tilesX;
     }
 
+    /**
+     * Tiles per column.
+     *
+     * @return the count
+     */
     public int tileCountY() {
         return (height + TILE - 1) / TILE;
     }
 
-    /** Index of pixel (x, y) in the tile-major layout. */
+    /**
+     * Index of pixel (x, y) in the tile-major layout.
+     *
+     * @param x column, from 0
+     * @param y row, from 0 at the top
+     * @return the index for {@link #add}
+     */
     public int pixelIndex(int x, int y) {
         int tile = (y / TILE) * tilesX + x / TILE;
         return tile * TILE * TILE + (y % TILE) * TILE + (x % TILE);
     }
 
-    /** Adds one sample's radiance to a pixel given by {@link #pixelIndex}. */
+    /**
+     * Adds one sample's radiance to a pixel given by {@link #pixelIndex}. Not thread-safe: each
+     * pixel must be written by one thread at a time.
+     *
+     * @param pixelIndex the pixel
+     * @param r          red radiance
+     * @param g          green radiance
+     * @param b          blue radiance
+     */
     public void add(int pixelIndex, double r, double g, double b) {
         int k = 3 * pixelIndex;
         sum[k] += r;
@@ -73,12 +119,22 @@ public final class Film {
         count[pixelIndex]++;
     }
 
-    /** Number of samples pixel (x, y) has received. */
+    /**
+     * Number of samples pixel (x, y) has received.
+     *
+     * @param x column
+     * @param y row
+     * @return the count
+     */
     public int sampleCount(int x, int y) {
         return count[pixelIndex(x, y)];
     }
 
-    /** The mean radiance per pixel, in row-major order; pixels without samples are black. */
+    /**
+     * The mean radiance per pixel, in row-major order; pixels without samples are black.
+     *
+     * @return a new image
+     */
     public Image toImage() {
         float[] rgb = new float[3 * width * height];
         for (int y = 0; y < height; y++) {

@@ -13,6 +13,13 @@ import java.util.Objects;
  */
 public record Material(String name, Bsdf bsdf, Rgb emission) {
 
+    /**
+     * Checks that nothing is null and the emission is not negative.
+     *
+     * @param name     for messages and scene files
+     * @param bsdf     the scattering function
+     * @param emission emitted radiance Le, linear RGB
+     */
     public Material {
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(bsdf, "bsdf");

@@ -76,12 +76,25 @@ public final class RenderJob implements AutoCloseable {
         this.startNanos = System.nanoTime();
     }
 
-    /** Starts rendering {@code scene} in the background. */
+    /**
+     * Starts rendering {@code scene} in the background.
+     *
+     * @param scene    the scene, shared read-only
+     * @param settings how to render
+     * @return the running job; close it (or wait for it) when done
+     */
     public static RenderJob start(Scene scene, RenderSettings settings) {
         return start(scene, settings, new RenderListener() {});
     }
 
-    /** Starts rendering {@code scene} in the background, reporting to {@code listener}. */
+    /**
+     * Starts rendering {@code scene} in the background, reporting to {@code listener}.
+     *
+     * @param scene    the scene, shared read-only
+     * @param settings how to render
+     * @param listener hears about every pass and the end, on a render thread
+     * @return the running job; close it (or wait for it) when done
+     */
     public static RenderJob start(Scene scene, RenderSettings settings, RenderListener listener) {
         Objects.requireNonNull(settings, "settings");
         Integrator integrator = settings.integrator().create(scene, settings.maxDepth(), settings.hemisphere(),
@@ -92,6 +105,13 @@ public final class RenderJob implements AutoCloseable {
     /**
      * Starts rendering with a given integrator (made for this scene); the settings' integrator
      * choice is then ignored.
+     * (internal: {@link Integrator} is not part of the stable API).
+     *
+     * @param scene      the scene, shared read-only
+     * @param settings   how to render
+     * @param integrator the integrator, made for this scene
+     * @param listener   hears about every pass and the end
+     * @return the running job
      */
     public static RenderJob start(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener) {
         Objects.requireNonNull(scene, "scene");
@@ -105,11 +125,20 @@ public final class RenderJob implements AutoCloseable {
         return job;
     }
 
+    /**
+     * The settings the job was started with.
+     *
+     * @return the settings
+     */
     public RenderSettings settings() {
         return settings;
     }
 
-    /** The film being filled; see {@link Film#toImage()} for reading it while rendering goes on. */
+    /**
+     * The film being filled. Read it when the job is done; while it renders, use {@link #snapshot()}.
+     *
+     * @return the film
+     */
     public Film film() {
         return film;
     }
@@ -127,23 +156,39 @@ public final class RenderJob implements AutoCloseable {
         return image != null ? image : new Image(settings.width(), settings.height(), new float[3 * settings.width() * settings.height()]);
     }
 
-    /** Samples per pixel of all completed passes. */
+    /**
+     * Samples per pixel of all completed passes.
+     *
+     * @return the count
+     */
     public int completedSamplesPerPixel() {
         return completedSpp;
     }
 
-    /** Fraction of the requested samples taken, in [0, 1]. */
+    /**
+     * Fraction of the requested samples taken.
+     *
+     * @return a number in [0, 1]
+     */
     public double progress() {
         double total = (double) settings.samplesPerPixel() * settings.width() * settings.height();
         return Math.min(1, samplesDone.get() / total);
     }
 
-    /** Camera samples taken so far. */
+    /**
+     * Camera samples taken so far.
+     *
+     * @return the count
+     */
     public long samplesDone() {
         return samplesDone.get();
     }
 
-    /** Seconds since the job started. */
+    /**
+     * Time since the job started.
+     *
+     * @return seconds
+     */
     public double elapsedSeconds() {
         return (System.nanoTime() - startNanos) * 1e-9;
     }
@@ -153,17 +198,34 @@ public final class RenderJob implements AutoCloseable {
         cancelled = true;
     }
 
+    /**
+     * Whether the render has ended (completed, cancelled or failed).
+     *
+     * @return true once it has ended
+     */
     public boolean isDone() {
         return result.isDone();
     }
 
-    /** Waits for the render to end and returns its film. */
+    /**
+     * Waits for the render to end and returns its film.
+     *
+     * @return the film
+     * @throws InterruptedException if the waiting thread is interrupted
+     */
     public Film awaitCompletion() throws InterruptedException {
         awaitStats();
         return film;
     }
 
-    /** Waits up to the given time for the render to end; returns whether it has. */
+    /**
+     * Waits up to the given time for the render to end.
+     *
+     * @param timeout how long to wait at most
+     * @param unit    the unit of {@code timeout}
+     * @return whether it has ended
+     * @throws InterruptedException if the waiting thread is interrupted
+     */
     public boolean await(long timeout, TimeUnit unit) throws InterruptedException {
         try {
             result.get(timeout, unit);
@@ -175,7 +237,13 @@ public final class RenderJob implements AutoCloseable {
         return true;
     }
 
-    /** Waits for the render to end and returns its figures. */
+    /**
+     * Waits for the render to end and returns its figures.
+     *
+     * @return the figures
+     * @throws InterruptedException if the waiting thread is interrupted
+     * @throws IllegalStateException if the render failed
+     */
     public RenderStats awaitStats() throws InterruptedException {
         try {
             return result.get();

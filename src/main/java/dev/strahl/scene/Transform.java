@@ -43,7 +43,15 @@ public final class Transform {
      * @param degrees the rotation angle (0 for the other kinds)
      */
     public record Step(Kind kind, double x, double y, double z, double degrees) {
-        /** Checks that the step is finite and not degenerate. */
+        /**
+         * Checks that the step is finite and not degenerate.
+         *
+         * @param kind    what the step does
+         * @param x       first component
+         * @param y       second component
+         * @param z       third component
+         * @param degrees the rotation angle (0 for the other kinds)
+         */
         public Step {
             Objects.requireNonNull(kind, "kind");
             if (!Double.isFinite(x) || !Double.isFinite(y) || !Double.isFinite(z) || !Double.isFinite(degrees)) {
