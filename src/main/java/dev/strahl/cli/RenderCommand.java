@@ -12,6 +12,7 @@ import dev.strahl.render.RenderStats;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
 import dev.strahl.scene.SceneLoader;
+import dev.strahl.scene.SceneSettings;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
@@ -24,6 +25,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
 import org.joml.Vector3d;
+import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Mixin;
@@ -152,6 +154,10 @@ final class RenderCommand implements Callable<Integer> {
         HeapCheck.checkFilm(width, height);
         Scene loaded = load();
         Scene s = loaded.withCamera(camera(loaded.camera()));
+        settings = withSceneFile(loaded.settings());
+        if (settings.width() != width || settings.height() != height) {
+            HeapCheck.checkFilm(settings.width(), settings.height());          // the scene file's size
+        }
         if (!quiet) {
             for (String note : s.notes()) {
                 err.println("strahl: " + (note.startsWith("warning: ") ? note : "note: " + note));
@@ -188,6 +194,43 @@ final class RenderCommand implements Callable<Integer> {
     private RenderSettings settings() {
         return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0,
                 transport.integrator, transport.lightSamples, timeLimit == null ? Duration.ZERO : timeLimit);
+    }
+
+    /**
+     * The scene file's film and integrator keys, overridden by every option given on the command
+     * line (an option left at its default does not override the file).
+     */
+    private RenderSettings withSceneFile(SceneSettings file) {
+        RenderSettings s;
+        try {
+            s = RenderSettings.defaults().withThreads(threads).withCullBackFaces(cullBackFaces)
+                    .withTimeLimit(timeLimit == null ? Duration.ZERO : timeLimit).withScene(file);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(scene + ": " + e.getMessage(), e);
+        }
+        CommandLine.ParseResult given = spec.commandLine().getParseResult();
+        if (given.hasMatchedOption("--width") || given.hasMatchedOption("--height")) {
+            s = s.withSize(given.hasMatchedOption("--width") ? width : s.width(), given.hasMatchedOption("--height") ? height : s.height());
+        }
+        if (given.hasMatchedOption("--spp")) {
+            s = s.withSamplesPerPixel(spp);
+        }
+        if (given.hasMatchedOption("--seed")) {
+            s = s.withSeed(seed);
+        }
+        if (given.hasMatchedOption("--max-depth")) {
+            s = s.withMaxDepth(transport.maxDepth);
+        }
+        if (given.hasMatchedOption("--integrator")) {
+            s = s.withIntegrator(transport.integrator);
+        }
+        if (given.hasMatchedOption("--hemisphere")) {
+            s = s.withHemisphere(transport.hemisphere);
+        }
+        if (given.hasMatchedOption("--light-samples")) {
+            s = s.withLightSamples(transport.lightSamples);
+        }
+        return s;
     }
 
     /** Refuses an unwritable output before spending time on the render. */
@@ -273,7 +316,7 @@ final class RenderCommand implements Callable<Integer> {
                         + (savedCheckpoint ? "; continue with --resume " + checkpointFile : ""));
             }
             err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %d spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
-                    transport.integrator.id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
+                    settings.integrator().id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
                     ProgressBar.si(stats.samplesPerSecond()), ProgressBar.si(stats.raysPerSecond()), stats.threads(), output));
         }
         if (!quiet && invalid > 0) {

@@ -200,7 +200,7 @@ class SceneLoaderTest {
         Files.writeString(obj, SQUARE + "f 1 2 3 4\n");
         assertThat(SceneLoader.load(obj).geometry().triangleCount()).isEqualTo(2);
         Path json = dir.resolve("Scene.Json");
-        Files.writeString(json, "{ \"shapes\": [ { \"type\": \"obj\", \"file\": \"UPPER.OBJ\" } ] }");
+        Files.writeString(json, "{ \"shapes\": [ { \"type\": \"mesh\", \"file\": \"UPPER.OBJ\" } ] }");
         assertThat(SceneLoader.load(json).geometry().triangleCount()).isEqualTo(2);
     }
 
