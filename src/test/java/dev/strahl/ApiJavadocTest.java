@@ -21,6 +21,7 @@ class ApiJavadocTest {
     static final List<String> API = List.of(
             "scene/Scene", "scene/SceneLoader", "scene/SceneException", "scene/SceneSettings", "scene/Transform",
             "render/RenderSettings", "render/RenderJob", "render/RenderListener", "render/RenderStats",
+            "render/Checkpoint", "render/CheckpointException", "film/AtomicFile",
             "film/Film", "film/Image", "film/ImageWriters", "film/Tonemap", "film/PfmReader",
             "material/Material", "material/Lambert", "material/Mirror", "material/Dielectric", "material/Glossy",
             "math/Rgb", "camera/Camera", "geometry/TriangleMesh", "geometry/Sphere",

@@ -28,6 +28,12 @@ public final class AtomicFile {
     /** Writes a file's content to a stream. */
     @FunctionalInterface
     public interface Content {
+        /**
+         * Writes the whole content.
+         *
+         * @param out the stream into the temporary file; flushed and closed by {@link AtomicFile}
+         * @throws IOException if writing fails: the target is then left as it was
+         */
         void writeTo(OutputStream out) throws IOException;
     }
 

@@ -33,7 +33,7 @@ import java.util.zip.CheckedOutputStream;
  * the image. Resuming ({@link RenderJob#resume}) continues every pixel from the sample index it
  * reached, so an interrupted and resumed render is bit-identical to an uninterrupted one.
  *
- * <p>File format (big-endian), version {@value #VERSION}:
+ * <p>File format (big-endian), version 1:
  * <pre>
  *   8 bytes   magic "STRAHLCK"
  *   int       format version
@@ -68,19 +68,45 @@ public final class Checkpoint {
         this.height = height;
     }
 
-    /** The checkpoint identity of a render of {@code scene} with {@code settings} (digests the scene once). */
+    /**
+     * The checkpoint identity of a render of {@code scene} with {@code settings}; digests the
+     * scene once (a fraction of a second for a million triangles).
+     *
+     * @param scene    the scene as it is rendered (with any camera override)
+     * @param settings the render settings
+     * @return the identity, to save and restore checkpoints of that render
+     */
     public static Checkpoint of(Scene scene, RenderSettings settings) {
         return new Checkpoint(sceneDigest(scene), settingsKey(settings), settings.width(), settings.height());
     }
 
-    /** What a checkpoint held: the film to resume into and the figures of the runs before. */
+    /**
+     * What a checkpoint held: the film to resume into and the figures of the runs before.
+     *
+     * @param film            the film with every pixel's count and sums
+     * @param samplesPerPixel samples per pixel every pixel has reached
+     * @param invalidSamples  samples that were NaN or infinite, counted as black
+     * @param seconds         seconds of rendering before
+     */
     public record Restored(Film film, int samplesPerPixel, long invalidSamples, double seconds) {
+        /**
+         * Checks the film is there.
+         *
+         * @param film            the film
+         * @param samplesPerPixel samples per pixel reached
+         * @param invalidSamples  invalid samples so far
+         * @param seconds         seconds rendered so far
+         */
         public Restored {
             Objects.requireNonNull(film, "film");
         }
     }
 
-    /** Bytes a checkpoint of a {@code width}×{@code height} film takes. */
+    /**
+     * The size of a checkpoint of this render.
+     *
+     * @return bytes
+     */
     public long fileSize() {
         return headerSize() + (long) width * height * PIXEL_BYTES + 4;
     }
@@ -88,6 +114,13 @@ public final class Checkpoint {
     /**
      * Saves the state of {@code film} atomically. Call it only while nothing renders into the
      * film: between passes (in {@link RenderListener#passCompleted}) or after the render.
+     *
+     * @param file           where to save; replaced atomically
+     * @param film           the render's film, of the settings' size
+     * @param invalidSamples NaN or infinite samples so far, to report after a resume
+     * @param seconds        seconds rendered so far
+     * @throws IOException if the file cannot be written; a previous checkpoint is then kept
+     * @throws IllegalArgumentException if the film is not of the settings' size
      */
     public void save(Path file, Film film, long invalidSamples, double seconds) throws IOException {
         if (film.width() != width || film.height() != height) {
@@ -122,6 +155,9 @@ public final class Checkpoint {
 
     /**
      * Reads a checkpoint made by {@link #save} for this scene and these settings.
+     *
+     * @param file the checkpoint
+     * @return the film and figures it holds
      *
      * @throws CheckpointException if the file is no checkpoint, of another version, truncated,
      *                             corrupt, or made for another scene or other settings

@@ -9,12 +9,22 @@ import java.nio.file.Path;
 public final class CheckpointException extends Exception {
     private final transient Path file;
 
+    /**
+     * An error about a checkpoint file.
+     *
+     * @param file    the checkpoint
+     * @param message what is wrong, without the file name
+     */
     public CheckpointException(Path file, String message) {
         super(file + ": " + message);
         this.file = file;
     }
 
-    /** The checkpoint file the error is about. */
+    /**
+     * The checkpoint file the error is about.
+     *
+     * @return the file
+     */
     public Path file() {
         return file;
     }

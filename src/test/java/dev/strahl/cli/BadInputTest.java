@@ -178,7 +178,7 @@ class BadInputTest {
             refused("JSON infinite number", files("s.json", "{\n \"materials\": { \"m\": { \"type\": \"diffuse\" } },\n \"shapes\": [\n  "
                     + sphere.replace("\"radius\": 1", "\"radius\": 1e999") + " ]\n}\n"), scene("$IN/s.json"), "$IN/s.json:4: ", "radius"),
             refused("JSON without geometry", files("s.json", "{\n \"shapes\": [ ]\n}\n"), scene("$IN/s.json"), "$IN/s.json:2: ", "no geometry"),
-            refused("JSON naming a broken OBJ", files("s.json", "{ \"shapes\": [ { \"type\": \"obj\", \"file\": \"t.obj\" } ] }\n",
+            refused("JSON naming a broken OBJ", files("s.json", "{ \"shapes\": [ { \"type\": \"mesh\", \"file\": \"t.obj\" } ] }\n",
                     "t.obj", SQUARE + "f 1 2 9\n"), scene("$IN/s.json"), "$IN/t.obj:5: ", "vertex index 9 out of range"),
             refused("unknown scene format", files("t.txt", SQUARE), scene("$IN/t.txt"), "$IN/t.txt: ", "unknown scene format"),
             // ---- options ----

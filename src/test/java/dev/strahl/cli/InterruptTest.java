@@ -76,6 +76,12 @@ class InterruptTest {
                 "--checkpoint", ck.toString(), "--checkpoint-interval", "1ms");
         awaitFile(p, ck);
         signal(p, "INT");
+        // the second signal once the first has been taken (two pending signals would merge into one),
+        // while the 1500x1500 image and its 63 MB checkpoint are still being written
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+        while (!stderr(p).contains("SIGINT: stopping") && System.nanoTime() < deadline) {
+            Thread.sleep(2);
+        }
         signal(p, "INT");
         assertThat(p.waitFor(60, TimeUnit.SECONDS)).isTrue();
         String err = stderr(p);
@@ -97,7 +103,10 @@ class InterruptTest {
             cmd.addAll(List.of("/usr/bin/env", "--default-signal=INT"));
         }
         cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
-        cmd.addAll(List.of("-Xmx512m", "-cp", System.getProperty("java.class.path"), Main.class.getName()));
+        // the tests may run on the module path: the child gets all of it on its class path (as `java -jar` would)
+        String modules = System.getProperty("jdk.module.path", "");
+        String classPath = (modules.isBlank() ? "" : modules + File.pathSeparator) + System.getProperty("java.class.path");
+        cmd.addAll(List.of("-Xmx512m", "-cp", classPath, Main.class.getName()));
         cmd.addAll(List.of(args));
         return new ProcessBuilder(cmd).directory(dir.toFile()).redirectOutput(ProcessBuilder.Redirect.DISCARD)
                 .redirectError(dir.resolve("stderr.txt").toFile()).start();
@@ -115,7 +124,7 @@ class InterruptTest {
         }
     }
 
-    private String stderr(Process p) throws IOException {   // p has ended: its stderr file is complete
+    private String stderr(Process p) throws IOException {
         return Files.readString(dir.resolve("stderr.txt"), StandardCharsets.UTF_8);
     }
 

@@ -126,16 +126,37 @@ final class FuzzInputs {
         Arbitrary<String> sphere = Combinators.combine(vec, num, Arbitraries.of("m", "n", "missing"))
                 .as((c, r, m) -> "{\"type\": \"sphere\", \"center\": " + c + ", \"radius\": " + r + ", \"material\": \"" + m + "\"}");
         Arbitrary<String> obj = Arbitraries.of("cornell-box.obj", "cornell-sphere.obj", "missing.obj", "cornell-box.mtl", "", ".", "/dev/null")
-                .map(f -> "{\"type\": \"obj\", \"file\": \"" + f + "\"}");
-        Arbitrary<String> shapes = Arbitraries.frequencyOf(Tuple.of(3, sphere), Tuple.of(2, obj),
-                Tuple.of(1, Combinators.combine(Arbitraries.of("cube", "sphere", "obj"), matKey, anyValue)
+                .map(f -> "{\"type\": \"mesh\", \"file\": \"" + f + "\"}");
+        Arbitrary<String> transform = Arbitraries.frequencyOf(
+                Tuple.of(2, vec.map(v -> "{\"translate\": " + v + "}")),
+                Tuple.of(2, Arbitraries.oneOf(vec, num).map(v -> "{\"scale\": " + v + "}")),
+                Tuple.of(2, Combinators.combine(vec, num).as((a, d) -> "{\"rotate\": {\"axis\": " + a + ", \"degrees\": " + d + "}}")),
+                Tuple.of(1, Arbitraries.of("{}", "{\"shear\": 1}", "[]", "{\"translate\": [1, 2, 3], \"scale\": 2}")))
+                .list().ofMaxSize(3).map(l -> "[" + String.join(", ", l) + "]");
+        Arbitrary<String> triangles = Combinators.combine(num.list().ofMaxSize(12), Arbitraries.integers().between(-1, 5).list().ofMaxSize(9),
+                Arbitraries.of("m", "n", "missing"))
+                .as((p, i, m) -> "{\"type\": \"triangles\", \"positions\": [" + String.join(", ", p) + "], \"indices\": "
+                        + i + ", \"material\": \"" + m + "\"}");
+        Arbitrary<String> moved = Combinators.combine(Arbitraries.oneOf(sphere, obj, triangles), transform)
+                .as((shape, t) -> shape.substring(0, shape.length() - 1) + ", \"transform\": " + t + "}");
+        Arbitrary<String> shapes = Arbitraries.frequencyOf(Tuple.of(3, sphere), Tuple.of(2, obj), Tuple.of(2, triangles), Tuple.of(2, moved),
+                Tuple.of(1, Combinators.combine(Arbitraries.of("cube", "sphere", "mesh", "triangles", "obj"), matKey, anyValue)
                         .as((t, k, v) -> "{\"type\": \"" + t + "\", \"" + k + "\": " + v + "}")))
                 .list().ofMaxSize(4).map(l -> "[" + String.join(", ", l) + "]");
         Arbitrary<String> camera = Combinators.combine(Arbitraries.of("lookFrom", "lookAt", "up", "fov", "zoom"), anyValue)
                 .as((k, v) -> "\"" + k + "\": " + v).list().ofMaxSize(5).map(l -> "{" + String.join(", ", l) + "}");
-        return Combinators.combine(materials.optional(), shapes.optional(), camera.optional(), vec.optional())
-                .as((m, sh, c, env) -> {
+        Arbitrary<String> film = Combinators.combine(Arbitraries.of("width", "height", "depth"), Arbitraries.of("1", "2", "0", "-1", "8",
+                "1e9", "1.5", "\"x\"")).as((k, v) -> "\"" + k + "\": " + v).list().ofMaxSize(3).map(l -> "{" + String.join(", ", l) + "}");
+        Arbitrary<String> integrator = Combinators.combine(Arbitraries.of("type", "spp", "maxDepth", "seed", "lightSamples", "hemisphere"),
+                Arbitraries.of("\"path\"", "\"direct\"", "\"whitted\"", "\"photon\"", "\"cosine\"", "\"uniform\"", "1", "0", "-1", "-2",
+                        "4", "1e10", "2.5", "9223372036854775808")).as((k, v) -> "\"" + k + "\": " + v).list().ofMaxSize(4)
+                .map(l -> "{" + String.join(", ", l) + "}");
+        return Combinators.combine(materials.optional(), shapes.optional(), camera.optional(), vec.optional(), film.optional(),
+                        integrator.optional())
+                .as((m, sh, c, env, f, integ) -> {
                     List<String> parts = new ArrayList<>();
+                    f.ifPresent(x -> parts.add("\"film\": " + x));
+                    integ.ifPresent(x -> parts.add("\"integrator\": " + x));
                     m.ifPresent(x -> parts.add("\"materials\": " + x));
                     sh.ifPresent(x -> parts.add("\"shapes\": " + x));
                     c.ifPresent(x -> parts.add("\"camera\": " + x));
@@ -327,7 +348,8 @@ final class FuzzInputs {
     static final List<String> MTL_WORDS = List.of("newmtl", "Kd", "Ks", "Ke", "Ns", "Ni", "illum", "d", "Tr", "Tf", "map_Kd",
             "spectral", "xyz", "-1", "0", "NaN", "1e309", "11", "2.5", "\n", " ", "#");
     static final List<String> JSON_WORDS = List.of("{", "}", "[", "]", ",", ":", "\"", "null", "true", "false", "1e999", "-", "NaN",
-            "\"shapes\"", "\"materials\"", "\"camera\"", "\"type\"", "\"sphere\"", "\"obj\"", "\"file\"", "\"center\"", "\"radius\"",
+            "\"shapes\"", "\"materials\"", "\"camera\"", "\"type\"", "\"sphere\"", "\"obj\"", "\"mesh\"", "\"triangles\"",
+            "\"transform\"", "\"film\"", "\"integrator\"", "\"width\"", "\"spp\"", "\"translate\"", "\"scale\"", "\"rotate\"", "\"file\"", "\"center\"", "\"radius\"",
             "\"material\"", "\"albedo\"", "\"emission\"", "\"lookFrom\"", "\"fov\"", "\"environment\"", "\"mirror\"", "\"glossy\"",
             "\"dielectric\"", "\"ior\"", "\"exponent\"", "\"specular\"", "[0,0,0]", "[1,1]", "0", "-1", "\"missing.obj\"", "\\u0000");
 }
