@@ -32,7 +32,7 @@ final class ViewCommand implements Callable<Integer> {
     @Mixin
     TransportOptions transport;
 
-    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE", description = "Scene file: .json (strahl scene) or .obj (with its .mtl).")
+    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE", description = "Scene file: .json (strahl scene), .obj (with its .mtl) or .ply.")
     Path scene;
 
     @Option(names = "--width", defaultValue = "512", description = "Film width in pixels at start; resizing the window keeps the aspect (default: ${DEFAULT-VALUE}).")
@@ -58,6 +58,9 @@ final class ViewCommand implements Callable<Integer> {
             description = "Light or dark look; system follows the desktop where it can (default: ${DEFAULT-VALUE}).")
     String theme;
 
+    @Mixin
+    DebugOption debug;
+
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
@@ -68,6 +71,9 @@ final class ViewCommand implements Callable<Integer> {
             return 0;
         } catch (SceneException | IllegalArgumentException e) {
             err.println("strahl: " + e.getMessage());
+            if (debug.enabled) {
+                e.printStackTrace(err);
+            }
             return 2;
         } catch (HeadlessException e) {
             err.println("strahl: view needs a display: DISPLAY is not set, or java.awt.headless is true");

@@ -15,7 +15,11 @@ public enum IntegratorKind {
     /** Progressive photon mapping (PPPM): clean caustics early; consistent, converges to PATH as iterations grow. */
     PHOTON;
 
-    /** The name used on the command line and in scene files. */
+    /**
+     * The name used on the command line and in scene files.
+     *
+     * @return the lower-case name, e.g. "path"
+     */
     public String id() {
         return name().toLowerCase(Locale.ROOT);
     }
@@ -23,7 +27,12 @@ public enum IntegratorKind {
     /**
      * Creates the integrator.
      *
+     * @param scene         the scene it renders
+     * @param maxDepth      path segments including the camera segment; -1 for unbounded
+     * @param hemisphere    how diffuse bounces are sampled
+     * @param cullBackFaces whether camera and continuation rays skip back faces of closed meshes
      * @param lightSamples shadow rays per diffuse or glossy hit (DIRECT and WHITTED; PATH takes one)
+     * @return the integrator (internal), PHOTON with {@link PhotonParameters#defaults()}
      */
     public Integrator create(Scene scene, int maxDepth, HemisphereSampling hemisphere, boolean cullBackFaces, int lightSamples) {
         return create(scene, maxDepth, hemisphere, cullBackFaces, lightSamples, PhotonParameters.defaults());
@@ -32,8 +41,14 @@ public enum IntegratorKind {
     /**
      * Creates the integrator.
      *
-     * @param lightSamples shadow rays per diffuse or glossy hit (DIRECT and WHITTED; PATH and PHOTON take one)
-     * @param photons      photons per iteration and initial radius (PHOTON only)
+     * @param scene         the scene it renders
+     * @param maxDepth      path segments including the camera segment (for PHOTON: camera and photon
+     *                      segments together); -1 for unbounded
+     * @param hemisphere    how diffuse bounces are sampled
+     * @param cullBackFaces whether camera and continuation rays skip back faces of closed meshes
+     * @param lightSamples  shadow rays per diffuse or glossy hit (DIRECT and WHITTED; PATH and PHOTON take one)
+     * @param photons       photons per iteration and initial gather radius (PHOTON only)
+     * @return the integrator (internal)
      */
     public Integrator create(Scene scene, int maxDepth, HemisphereSampling hemisphere, boolean cullBackFaces, int lightSamples,
                              PhotonParameters photons) {

@@ -45,6 +45,11 @@ import java.util.Set;
 final class ObjReader {
 
     private static final int VERTEX_NONE = -1;
+    /**
+     * Largest accepted |coordinate| of a position: products of four coordinates (squared lengths
+     * of edge cross products) then stay far inside the double range.
+     */
+    static final double MAX_COORDINATE = 1e18;
 
     private final Path obj;
     private final TextLines lines;
@@ -70,6 +75,8 @@ final class ObjReader {
     private int[] triSlot = new int[1024];
     private int triCount;
     private int[] face = new int[16];
+    private int degenerateCount;
+    private int firstDegenerateLine;
 
     // Material slots: one per distinct usemtl name, slot 0 = "no usemtl yet"
     private final List<String> slotNames = new ArrayList<>(List.of(""));
@@ -144,9 +151,9 @@ final class ObjReader {
     // ---- vertex data ---------------------------------------------------------------------
 
     private void vertex() throws SceneException {
-        double x = coordinate("v", "3 numbers (x y z)", 0);
-        double y = coordinate("v", "3 numbers (x y z)", 1);
-        double z = coordinate("v", "3 numbers (x y z)", 2);
+        double x = position(0);
+        double y = position(1);
+        double z = position(2);
         while (cur.next()) {
             cur.number("v"); // w, or r g b of the vertex-colour extension: checked, not used
         }
@@ -196,6 +203,14 @@ final class ObjReader {
         vtCount++;
     }
 
+    private double position(int index) throws SceneException {
+        double value = coordinate("v", "3 numbers (x y z)", index);
+        if (Math.abs(value) > MAX_COORDINATE) {
+            throw cur.error("coordinate " + LineCursor.quote(cur.token()) + " in 'v' is too large (the limit is 1e18 in magnitude)");
+        }
+        return value;
+    }
+
     /** The next number of a v/vn/vt line, which must exist, be finite and fit a float. */
     private double coordinate(String keyword, String expected, int index) throws SceneException {
         if (!cur.next()) {
@@ -236,6 +251,10 @@ final class ObjReader {
             throw cur.error("too many triangles for one mesh");
         }
         if (newCount * 3 > tri.length) {
+            String tooMany = HeapBudget.tooMany(newCount);
+            if (tooMany != null) {
+                throw cur.error(tooMany);
+            }
             tri = grow(tri, newCount * 3);
         }
         if (newCount > triSlot.length) {
@@ -243,12 +262,30 @@ final class ObjReader {
         }
         // Fan (v0, vi, vi+1): keeps the winding of the polygon, hence its geometric normal
         for (int i = 1; i + 1 < n; i++) {
+            if (isDegenerate(face[0], face[i], face[i + 1])) {
+                if (degenerateCount++ == 0) {
+                    firstDegenerateLine = cur.lineNumber;
+                }
+                continue;
+            }
             tri[triCount * 3] = face[0];
             tri[triCount * 3 + 1] = face[i];
             tri[triCount * 3 + 2] = face[i + 1];
             triSlot[triCount] = slot;
             triCount++;
         }
+    }
+
+    /**
+     * Whether the triangle of three output vertices has zero area: cross(v1 − v0, v2 − v0) = 0
+     * with the float positions subtracted in double, the test the geometry uses.
+     */
+    private boolean isDegenerate(int a, int b, int c) {
+        int pa = 3 * outPosition[a], pb = 3 * outPosition[b], pc = 3 * outPosition[c];
+        double e1x = (double) v[pb] - v[pa], e1y = (double) v[pb + 1] - v[pa + 1], e1z = (double) v[pb + 2] - v[pa + 2];
+        double e2x = (double) v[pc] - v[pa], e2y = (double) v[pc + 1] - v[pa + 1], e2z = (double) v[pc + 2] - v[pa + 2];
+        double cx = e1y * e2z - e1z * e2y, cy = e1z * e2x - e1x * e2z, cz = e1x * e2y - e1y * e2x;
+        return cx * cx + cy * cy + cz * cz == 0;
     }
 
     /** Parses the current token as v, v/t, v//n or v/t/n and returns the output vertex. */
@@ -410,7 +447,16 @@ final class ObjReader {
 
     private ObjModel build() throws SceneException {
         if (triCount == 0) {
-            throw new SceneException(obj, "no faces");
+            throw new SceneException(obj, degenerateCount == 0 ? "no faces: the file holds no geometry"
+                    : "no geometry: all " + degenerateCount + " triangles have zero area");
+        }
+        String tooMany = HeapBudget.tooMany(triCount);
+        if (tooMany != null) {
+            throw new SceneException(obj, tooMany.replace(" so far", ""));
+        }
+        if (degenerateCount > 0) {
+            warnings.add(obj + ": skipped " + degenerateCount + " degenerate triangle" + (degenerateCount == 1 ? "" : "s")
+                    + " (zero area), the first at line " + firstDegenerateLine);
         }
         MtlMaterial fallback = MtlMaterial.defaultMaterial();
         List<MtlMaterial> materials = new ArrayList<>();

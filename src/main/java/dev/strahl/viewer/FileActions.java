@@ -43,7 +43,7 @@ final class FileActions {
         this.status = status;
         this.sceneFile = sceneFile;
         this.onSceneOpened = onSceneOpened;
-        open = ViewerActions.action("Open scene…", Icons.open(), "Open a scene file (.json or .obj)",
+        open = ViewerActions.action("Open scene…", Icons.open(), "Open a scene file (.json, .obj or .ply)",
                 KeyStroke.getKeyStroke(KeyEvent.VK_O, ViewerActions.menuMask()), e -> chooseScene());
         save = ViewerActions.action("Save image…", Icons.save(), "Save the current image as PNG (sRGB) or PFM (linear)",
                 KeyStroke.getKeyStroke(KeyEvent.VK_S, ViewerActions.menuMask()), e -> chooseImageFile());
@@ -53,7 +53,7 @@ final class FileActions {
         JFileChooser chooser = new JFileChooser(sceneFile != null && sceneFile.toAbsolutePath().getParent() != null
                 ? sceneFile.toAbsolutePath().getParent().toFile() : new File("."));
         chooser.setDialogTitle("Open scene");
-        chooser.setFileFilter(new FileNameExtensionFilter("Scenes (*.json, *.obj)", "json", "obj"));
+        chooser.setFileFilter(new FileNameExtensionFilter("Scenes (*.json, *.obj, *.ply)", "json", "obj", "ply"));
         if (chooser.showOpenDialog(frame) == JFileChooser.APPROVE_OPTION) {
             openScene(chooser.getSelectedFile().toPath());
         }

@@ -128,6 +128,39 @@ class PhotonMapperTest {
         assertThat(pm.storedPhotons()).isGreaterThan(2000);
     }
 
+    /** Camera paths with their density estimates, and photon tracing into a grown list, allocate nothing. */
+    @Test
+    void radianceAndPhotonTracingAllocateNothing() throws Exception {
+        Scene scene = dev.strahl.scene.SceneLoader.load(java.nio.file.Path.of("scenes/cornell-sphere.json"));
+        PhotonMapper pm = new PhotonMapper(scene, -1, HemisphereSampling.COSINE, false, new PhotonParameters(20_000, 0));
+        Integrator.Worker w = pm.newWorker();
+        pm.prepareSample(1, 0, Parallel.sequential(w));
+        var rays = scene.camera().rays(64, 64);
+        Ray ray = new Ray();
+        Rng rng = new Rng();
+        Rgb.Mutable out = new Rgb.Mutable();
+        Runnable frame = () -> {
+            for (int p = 0; p < 64 * 64; p++) {
+                rng.seed(Rng.streamSeed(1, p % 64, p / 64, 0));
+                rays.generate(p % 64 + rng.nextDouble(), p / 64 + rng.nextDouble(), ray);
+                w.radiance(ray, rng, out);
+            }
+        };
+        frame.run();                                        // warm up
+        var mx = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        long before = mx.getCurrentThreadAllocatedBytes();
+        frame.run();
+        assertThat(mx.getCurrentThreadAllocatedBytes() - before).as("bytes allocated by 4096 camera paths").isLessThan(1024);
+
+        PhotonTracer tracer = new PhotonTracer(new Tracer(scene, Shading.bsdfs(scene, HemisphereSampling.COSINE), false), new PhotonSource(scene), -1);
+        PhotonList list = new PhotonList(100_000);
+        tracer.trace(1, 0, 0, 20_000, 1e-4, list);           // warm up
+        list.clear();
+        before = mx.getCurrentThreadAllocatedBytes();
+        tracer.trace(1, 1, 0, 20_000, 1e-4, list);
+        assertThat(mx.getCurrentThreadAllocatedBytes() - before).as("bytes allocated tracing 20 000 photons").isLessThan(1024);
+    }
+
     @Test
     void parametersAreValidated() {
         assertThatThrownBy(() -> new PhotonParameters(0, 0)).hasMessageContaining("photons per iteration");
