@@ -115,7 +115,7 @@ class SceneFileFormatTest {
         assertThat(halfGiven.height()).isEqualTo(512);
         var e = catchThrowableOfType(() -> RenderSettings.defaults().withScene(
                 new SceneSettings(null, null, null, null, null, "bidir", null, null)), IllegalArgumentException.class);
-        assertThat(e).hasMessage("unknown integrator 'bidir' (known: path, direct, whitted)");
+        assertThat(e).hasMessage("unknown integrator 'bidir' (known: path, direct, whitted, photon)");
     }
 
     @Test
