@@ -45,6 +45,6 @@ class RenderSceneSettingsTest {
         Path s = scene("{ \"type\": \"bidir\" }");
         var run = RenderCommandTest.strahl("render", s.toString(), "-o", dir.resolve("a.png").toString());
         assertThat(run.code()).isEqualTo(2);
-        assertThat(run.err().strip()).isEqualTo("strahl: " + s + ": unknown integrator 'bidir' (known: path, direct, whitted)");
+        assertThat(run.err().strip()).isEqualTo("strahl: " + s + ": unknown integrator 'bidir' (known: path, direct, whitted, photon)");
     }
 }
