@@ -67,7 +67,7 @@ final class JsonSceneReader {
         try {
             text = Files.readString(file, StandardCharsets.UTF_8);
         } catch (CharacterCodingException e) {
-            throw new SceneException(file, ObjReader.TextLines.lineOfInvalidUtf8(file, 1), "not a text scene file (invalid UTF-8)");
+            throw new SceneException(file, TextLines.lineOfInvalidUtf8(file, 1), "not a text scene file (invalid UTF-8)");
         } catch (IOException e) {
             throw SceneLoader.cannotRead(file, e);
         }

@@ -16,10 +16,6 @@ import java.util.List;
  */
 final class PlyAscii {
     private static final int MAX_TOKEN = 256;
-    private static final double[] POW10 = {
-        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
-        1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22
-    };
 
     private final PlyReader reader;
     private final PlyInput in;
@@ -177,7 +173,7 @@ final class PlyAscii {
             return integer(e, index, p, t);
         }
         next(e, index, p);
-        double d = parseDecimal(bytes, tokenStart, tokenEnd);
+        double d = FastDecimal.parse(bytes, tokenStart, tokenEnd);
         if (Double.isNaN(d)) {
             d = slowDecimal(e, index, p, t);
         }
@@ -232,7 +228,7 @@ final class PlyAscii {
 
     private SceneException bad(Element e, long index, Property p, Type t) {
         String s = new String(bytes, tokenStart, tokenEnd - tokenStart, StandardCharsets.ISO_8859_1);
-        return reader.error(e.name(), index, "bad value " + ObjReader.LineCursor.quote(s) + " for property '" + p.name()
+        return reader.error(e.name(), index, "bad value " + LineCursor.quote(s) + " for property '" + p.name()
                 + "' of type " + t.name);
     }
 
@@ -287,47 +283,5 @@ final class PlyAscii {
 
     private static boolean isSpace(byte b) {
         return b == ' ' || b == '\t' || b == '\r' || b == '\f' || b == 0x0B;
-    }
-
-    /**
-     * Plain decimals ([+-]digits[.digits], at most 15 significant digits): the digits as an exact
-     * integer divided by an exact power of ten is one correctly rounded operation, so the result
-     * equals {@link Double#parseDouble} (Clinger 1990). NaN for anything else.
-     */
-    static double parseDecimal(byte[] s, int from, int to) {
-        int i = from;
-        boolean negative = false;
-        if (i < to && (s[i] == '-' || s[i] == '+')) {
-            negative = s[i] == '-';
-            i++;
-        }
-        long mantissa = 0;
-        int significant = 0;
-        int decimals = 0;
-        boolean dot = false;
-        boolean digit = false;
-        for (; i < to; i++) {
-            byte c = s[i];
-            if (c >= '0' && c <= '9') {
-                digit = true;
-                decimals += dot ? 1 : 0;
-                if (mantissa == 0 && c == '0') {
-                    continue;
-                }
-                if (++significant > 15) {
-                    return Double.NaN;
-                }
-                mantissa = mantissa * 10 + (c - '0');
-            } else if (c == '.' && !dot) {
-                dot = true;
-            } else {
-                return Double.NaN;
-            }
-        }
-        if (!digit || decimals >= POW10.length) {
-            return Double.NaN;
-        }
-        double value = mantissa / POW10[decimals];
-        return negative ? -value : value;
     }
 }

@@ -211,7 +211,7 @@ final class PlyHeader {
                     }
                     return new PlyHeader(format, elements, line);
                 }
-                default -> throw new SceneException(file, line, "unknown PLY header keyword " + ObjReader.LineCursor.quote(w[0])
+                default -> throw new SceneException(file, line, "unknown PLY header keyword " + LineCursor.quote(w[0])
                         + " (expected format, element, property, comment, obj_info or end_header)");
             }
         }
@@ -238,11 +238,11 @@ final class PlyHeader {
             }
         }
         if (format == null) {
-            throw new SceneException(file, line, "unknown PLY format " + ObjReader.LineCursor.quote(w[1])
+            throw new SceneException(file, line, "unknown PLY format " + LineCursor.quote(w[1])
                     + " (expected ascii, binary_little_endian or binary_big_endian)");
         }
         if (!w[2].equals("1.0")) {
-            throw new SceneException(file, line, "unsupported PLY version " + ObjReader.LineCursor.quote(w[2]) + " (expected 1.0)");
+            throw new SceneException(file, line, "unsupported PLY version " + LineCursor.quote(w[2]) + " (expected 1.0)");
         }
         return format;
     }
@@ -256,7 +256,7 @@ final class PlyHeader {
         } catch (NumberFormatException e) {
             // reported below
         }
-        throw new SceneException(file, line, "bad count " + ObjReader.LineCursor.quote(word) + " for element '" + element
+        throw new SceneException(file, line, "bad count " + LineCursor.quote(word) + " for element '" + element
                 + "' (expected a whole number >= 0)");
     }
 
@@ -280,7 +280,7 @@ final class PlyHeader {
     private static Type type(Path file, int line, String word) throws SceneException {
         Type t = Type.of(word);
         if (t == null) {
-            throw new SceneException(file, line, "unknown PLY type " + ObjReader.LineCursor.quote(word)
+            throw new SceneException(file, line, "unknown PLY type " + LineCursor.quote(word)
                     + " (expected char, uchar, short, ushort, int, uint, float, double or int8 ... float64)");
         }
         return t;

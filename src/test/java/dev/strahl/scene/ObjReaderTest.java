@@ -462,36 +462,6 @@ class ObjReaderTest {
         }
     }
 
-    @Test
-    void fastDecimalParsingAgreesWithParseDouble() {
-        var random = new SplittableRandom(7);
-        for (int i = 0; i < 200_000; i++) {
-            var s = new StringBuilder();
-            if (random.nextInt(3) == 0) {
-                s.append(random.nextBoolean() ? '-' : '+');
-            }
-            int intDigits = random.nextInt(10);
-            int fracDigits = random.nextInt(random.nextBoolean() ? 8 : 25);
-            for (int d = 0; d < intDigits; d++) {
-                s.append((char) ('0' + random.nextInt(10)));
-            }
-            if (fracDigits > 0 || random.nextBoolean()) {
-                s.append('.');
-            }
-            for (int d = 0; d < fracDigits; d++) {
-                s.append((char) ('0' + random.nextInt(10)));
-            }
-            String text = s.toString();
-            double fast = ObjReader.LineCursor.parseDecimal(text, 0, text.length());
-            if (!Double.isNaN(fast)) {
-                assertThat(Double.doubleToRawLongBits(fast)).as(text)
-                        .isEqualTo(Double.doubleToRawLongBits(Double.parseDouble(text)));
-            }
-        }
-        assertThat(ObjReader.LineCursor.parseDecimal("0.7250", 0, 6)).isEqualTo(0.725);
-        assertThat(ObjReader.LineCursor.parseDecimal("1e5", 0, 3)).as("exponents go to parseDouble").isNaN();
-    }
-
     // ---- helpers -----------------------------------------------------------------------------
 
     private Path write(String name, String text) throws IOException {

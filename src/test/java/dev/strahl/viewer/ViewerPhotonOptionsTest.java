@@ -6,22 +6,26 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import dev.strahl.integrator.IntegratorKind;
 import dev.strahl.integrator.PhotonParameters;
 import dev.strahl.sampling.HemisphereSampling;
+import java.util.Set;
 import org.junit.jupiter.api.Test;
 
 /** The photon mapper is one of the viewer's integrators and gets its parameters. */
 class ViewerPhotonOptionsTest {
 
     @Test
-    void photonParametersReachTheRenderSettings() {
-        ViewerOptions o = new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PHOTON, 1, Theme.LIGHT, 5000, 0.03);
+    void photonParametersReachTheRenderSettings() throws Exception {
+        ViewerOptions o = new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PHOTON, 1, Theme.LIGHT, Set.of(), 5000, 0.03);
         assertThat(o.renderSettings().integrator()).isEqualTo(IntegratorKind.PHOTON);
         assertThat(o.renderSettings().photonParameters()).isEqualTo(new PhotonParameters(5000, 0.03));
         assertThat(ViewerOptions.defaults().renderSettings().photonParameters()).isEqualTo(PhotonParameters.defaults());
+        // A scene file's settings keep the photon parameters of the options.
+        assertThat(o.settingsFor(java.nio.file.Path.of("s.json"), dev.strahl.scene.SceneSettings.NONE).photonParameters())
+                .isEqualTo(new PhotonParameters(5000, 0.03));
     }
 
     @Test
     void badPhotonParametersAreRefused() {
-        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PHOTON, 1, Theme.LIGHT, 0, 0))
+        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PHOTON, 1, Theme.LIGHT, Set.of(), 0, 0))
                 .hasMessageContaining("photons per iteration");
     }
 
