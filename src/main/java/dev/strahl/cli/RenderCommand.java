@@ -25,7 +25,6 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
 import org.joml.Vector3d;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Mixin;
@@ -201,43 +200,8 @@ final class RenderCommand implements Callable<Integer> {
      * The scene file's film and integrator keys, overridden by every option given on the command
      * line (an option left at its default does not override the file).
      */
-    private RenderSettings withSceneFile(SceneSettings file) {
-        RenderSettings s;
-        try {
-            s = RenderSettings.defaults().withThreads(threads).withCullBackFaces(cullBackFaces)
-                    .withTimeLimit(timeLimit == null ? Duration.ZERO : timeLimit).withScene(file);
-        } catch (IllegalArgumentException e) {
-            throw new IllegalArgumentException(scene + ": " + e.getMessage(), e);
-        }
-        CommandLine.ParseResult given = spec.commandLine().getParseResult();
-        if (given.hasMatchedOption("--width") || given.hasMatchedOption("--height")) {
-            s = s.withSize(given.hasMatchedOption("--width") ? width : s.width(), given.hasMatchedOption("--height") ? height : s.height());
-        }
-        if (given.hasMatchedOption("--spp")) {
-            s = s.withSamplesPerPixel(spp);
-        }
-        if (given.hasMatchedOption("--seed")) {
-            s = s.withSeed(seed);
-        }
-        if (given.hasMatchedOption("--max-depth")) {
-            s = s.withMaxDepth(transport.maxDepth);
-        }
-        if (given.hasMatchedOption("--integrator")) {
-            s = s.withIntegrator(transport.integrator);
-        }
-        if (given.hasMatchedOption("--hemisphere")) {
-            s = s.withHemisphere(transport.hemisphere);
-        }
-        if (given.hasMatchedOption("--light-samples")) {
-            s = s.withLightSamples(transport.lightSamples);
-        }
-        if (given.hasMatchedOption("--photons")) {
-            s = s.withPhotons(transport.photons);
-        }
-        if (given.hasMatchedOption("--photon-radius")) {
-            s = s.withPhotonRadius(transport.photonRadius);
-        }
-        return s;
+    private RenderSettings withSceneFile(SceneSettings file) throws SceneException {
+        return settings().withSceneFile(scene, file, SceneFileOptions.given(spec.commandLine().getParseResult()));
     }
 
     /** Refuses an unwritable output before spending time on the render. */

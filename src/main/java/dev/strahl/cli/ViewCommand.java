@@ -1,6 +1,7 @@
 package dev.strahl.cli;
 
 import dev.strahl.scene.SceneException;
+import dev.strahl.scene.SceneSettings;
 import dev.strahl.viewer.Theme;
 import dev.strahl.viewer.Viewer;
 import dev.strahl.viewer.ViewerOptions;
@@ -8,11 +9,8 @@ import java.awt.AWTError;
 import java.awt.HeadlessException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
-import java.util.EnumSet;
-import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.Callable;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Mixin;
@@ -48,10 +46,6 @@ final class ViewCommand implements Callable<Integer> {
     @Option(names = "--spp", defaultValue = "1024", description = "Stop at this many samples per pixel; 0 = never stop (default: ${DEFAULT-VALUE}).")
     int spp;
 
-
-
-
-
     @Option(names = "--threads", defaultValue = "0", description = "Worker threads; 0 = all processors (default: ${DEFAULT-VALUE}).")
     int threads;
 
@@ -71,20 +65,14 @@ final class ViewCommand implements Callable<Integer> {
                 transport.integrator, transport.lightSamples, Theme.parse(theme), given(), transport.photons, transport.photonRadius);
     }
 
-    private static final Map<String, ViewerOptions.Setting> SCENE_FILE_OPTIONS = Map.of(
-            "--width", ViewerOptions.Setting.WIDTH, "--height", ViewerOptions.Setting.HEIGHT,
-            "--max-depth", ViewerOptions.Setting.MAX_DEPTH, "--hemisphere", ViewerOptions.Setting.HEMISPHERE,
-            "--seed", ViewerOptions.Setting.SEED, "--integrator", ViewerOptions.Setting.INTEGRATOR,
-            "--light-samples", ViewerOptions.Setting.LIGHT_SAMPLES);
-
-    private Set<ViewerOptions.Setting> given() {
-        CommandLine.ParseResult parsed = spec.commandLine().getParseResult();
-        Set<ViewerOptions.Setting> given = EnumSet.noneOf(ViewerOptions.Setting.class);
-        SCENE_FILE_OPTIONS.forEach((option, setting) -> {
-            if (parsed.hasMatchedOption(option)) {
-                given.add(setting);
-            }
-        });
+    /**
+     * The options given on the command line that name a scene file's settings. {@code --spp} is not
+     * one of them here: view's {@code --spp} is its stop-at count, not the file's {@code spp}
+     * (which the viewer does not use, see {@link ViewerOptions}).
+     */
+    private Set<SceneSettings.Setting> given() {
+        Set<SceneSettings.Setting> given = SceneFileOptions.given(spec.commandLine().getParseResult());
+        given.remove(SceneSettings.Setting.SAMPLES_PER_PIXEL);
         return given;
     }
 

@@ -3,9 +3,12 @@ package dev.strahl.render;
 import dev.strahl.integrator.IntegratorKind;
 import dev.strahl.integrator.PhotonParameters;
 import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.scene.SceneException;
 import dev.strahl.scene.SceneSettings;
+import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Objects;
+import java.util.Set;
 
 /**
  * How to render: film size, samples per pixel, path depth, seed, threads and sampling choices.
@@ -290,6 +293,50 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
             s = s.withIntegrator(integratorNamed(scene.integrator()));
         }
         return s;
+    }
+
+    /**
+     * These settings combined with a scene file's the way the command line combines them: the
+     * file's {@code film} and {@code integrator} keys replace the values here, except those of the
+     * settings in {@code given} (options given on the command line), which keep their value here.
+     * Every key of the file is checked, also those overridden, so a file is refused or accepted
+     * whatever the command line says. {@code strahl render} and {@code strahl view} both combine
+     * their options with a scene file here.
+     *
+     * @param file  the scene file, for the error message
+     * @param scene the scene file's settings ({@code scene.settings()})
+     * @param given the settings whose value here wins over the file's
+     * @return the combined settings
+     * @throws SceneException naming {@code file} if the file names an unknown integrator
+     */
+    public RenderSettings withSceneFile(Path file, SceneSettings scene, Set<SceneSettings.Setting> given) throws SceneException {
+        RenderSettings s;
+        try {
+            s = withScene(scene);
+        } catch (IllegalArgumentException e) {
+            throw new SceneException(file, e.getMessage(), e);
+        }
+        for (SceneSettings.Setting setting : given) {
+            s = s.withValueOf(setting, this);
+        }
+        return s;
+    }
+
+    /**
+     * These settings with the value of one scene-file setting taken from {@code from}. (A switch
+     * expression: a new {@link SceneSettings.Setting} does not compile until it is handled here.)
+     */
+    private RenderSettings withValueOf(SceneSettings.Setting setting, RenderSettings from) {
+        return switch (setting) {
+            case WIDTH -> withSize(from.width, height);
+            case HEIGHT -> withSize(width, from.height);
+            case SAMPLES_PER_PIXEL -> withSamplesPerPixel(from.samplesPerPixel);
+            case MAX_DEPTH -> withMaxDepth(from.maxDepth);
+            case SEED -> withSeed(from.seed);
+            case INTEGRATOR -> withIntegrator(from.integrator);
+            case LIGHT_SAMPLES -> withLightSamples(from.lightSamples);
+            case HEMISPHERE -> withHemisphere(from.hemisphere);
+        };
     }
 
     /**

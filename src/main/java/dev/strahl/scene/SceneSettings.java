@@ -4,9 +4,10 @@ import dev.strahl.sampling.HemisphereSampling;
 
 /**
  * How a scene file asks to be rendered: its {@code film} and {@code integrator} keys. Every field
- * is null where the file says nothing; {@code RenderSettings.withScene} applies the others, and a
- * command-line option overrides them. The integrator is kept by name, because the scene layer
- * sits below the integrators; an unknown name is refused when the settings are applied.
+ * is null where the file says nothing; {@code RenderSettings.withScene} applies the others, and
+ * {@code RenderSettings.withSceneFile} does so except for the {@link Setting}s given on a command
+ * line, which win. The integrator is kept by name, because the scene layer sits below the
+ * integrators; an unknown name is refused when the settings are applied.
  *
  * @param width           film width in pixels, or null
  * @param height          film height in pixels, or null
@@ -19,6 +20,29 @@ import dev.strahl.sampling.HemisphereSampling;
  */
 public record SceneSettings(Integer width, Integer height, Integer samplesPerPixel, Integer maxDepth, Long seed,
                             String integrator, Integer lightSamples, HemisphereSampling hemisphere) {
+
+    /**
+     * The settings a scene file can give, one per field. A command line names the ones it gives
+     * itself, so that the file's value of those is not used.
+     */
+    public enum Setting {
+        /** {@code film.width} */
+        WIDTH,
+        /** {@code film.height} */
+        HEIGHT,
+        /** {@code integrator.spp} */
+        SAMPLES_PER_PIXEL,
+        /** {@code integrator.maxDepth} */
+        MAX_DEPTH,
+        /** {@code integrator.seed} */
+        SEED,
+        /** {@code integrator.type} */
+        INTEGRATOR,
+        /** {@code integrator.lightSamples} */
+        LIGHT_SAMPLES,
+        /** {@code integrator.hemisphere} */
+        HEMISPHERE
+    }
 
     /** Settings that say nothing (a scene built in code, an OBJ, a PLY). */
     public static final SceneSettings NONE = new SceneSettings(null, null, null, null, null, null, null, null);

@@ -6,14 +6,17 @@ import dev.strahl.render.RenderSettings;
 import dev.strahl.sampling.HemisphereSampling;
 import dev.strahl.scene.SceneException;
 import dev.strahl.scene.SceneSettings;
+import dev.strahl.scene.SceneSettings.Setting;
 import java.nio.file.Path;
+import java.util.EnumSet;
 import java.util.Objects;
 import java.util.Set;
 
 /**
  * How to start the viewer. A scene file's {@code film} and {@code integrator} keys replace the
  * values here, except those of the options named in {@code given}, which win as they do on the
- * command line ({@link #settingsFor}).
+ * command line, and except {@code spp}: the viewer renders until its own stop-at count
+ * ({@link #settingsFor}).
  *
  * @param scene      the scene file, or null for the default Cornell Box
  * @param width      film width in pixels at start-up (the film keeps this aspect when the window is resized)
@@ -34,8 +37,11 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
                             int threads, long seed, IntegratorKind integrator, int lightSamples, Theme theme, Set<Setting> given,
                             int photons, double photonRadius) {
 
-    /** The options that a scene file's {@code film} and {@code integrator} keys also set. */
-    public enum Setting { WIDTH, HEIGHT, MAX_DEPTH, HEMISPHERE, SEED, INTEGRATOR, LIGHT_SAMPLES }
+    /**
+     * The scene-file settings the viewer never takes from a file: its stop-at count is an
+     * interactive limit, not a sample budget, so a file's {@code spp} does not apply.
+     */
+    static final Set<Setting> NEVER_FROM_FILE = Set.of(Setting.SAMPLES_PER_PIXEL);
 
     public ViewerOptions {
         if (stopAt < 0) {
@@ -71,38 +77,16 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
     /**
      * The render settings for a scene loaded from {@code file}: its film size, integrator, max
      * depth, hemisphere sampling, light samples and seed replace these options' values, and the
-     * options in {@link #given} override the file again, as {@code strahl render} combines them.
-     * The file's {@code spp} is not used: the viewer renders until its own stop-at count.
+     * options in {@link #given} override the file again, as {@code strahl render} combines them
+     * ({@link RenderSettings#withSceneFile}, shared with it). The file's {@code spp} is not used
+     * ({@link #NEVER_FROM_FILE}): the viewer renders until its own stop-at count.
      *
      * @throws SceneException naming {@code file} if the file asks for an unknown integrator
      */
     RenderSettings settingsFor(Path file, SceneSettings sceneSettings) throws SceneException {
-        RenderSettings base = renderSettings();
-        RenderSettings s;
-        try {
-            s = base.withScene(sceneSettings).withSamplesPerPixel(base.samplesPerPixel());
-        } catch (IllegalArgumentException e) {
-            throw new SceneException(file, e.getMessage(), e);
-        }
-        if (given.contains(Setting.WIDTH) || given.contains(Setting.HEIGHT)) {
-            s = s.withSize(given.contains(Setting.WIDTH) ? width : s.width(), given.contains(Setting.HEIGHT) ? height : s.height());
-        }
-        if (given.contains(Setting.MAX_DEPTH)) {
-            s = s.withMaxDepth(maxDepth);
-        }
-        if (given.contains(Setting.HEMISPHERE)) {
-            s = s.withHemisphere(hemisphere);
-        }
-        if (given.contains(Setting.SEED)) {
-            s = s.withSeed(seed);
-        }
-        if (given.contains(Setting.INTEGRATOR)) {
-            s = s.withIntegrator(integrator);
-        }
-        if (given.contains(Setting.LIGHT_SAMPLES)) {
-            s = s.withLightSamples(lightSamples);
-        }
-        return s;
+        Set<Setting> kept = EnumSet.copyOf(NEVER_FROM_FILE);
+        kept.addAll(given);
+        return renderSettings().withSceneFile(file, sceneSettings, kept);
     }
 
     private static RenderSettings renderSettings(int width, int height, int maxDepth, HemisphereSampling hemisphere, int threads, long seed,

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import dev.strahl.integrator.IntegratorKind;
 import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.scene.SceneSettings;
 import java.awt.Dimension;
 import java.awt.GraphicsEnvironment;
 import java.awt.Point;
@@ -130,7 +131,7 @@ class ViewerEndToEndTest {
 
         // As 'strahl view a.json --integrator path': the option given wins over both files
         ViewerOptions options = new ViewerOptions(a, 512, 512, RenderController.UNLIMITED, -1, HemisphereSampling.COSINE, 0, 0,
-                IntegratorKind.PATH, 1, Theme.LIGHT, Set.of(ViewerOptions.Setting.INTEGRATOR));
+                IntegratorKind.PATH, 1, Theme.LIGHT, Set.of(SceneSettings.Setting.INTEGRATOR));
         Viewer viewer = Viewer.open(options);
         try {
             ViewerFrame ui = viewer.ui();

@@ -8,7 +8,7 @@ import dev.strahl.render.RenderSettings;
 import dev.strahl.sampling.HemisphereSampling;
 import dev.strahl.scene.SceneException;
 import dev.strahl.scene.SceneSettings;
-import dev.strahl.viewer.ViewerOptions.Setting;
+import dev.strahl.scene.SceneSettings.Setting;
 import java.awt.Dimension;
 import java.nio.file.Files;
 import java.nio.file.Path;

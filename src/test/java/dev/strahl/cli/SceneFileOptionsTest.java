@@ -1,0 +1,35 @@
+package dev.strahl.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import dev.strahl.scene.SceneSettings.Setting;
+import java.util.EnumSet;
+import java.util.HashSet;
+import org.junit.jupiter.api.Test;
+import picocli.CommandLine;
+
+/** The options that name a scene file's settings: one for every setting, and both commands have each of them. */
+class SceneFileOptionsTest {
+
+    @Test
+    void everySceneFileSettingHasOneOptionOnBothCommands() {
+        assertThat(new HashSet<>(SceneFileOptions.OPTIONS.values())).isEqualTo(EnumSet.allOf(Setting.class));
+        assertThat(SceneFileOptions.OPTIONS.values()).doesNotHaveDuplicates();
+        CommandLine main = Main.commandLine();
+        for (String command : new String[] {"render", "view"}) {
+            CommandLine.Model.CommandSpec spec = main.getSubcommands().get(command).getCommandSpec();
+            for (String option : SceneFileOptions.OPTIONS.keySet()) {
+                assertThat(spec.findOption(option)).as("%s %s", command, option).isNotNull();
+            }
+        }
+    }
+
+    @Test
+    void exactlyTheOptionsOnTheCommandLineAreGiven() {
+        CommandLine cl = Main.commandLine();
+        cl.parseArgs("render", "s.json", "-o", "x.png", "--spp", "64", "--hemisphere", "uniform", "--threads", "2");
+        assertThat(SceneFileOptions.given(cl.getSubcommands().get("render").getParseResult()))
+                .as("--spp at its default value still counts; --threads names no scene-file setting")
+                .containsExactlyInAnyOrder(Setting.SAMPLES_PER_PIXEL, Setting.HEMISPHERE);
+    }
+}
