@@ -21,7 +21,9 @@ final class SceneFileOptions {
             "--seed", Setting.SEED,
             "--integrator", Setting.INTEGRATOR,
             "--light-samples", Setting.LIGHT_SAMPLES,
-            "--hemisphere", Setting.HEMISPHERE);
+            "--hemisphere", Setting.HEMISPHERE,
+            "--photons", Setting.PHOTONS,
+            "--photon-radius", Setting.PHOTON_RADIUS);
 
     private SceneFileOptions() {
     }

@@ -267,7 +267,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      *
      * @param scene the scene file's settings ({@code scene.settings()})
      * @return the combined settings
-     * @throws IllegalArgumentException if the file names an unknown integrator
+     * @throws IllegalArgumentException if the file names an unknown integrator (or a value out of range,
+     *                                  which a scene file read by {@code SceneLoader} cannot hold)
      */
     public RenderSettings withScene(SceneSettings scene) {
         RenderSettings s = this;
@@ -292,6 +293,12 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         if (scene.integrator() != null) {
             s = s.withIntegrator(integratorNamed(scene.integrator()));
         }
+        if (scene.photons() != null) {
+            s = s.withPhotons(scene.photons());
+        }
+        if (scene.photonRadius() != null) {
+            s = s.withPhotonRadius(scene.photonRadius());
+        }
         return s;
     }
 
@@ -307,7 +314,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * @param scene the scene file's settings ({@code scene.settings()})
      * @param given the settings whose value here wins over the file's
      * @return the combined settings
-     * @throws SceneException naming {@code file} if the file names an unknown integrator
+     * @throws SceneException naming {@code file} if the file names an unknown integrator (or a value
+     *                        out of range, which a scene file read by {@code SceneLoader} cannot hold)
      */
     public RenderSettings withSceneFile(Path file, SceneSettings scene, Set<SceneSettings.Setting> given) throws SceneException {
         RenderSettings s;
@@ -336,6 +344,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
             case INTEGRATOR -> withIntegrator(from.integrator);
             case LIGHT_SAMPLES -> withLightSamples(from.lightSamples);
             case HEMISPHERE -> withHemisphere(from.hemisphere);
+            case PHOTONS -> withPhotons(from.photons);
+            case PHOTON_RADIUS -> withPhotonRadius(from.photonRadius);
         };
     }
 

@@ -40,10 +40,13 @@ final class JsonSceneReader {
             "triangles", Set.of("type", "positions", "indices", "normals", "material", "transform"));
     /** The largest film edge, as RenderSettings.MAX_SIZE (which lives above this layer). */
     static final int MAX_FILM = 1 << 15;
+    /** The most photons per iteration, as PhotonParameters.MAX_PHOTONS (which lives above this layer). */
+    static final int MAX_PHOTONS = 10_000_000;
     static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment");
     static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov");
     static final Set<String> FILM_KEYS = Set.of("width", "height");
-    static final Set<String> INTEGRATOR_KEYS = Set.of("type", "spp", "maxDepth", "seed", "lightSamples", "hemisphere");
+    static final Set<String> INTEGRATOR_KEYS = Set.of("type", "spp", "maxDepth", "seed", "lightSamples", "hemisphere", "photons",
+            "photonRadius");
 
     private final Path file;
     private final JsonValues v;
@@ -259,8 +262,9 @@ final class JsonSceneReader {
     }
 
     private SceneSettings settings(JsonNode film, JsonNode integrator) throws SceneException {
-        Integer width = null, height = null, spp = null, maxDepth = null, lightSamples = null;
+        Integer width = null, height = null, spp = null, maxDepth = null, lightSamples = null, photons = null;
         Long seed = null;
+        Double photonRadius = null;
         String type = null;
         HemisphereSampling hemisphere = null;
         if (film != null) {
@@ -289,7 +293,15 @@ final class JsonSceneReader {
                 }
                 hemisphere = h.equals("cosine") ? HemisphereSampling.COSINE : HemisphereSampling.UNIFORM;
             }
+            photons = i.containsKey("photons") ? v.integer(i.get("photons"), "integrator.photons", 1, MAX_PHOTONS) : null;
+            if (i.containsKey("photonRadius")) {
+                photonRadius = v.number(i.get("photonRadius"), "integrator.photonRadius");
+                if (!(photonRadius >= 0)) {
+                    throw new SceneException(file, i.get("photonRadius").line, "'integrator.photonRadius' must be >= 0 (0 = automatic), got "
+                            + JsonValues.format(photonRadius));
+                }
+            }
         }
-        return new SceneSettings(width, height, spp, maxDepth, seed, type, lightSamples, hemisphere);
+        return new SceneSettings(width, height, spp, maxDepth, seed, type, lightSamples, hemisphere, photons, photonRadius);
     }
 }

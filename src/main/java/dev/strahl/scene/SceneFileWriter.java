@@ -82,7 +82,7 @@ final class SceneFileWriter {
             g.writeEndObject();
         }
         if (s.integrator() == null && s.samplesPerPixel() == null && s.maxDepth() == null && s.seed() == null
-                && s.lightSamples() == null && s.hemisphere() == null) {
+                && s.lightSamples() == null && s.hemisphere() == null && s.photons() == null && s.photonRadius() == null) {
             return;
         }
         g.writeObjectFieldStart("integrator");
@@ -103,6 +103,12 @@ final class SceneFileWriter {
         }
         if (s.hemisphere() != null) {
             g.writeStringField("hemisphere", s.hemisphere().name().toLowerCase(java.util.Locale.ROOT));
+        }
+        if (s.photons() != null) {
+            g.writeNumberField("photons", s.photons());
+        }
+        if (s.photonRadius() != null) {
+            g.writeNumberField("photonRadius", s.photonRadius());
         }
         g.writeEndObject();
     }

@@ -17,9 +17,12 @@ import dev.strahl.sampling.HemisphereSampling;
  * @param integrator      the integrator's name ("path", "direct", "whitted", ...), or null
  * @param lightSamples    shadow rays per hit for the direct and Whitted integrators, or null
  * @param hemisphere      how diffuse bounces are sampled, or null
+ * @param photons         photons per iteration for the photon mapper, or null
+ * @param photonRadius    the photon mapper's initial gather radius in scene units (0 = automatic), or null
  */
 public record SceneSettings(Integer width, Integer height, Integer samplesPerPixel, Integer maxDepth, Long seed,
-                            String integrator, Integer lightSamples, HemisphereSampling hemisphere) {
+                            String integrator, Integer lightSamples, HemisphereSampling hemisphere,
+                            Integer photons, Double photonRadius) {
 
     /**
      * The settings a scene file can give, one per field. A command line names the ones it gives
@@ -41,11 +44,32 @@ public record SceneSettings(Integer width, Integer height, Integer samplesPerPix
         /** {@code integrator.lightSamples} */
         LIGHT_SAMPLES,
         /** {@code integrator.hemisphere} */
-        HEMISPHERE
+        HEMISPHERE,
+        /** {@code integrator.photons} */
+        PHOTONS,
+        /** {@code integrator.photonRadius} */
+        PHOTON_RADIUS
     }
 
     /** Settings that say nothing (a scene built in code, an OBJ, a PLY). */
-    public static final SceneSettings NONE = new SceneSettings(null, null, null, null, null, null, null, null);
+    public static final SceneSettings NONE = new SceneSettings(null, null, null, null, null, null, null, null, null, null);
+
+    /**
+     * Settings that say nothing about the photon mapper's parameters.
+     *
+     * @param width           film width in pixels, or null
+     * @param height          film height in pixels, or null
+     * @param samplesPerPixel samples per pixel, or null
+     * @param maxDepth        path segments including the camera segment (-1 unbounded), or null
+     * @param seed            the random seed, or null
+     * @param integrator      the integrator's name, or null
+     * @param lightSamples    shadow rays per hit for the direct and Whitted integrators, or null
+     * @param hemisphere      how diffuse bounces are sampled, or null
+     */
+    public SceneSettings(Integer width, Integer height, Integer samplesPerPixel, Integer maxDepth, Long seed,
+                         String integrator, Integer lightSamples, HemisphereSampling hemisphere) {
+        this(width, height, samplesPerPixel, maxDepth, seed, integrator, lightSamples, hemisphere, null, null);
+    }
 
     /**
      * Whether no field is given.

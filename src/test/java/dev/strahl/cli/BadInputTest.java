@@ -177,6 +177,9 @@ class BadInputTest {
                     + sphere + " ]\n}\n"), scene("$IN/s.json"), "$IN/s.json:2: ", "albedo"),
             refused("JSON infinite number", files("s.json", "{\n \"materials\": { \"m\": { \"type\": \"diffuse\" } },\n \"shapes\": [\n  "
                     + sphere.replace("\"radius\": 1", "\"radius\": 1e999") + " ]\n}\n"), scene("$IN/s.json"), "$IN/s.json:4: ", "radius"),
+            refused("JSON photons out of range", files("s.json", "{\n \"integrator\": { \"type\": \"photon\", \"photons\": 0 },\n"
+                    + " \"materials\": { \"m\": { \"type\": \"diffuse\" } },\n \"shapes\": [ " + sphere + " ]\n}\n"), scene("$IN/s.json"),
+                    "$IN/s.json:2: ", "'integrator.photons' must be in [1, 10000000], got 0"),
             refused("JSON without geometry", files("s.json", "{\n \"shapes\": [ ]\n}\n"), scene("$IN/s.json"), "$IN/s.json:2: ", "no geometry"),
             refused("JSON naming a broken OBJ", files("s.json", "{ \"shapes\": [ { \"type\": \"mesh\", \"file\": \"t.obj\" } ] }\n",
                     "t.obj", SQUARE + "f 1 2 9\n"), scene("$IN/s.json"), "$IN/t.obj:5: ", "vertex index 9 out of range"),

@@ -5,6 +5,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -15,13 +17,44 @@ class RenderSceneSettingsTest {
     Path dir;
 
     private Path scene(String integrator) throws Exception {
-        Files.copy(Path.of("scenes", "cornell-box.obj"), dir.resolve("cornell-box.obj"));
-        Files.copy(Path.of("scenes", "cornell-box.mtl"), dir.resolve("cornell-box.mtl"));
-        return Files.writeString(dir.resolve("s.json"), """
+        return scene("s.json", integrator);
+    }
+
+    private Path scene(String name, String integrator) throws Exception {
+        if (!Files.exists(dir.resolve("cornell-box.obj"))) {
+            Files.copy(Path.of("scenes", "cornell-box.obj"), dir.resolve("cornell-box.obj"));
+            Files.copy(Path.of("scenes", "cornell-box.mtl"), dir.resolve("cornell-box.mtl"));
+        }
+        return Files.writeString(dir.resolve(name), """
                 { "film": { "width": 24, "height": 10 },
                   "integrator": %s,
                   "shapes": [ { "type": "mesh", "file": "cornell-box.obj" } ] }
                 """.formatted(integrator));
+    }
+
+    /** The PFM that {@code strahl render} writes for {@code file} with {@code options}. */
+    private byte[] render(Path file, String name, String... options) throws Exception {
+        Path out = dir.resolve(name + ".pfm");
+        List<String> args = new ArrayList<>(List.of("render", file.toString(), "-o", out.toString(), "--threads", "2"));
+        args.addAll(List.of(options));
+        var run = RenderCommandTest.strahl(args.toArray(String[]::new));
+        assertThat(run.code()).as(run.err()).isZero();
+        return Files.readAllBytes(out);
+    }
+
+    @Test
+    void thePhotonKeysOfTheFileAreUsedAndTheOptionsOverrideThem() throws Exception {
+        Path keys = scene("keys.json", "{ \"type\": \"photon\", \"spp\": 1, \"photons\": 2000, \"photonRadius\": 0.1 }");
+        Path plain = scene("plain.json", "{ \"type\": \"photon\", \"spp\": 1 }");
+        byte[] fromFile = render(keys, "a");
+        assertThat(fromFile).as("the file's keys are the options' values")
+                .isEqualTo(render(plain, "b", "--photons", "2000", "--photon-radius", "0.1"));
+        byte[] morePhotons = render(keys, "c", "--photons", "3000");
+        assertThat(morePhotons).as("--photons wins, the file's radius stays")
+                .isEqualTo(render(plain, "d", "--photons", "3000", "--photon-radius", "0.1")).isNotEqualTo(fromFile);
+        byte[] widerRadius = render(keys, "e", "--photon-radius", "0.2");
+        assertThat(widerRadius).as("--photon-radius wins, the file's photons stay")
+                .isEqualTo(render(plain, "f", "--photons", "2000", "--photon-radius", "0.2")).isNotEqualTo(fromFile);
     }
 
     @Test

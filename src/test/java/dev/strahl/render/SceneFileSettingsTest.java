@@ -25,8 +25,8 @@ import org.junit.jupiter.api.Test;
 class SceneFileSettingsTest {
     static final Path FILE = Path.of("s.json");
     /** A file that sets every key, each to a value unlike the command line's below. */
-    static final SceneSettings EVERY_KEY = new SceneSettings(320, 160, 8, 3, 42L, "direct", 4, HemisphereSampling.UNIFORM);
-    /** A command line with a value for every setting and for settings a file cannot give (threads, culling, ...). */
+    static final SceneSettings EVERY_KEY = new SceneSettings(320, 160, 8, 3, 42L, "direct", 4, HemisphereSampling.UNIFORM, 2000, 0.1);
+    /** A command line with a value for every setting and for settings a file cannot give (threads, culling, pass size, time limit). */
     static final RenderSettings COMMAND_LINE = RenderSettings.defaults().withSize(200, 100).withSamplesPerPixel(256).withMaxDepth(5)
             .withSeed(9).withIntegrator(IntegratorKind.WHITTED).withLightSamples(2).withHemisphere(HemisphereSampling.COSINE)
             .withThreads(3).withCullBackFaces(true).withSamplesPerPass(2).withTimeLimit(Duration.ofSeconds(7))
@@ -41,14 +41,17 @@ class SceneFileSettingsTest {
             Setting.SEED, RenderSettings::seed,
             Setting.INTEGRATOR, RenderSettings::integrator,
             Setting.LIGHT_SAMPLES, RenderSettings::lightSamples,
-            Setting.HEMISPHERE, RenderSettings::hemisphere));
+            Setting.HEMISPHERE, RenderSettings::hemisphere,
+            Setting.PHOTONS, RenderSettings::photons,
+            Setting.PHOTON_RADIUS, RenderSettings::photonRadius));
 
     @Test
     void withNothingGivenTheFileReplacesEverySettingItHas() throws Exception {
         RenderSettings s = COMMAND_LINE.withSceneFile(FILE, EVERY_KEY, Set.of());
         assertThat(s).isEqualTo(COMMAND_LINE.withScene(EVERY_KEY));
         assertThat(s).isEqualTo(COMMAND_LINE.withSize(320, 160).withSamplesPerPixel(8).withMaxDepth(3).withSeed(42)
-                .withIntegrator(IntegratorKind.DIRECT).withLightSamples(4).withHemisphere(HemisphereSampling.UNIFORM));
+                .withIntegrator(IntegratorKind.DIRECT).withLightSamples(4).withHemisphere(HemisphereSampling.UNIFORM)
+                .withPhotons(2000).withPhotonRadius(0.1));
         assertThat(COMMAND_LINE.withSceneFile(FILE, SceneSettings.NONE, Set.of())).as("a file that says nothing").isEqualTo(COMMAND_LINE);
     }
 
@@ -82,9 +85,17 @@ class SceneFileSettingsTest {
             assertThat(s.cullBackFaces()).isTrue();
             assertThat(s.samplesPerPass()).isEqualTo(2);
             assertThat(s.timeLimit()).isEqualTo(Duration.ofSeconds(7));
-            assertThat(s.photons()).isEqualTo(5000);
-            assertThat(s.photonRadius()).isEqualTo(0.25);
         }
+    }
+
+    @Test
+    void thePhotonKeysApplyLikeTheOthers() throws Exception {
+        SceneSettings photonOnly = new SceneSettings(null, null, null, null, null, "photon", null, null, 30_000, null);
+        RenderSettings s = COMMAND_LINE.withSceneFile(FILE, photonOnly, Set.of());
+        assertThat(s.integrator()).isEqualTo(IntegratorKind.PHOTON);
+        assertThat(s.photons()).isEqualTo(30_000);
+        assertThat(s.photonRadius()).as("the file says nothing: the command line's").isEqualTo(0.25);
+        assertThat(COMMAND_LINE.withSceneFile(FILE, photonOnly, Set.of(Setting.PHOTONS)).photons()).as("--photons given").isEqualTo(5000);
     }
 
     @Test

@@ -32,7 +32,7 @@ class SceneFileFormatTest {
               "camera": { "lookFrom": [0, 1, 5], "lookAt": [0, 1, 0], "up": [0, 1, 0], "fov": 35 },
               "film": { "width": 320, "height": 200 },
               "integrator": { "type": "direct", "spp": 12, "maxDepth": 3, "seed": 9007199254740993, "lightSamples": 4,
-                              "hemisphere": "uniform" },
+                              "hemisphere": "uniform", "photons": 2500, "photonRadius": 0.05 },
               "materials": {
                 "lamp":  { "type": "diffuse", "albedo": [0.5, 0.5, 0.5], "emission": [8, 7, 6] },
                 "white": { "type": "diffuse", "albedo": [0.7, 0.7, 0.7] },
@@ -77,7 +77,8 @@ class SceneFileFormatTest {
     @Test
     void everyKeyIsRead() throws Exception {
         Scene scene = SceneLoader.load(everyKey());
-        assertThat(scene.settings()).isEqualTo(new SceneSettings(320, 200, 12, 3, 9007199254740993L, "direct", 4, HemisphereSampling.UNIFORM));
+        assertThat(scene.settings()).isEqualTo(new SceneSettings(320, 200, 12, 3, 9007199254740993L, "direct", 4, HemisphereSampling.UNIFORM,
+                2500, 0.05));
         assertThat(scene.camera().fovDegrees()).isEqualTo(35);
         assertThat(scene.environment()).isEqualTo(new Rgb(0.1, 0.2, 0.3));
         Geometry g = scene.geometry();
@@ -108,7 +109,7 @@ class SceneFileFormatTest {
         RenderSettings s = RenderSettings.defaults().withThreads(3).withScene(scene.settings());
         assertThat(s).isEqualTo(RenderSettings.defaults().withThreads(3).withSize(320, 200).withSamplesPerPixel(12).withMaxDepth(3)
                 .withSeed(9007199254740993L).withIntegrator(IntegratorKind.DIRECT).withLightSamples(4)
-                .withHemisphere(HemisphereSampling.UNIFORM));
+                .withHemisphere(HemisphereSampling.UNIFORM).withPhotons(2500).withPhotonRadius(0.05));
         assertThat(RenderSettings.defaults().withScene(SceneSettings.NONE)).isEqualTo(RenderSettings.defaults());
         RenderSettings halfGiven = RenderSettings.defaults().withScene(new SceneSettings(100, null, null, null, null, null, null, null));
         assertThat(halfGiven.width()).isEqualTo(100);
@@ -119,13 +120,36 @@ class SceneFileFormatTest {
     }
 
     @Test
+    void photonKeysAreOptionalAndAWholeRadiusIsANumber() throws Exception {
+        write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        String shapes = "\"shapes\": [ { \"type\": \"mesh\", \"file\": \"tri.obj\" } ] }";
+        SceneSettings s = JsonSceneReader.parse(write("p.json", "{ \"integrator\": { \"type\": \"photon\", \"photonRadius\": 1 }, " + shapes)).settings();
+        assertThat(s.integrator()).isEqualTo("photon");
+        assertThat(s.photons()).as("not given").isNull();
+        assertThat(s.photonRadius()).isEqualTo(1.0);
+        assertThat(RenderSettings.defaults().withScene(s).photonParameters())
+                .isEqualTo(new dev.strahl.integrator.PhotonParameters(dev.strahl.integrator.PhotonParameters.DEFAULT_PHOTONS, 1.0));
+        SceneSettings limits = JsonSceneReader.parse(write("q.json", "{ \"integrator\": { \"photons\": 10000000, \"photonRadius\": 0 }, "
+                + shapes)).settings();
+        assertThat(limits.photons()).isEqualTo(10_000_000);
+        assertThat(limits.photonRadius()).isEqualTo(0.0);
+        assertThat(RenderSettings.defaults().withScene(limits).photons()).isEqualTo(10_000_000);
+    }
+
+    @Test
+    void theReadersLimitsAreThoseOfTheLayersAbove() {
+        assertThat(JsonSceneReader.MAX_FILM).isEqualTo(RenderSettings.MAX_SIZE);
+        assertThat(JsonSceneReader.MAX_PHOTONS).isEqualTo(dev.strahl.integrator.PhotonParameters.MAX_PHOTONS);
+    }
+
+    @Test
     void everyKeyRoundTripsThroughTheWriter() throws Exception {
         SceneDescription original = JsonSceneReader.parse(everyKey());
         String written = SceneFileWriter.write(original);
         SceneDescription again = JsonSceneReader.parse(write("again.json", written));
         assertThat(again).isEqualTo(original);
         for (String key : List.of("camera", "lookFrom", "lookAt", "up", "fov", "film", "width", "height", "integrator", "type", "spp",
-                "maxDepth", "seed", "lightSamples", "hemisphere", "materials", "albedo", "emission", "reflectance", "ior",
+                "maxDepth", "seed", "lightSamples", "hemisphere", "photons", "photonRadius", "materials", "albedo", "emission", "reflectance", "ior",
                 "diffuse", "specular", "exponent", "shapes", "file", "material", "transform", "scale", "rotate", "axis", "degrees",
                 "translate", "positions", "indices", "normals", "center", "radius", "environment")) {
             assertThat(written).as("key %s", key).contains("\"" + key + "\"");
@@ -168,7 +192,8 @@ class SceneFileFormatTest {
             bad(3, "\"film\": { \"width\": 64.5 },", "'film.width' must be a whole number, got 64.5"),
             bad(3, "\"film\": { \"height\": 0 },", "'film.height' must be in [1, 32768], got 0"),
             bad(3, "\"film\": { \"width\": \"wide\" },", "'film.width' must be a number, got a string"),
-            bad(3, "\"integrator\": { \"samples\": 4 },", "unknown key 'samples' in integrator (known: hemisphere, lightSamples, maxDepth, seed, spp, type)"),
+            bad(3, "\"integrator\": { \"samples\": 4 },",
+                    "unknown key 'samples' in integrator (known: hemisphere, lightSamples, maxDepth, photonRadius, photons, seed, spp, type)"),
             bad(3, "\"integrator\": { \"spp\": 0 },", "'integrator.spp' must be >= 1, got 0"),
             bad(3, "\"integrator\": { \"maxDepth\": 0 },", "'integrator.maxDepth' must be -1 (unbounded) or >= 1, got 0"),
             bad(3, "\"integrator\": { \"maxDepth\": -2 },", "'integrator.maxDepth' must be >= -1, got -2"),
@@ -176,6 +201,13 @@ class SceneFileFormatTest {
             bad(3, "\"integrator\": { \"lightSamples\": 0 },", "'integrator.lightSamples' must be >= 1, got 0"),
             bad(3, "\"integrator\": { \"hemisphere\": \"stratified\" },", "'integrator.hemisphere' must be \"cosine\" or \"uniform\", got 'stratified'"),
             bad(3, "\"integrator\": { \"type\": 3 },", "'integrator.type' must be a string, got a number"),
+            bad(3, "\"integrator\": { \"photons\": 0 },", "'integrator.photons' must be in [1, 10000000], got 0"),
+            bad(3, "\"integrator\": { \"photons\": 10000001 },", "'integrator.photons' must be in [1, 10000000], got 10000001"),
+            bad(3, "\"integrator\": { \"photons\": 2.5 },", "'integrator.photons' must be a whole number, got 2.5"),
+            bad(3, "\"integrator\": { \"photons\": \"many\" },", "'integrator.photons' must be a number, got a string"),
+            bad(3, "\"integrator\": { \"photonRadius\": -0.1 },", "'integrator.photonRadius' must be >= 0 (0 = automatic), got -0.1"),
+            bad(3, "\"integrator\": { \"photonRadius\": 1e999 },", "'integrator.photonRadius' must be finite, got Infinity"),
+            bad(3, "\"integrator\": { \"photonRadius\": [0.1] },", "'integrator.photonRadius' must be a number, got an array"),
             shape("{ \"type\": \"triangles\", \"positions\": [0, 0, 0, 1, 0], \"indices\": [0, 1, 2], \"material\": \"m\" }",
                     "'shapes[].positions' must hold x, y, z triples, got 5 numbers"),
             shape("{ \"type\": \"triangles\", \"positions\": [0, 0, 0, 1, 0, 0, 0, 1, 0], \"indices\": [0, 1, 3], \"material\": \"m\" }",
