@@ -2,8 +2,9 @@ package dev.strahl.cli;
 
 import dev.strahl.film.Film;
 import java.util.Locale;
+import java.util.function.LongSupplier;
 
-/** Refuses a film that cannot fit in the Java heap before anything is allocated. */
+/** Refuses a film that cannot fit in the Java heap before anything is allocated ({@code render}, and {@code view} for every scene it shows). */
 final class HeapCheck {
     /**
      * Bytes per pixel besides the film's sums and counts: the mean image handed out after each
@@ -36,10 +37,29 @@ final class HeapCheck {
         }
     }
 
-    /** Checks against the running JVM's heap. */
+    /**
+     * Checks against the running JVM's heap. What the heap has in use may be mostly garbage (a
+     * viewer that has shown many frames), so a film that does not seem to fit is measured once more
+     * after a collection before it is refused.
+     */
     static void checkFilm(int width, int height) {
         Runtime rt = Runtime.getRuntime();
-        checkFilm(width, height, rt.maxMemory(), rt.totalMemory() - rt.freeMemory());
+        checkFilm(width, height, rt.maxMemory(), () -> rt.totalMemory() - rt.freeMemory(), System::gc);
+    }
+
+    /**
+     * Throws if a {@code width}×{@code height} render cannot fit in what the heap has left, asking
+     * {@code collect} to free garbage and measuring again before it gives up.
+     *
+     * @param heapMax  the heap's maximum
+     * @param heapUsed bytes in use now
+     * @param collect  frees what it can (a garbage collection)
+     */
+    static void checkFilm(int width, int height, long heapMax, LongSupplier heapUsed, Runnable collect) {
+        if (filmBytes(width, height) > heapMax - heapUsed.getAsLong()) {
+            collect.run();
+        }
+        checkFilm(width, height, heapMax, heapUsed.getAsLong());
     }
 
     /** 1536 → "1.5 KiB", binary units as -Xmx counts them. */

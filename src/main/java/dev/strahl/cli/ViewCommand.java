@@ -80,7 +80,7 @@ final class ViewCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         try {
-            Viewer.open(options()).awaitClosed();
+            Viewer.open(options(), HeapCheck::checkFilm).awaitClosed();   // refuses a film too large for the heap, as render does
             return 0;
         } catch (SceneException | IllegalArgumentException e) {
             err.println("strahl: " + e.getMessage());

@@ -20,7 +20,8 @@ import javax.swing.filechooser.FileNameExtensionFilter;
 /**
  * Opening a scene and saving the image. Files are read and written on background threads
  * ({@link SwingWorker}); errors become a dialog with the one-line message, and a scene that fails
- * to load (or asks for settings that cannot be applied) leaves the current one on screen.
+ * to load (or asks for settings that cannot be applied, or for a film the heap cannot hold) leaves
+ * the current one on screen.
  */
 final class FileActions {
     /** Loads a scene file with the settings it is to be shown with ({@link SceneFiles#open}). */
@@ -83,7 +84,9 @@ final class FileActions {
                     status.accept("Opened " + file.getFileName());
                 } catch (ExecutionException e) {
                     Throwable cause = e.getCause();
-                    String text = cause instanceof SceneException ? cause.getMessage() : file + ": " + cause;
+                    String text = cause instanceof SceneException ? cause.getMessage()
+                            : cause instanceof IllegalArgumentException ? file + ": " + cause.getMessage()   // e.g. a film too large for the heap
+                            : file + ": " + cause;
                     status.accept("Could not open " + file.getFileName());
                     JOptionPane.showMessageDialog(frame, text, "Cannot open scene", JOptionPane.ERROR_MESSAGE);
                 } catch (InterruptedException e) {

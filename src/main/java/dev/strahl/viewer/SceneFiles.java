@@ -31,11 +31,18 @@ final class SceneFiles {
      */
     record Opened(Path file, Scene scene, RenderSettings settings) {}
 
-    /** Loads {@code file} (the default scene when it is null) and combines its settings with {@code options}. */
-    static Opened open(Path file, ViewerOptions options) throws SceneException {
+    /**
+     * Loads {@code file} (the default scene when it is null), combines its settings with
+     * {@code options} and checks the film size they ask for with {@code filmCheck}.
+     *
+     * @throws IllegalArgumentException if the film size fails {@code filmCheck}
+     */
+    static Opened open(Path file, ViewerOptions options, Viewer.FilmCheck filmCheck) throws SceneException {
         Path f = file != null ? file : defaultScene();
         Scene scene = SceneLoader.load(f);
-        return new Opened(f, scene, options.settingsFor(f, scene.settings()));
+        RenderSettings settings = options.settingsFor(f, scene.settings());
+        filmCheck.check(settings.width(), settings.height());
+        return new Opened(f, scene, settings);
     }
 
     /** The file of the default scene. */

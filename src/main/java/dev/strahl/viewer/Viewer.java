@@ -39,13 +39,46 @@ public final class Viewer {
     }
 
     /**
-     * Loads the scene, starts rendering and opens the window. Call from any thread but the event
-     * dispatch thread.
+     * Refuses a film size before the viewer allocates a film of it: at start-up and for every
+     * scene opened from the window, with the size its settings ask for. {@code strahl view} passes
+     * the heap check of the command line, so that the viewer refuses what {@code strahl render}
+     * refuses.
+     */
+    @FunctionalInterface
+    public interface FilmCheck {
+        /** Accepts every size. */
+        FilmCheck NONE = (width, height) -> { };
+
+        /**
+         * Returns if a film of this size may be rendered.
+         *
+         * @throws IllegalArgumentException with the one-line reason if it may not
+         */
+        void check(int width, int height);
+    }
+
+    /**
+     * Loads the scene, starts rendering and opens the window, with no check of the film size
+     * ({@link FilmCheck#NONE}).
      *
      * @throws SceneException    if the scene cannot be loaded or asks for an unknown integrator (nothing is opened then)
      * @throws HeadlessException if there is no display
      */
     public static Viewer open(ViewerOptions options) throws SceneException {
+        return open(options, FilmCheck.NONE);
+    }
+
+    /**
+     * Loads the scene, starts rendering and opens the window. Call from any thread but the event
+     * dispatch thread. Every scene, the first and those opened from the window, passes
+     * {@code filmCheck} with the film size its settings ask for before anything is rendered; a
+     * scene opened from the window that fails it gives the error dialog and leaves the current one.
+     *
+     * @throws SceneException           if the scene cannot be loaded or asks for an unknown integrator (nothing is opened then)
+     * @throws IllegalArgumentException if the film size fails {@code filmCheck} (nothing is opened then)
+     * @throws HeadlessException        if there is no display
+     */
+    public static Viewer open(ViewerOptions options, FilmCheck filmCheck) throws SceneException {
         if (GraphicsEnvironment.isHeadless()) {
             throw new HeadlessException("the viewer needs a display (DISPLAY is not set, or java.awt.headless is true)");
         }
@@ -53,7 +86,7 @@ public final class Viewer {
             throw new IllegalStateException("Viewer.open must not be called on the event dispatch thread");
         }
         mark("opening");
-        SceneFiles.Opened opened = SceneFiles.open(options.scene(), options);
+        SceneFiles.Opened opened = SceneFiles.open(options.scene(), options, filmCheck);
         FramePresenter presenter = new FramePresenter();
         RenderController controller = RenderController.rendering(opened.scene(), opened.settings(), options.stopAt(), presenter);
         Viewer viewer = new Viewer(controller, presenter);
@@ -63,7 +96,7 @@ public final class Viewer {
         mark("scene loaded");
         controller.startBeforeDisplay();      // a first small image while the window is being built
         try {
-            SwingUtilities.invokeAndWait(() -> viewer.createWindow(options, opened));
+            SwingUtilities.invokeAndWait(() -> viewer.createWindow(options, filmCheck, opened));
         } catch (InvocationTargetException e) {
             viewer.close();
             if (e.getCause() instanceof Error error) {
@@ -85,11 +118,11 @@ public final class Viewer {
         }
     }
 
-    private void createWindow(ViewerOptions options, SceneFiles.Opened opened) {
+    private void createWindow(ViewerOptions options, FilmCheck filmCheck, SceneFiles.Opened opened) {
         mark("building the window");
         options.theme().install();
         mark("look and feel installed");
-        ViewerFrame frame = new ViewerFrame(controller, presenter, opened, file -> SceneFiles.open(file, options), this::close);
+        ViewerFrame frame = new ViewerFrame(controller, presenter, opened, file -> SceneFiles.open(file, options, filmCheck), this::close);
         if (TRACE) {
             AtomicBoolean first = new AtomicBoolean(true);
             frame.image.onPainted(shown -> {

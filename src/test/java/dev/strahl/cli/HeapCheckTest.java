@@ -30,6 +30,32 @@ class HeapCheckTest {
     }
 
     @Test
+    void garbageIsCollectedBeforeAFilmIsRefusedAndOnlyThen() {
+        int[] collections = {0};
+        long[] used = {1900L << 20};
+        Runnable collect = () -> {
+            collections[0]++;
+            used[0] = 100L << 20;               // most of what was in use was garbage
+        };
+        HeapCheck.checkFilm(4096, 4096, 2 * GIB, () -> used[0], collect);
+        assertThat(collections[0]).as("did not fit at first: one collection, then it fits").isEqualTo(1);
+
+        HeapCheck.checkFilm(4096, 4096, 2 * GIB, () -> used[0], collect);
+        assertThat(collections[0]).as("fits at once: no collection").isEqualTo(1);
+
+        assertThatThrownBy(() -> HeapCheck.checkFilm(8000, 8000, GIB, () -> 24L << 20, collect))
+                .as("still too large after the collection: refused with what the heap has then")
+                .hasMessageContaining("1000.0 MiB free");
+        assertThat(collections[0]).isEqualTo(2);
+    }
+
+    @Test
+    void theRunningHeapIsChecked() {
+        HeapCheck.checkFilm(16, 16);
+        assertThatThrownBy(() -> HeapCheck.checkFilm(30000, 30000)).hasMessageStartingWith("a 30000x30000 image needs ");
+    }
+
+    @Test
     void bytesAreWrittenInBinaryUnits() {
         assertThat(HeapCheck.bytes(512)).isEqualTo("512 bytes");
         assertThat(HeapCheck.bytes(1536)).isEqualTo("1.5 KiB");

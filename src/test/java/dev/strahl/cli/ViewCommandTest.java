@@ -1,17 +1,26 @@
 package dev.strahl.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import dev.strahl.integrator.IntegratorKind;
 import dev.strahl.sampling.HemisphereSampling;
 import dev.strahl.scene.SceneSettings.Setting;
 import dev.strahl.viewer.ViewerOptions;
+import java.awt.GraphicsEnvironment;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.EnumSet;
+import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
 
-/** {@code strahl view}'s options, without opening a window: which of them win over a scene file's settings. */
+/**
+ * {@code strahl view}'s options, without opening a window: which of them win over a scene file's
+ * settings, and a film too large for the heap refused before anything starts.
+ */
 class ViewCommandTest {
 
     static ViewerOptions parse(String... args) {
@@ -47,5 +56,34 @@ class ViewCommandTest {
 
         assertThat(parse("view", "--max-depth", "-1").given()).as("given at its default value is still given")
                 .containsExactly(Setting.MAX_DEPTH);
+    }
+
+    /**
+     * The heap check of {@code render} refuses a film too large for the heap before the viewer
+     * starts anything, as one line with exit code 2. Needs a display (without one, {@code view}
+     * stops earlier with exit code 1).
+     */
+    @Test
+    @Timeout(value = 60, unit = TimeUnit.SECONDS)                   // without the check, the viewer would open and wait
+    void aFilmTooLargeForTheHeapIsOneLineAndExitCode2(@TempDir Path dir) throws Exception {
+        assumeTrue(!GraphicsEnvironment.isHeadless(), "no display (headless): run under xvfb-run to include this test");
+        assertRefused(RenderCommandTest.strahl("view", "--width", "30000", "--height", "30000"), "30000x30000");
+
+        Files.copy(Path.of("scenes", "cornell-box.obj"), dir.resolve("cornell-box.obj"));
+        Files.copy(Path.of("scenes", "cornell-box.mtl"), dir.resolve("cornell-box.mtl"));
+        Path huge = Files.writeString(dir.resolve("huge.json"), """
+                { "film": { "width": 30000, "height": 30000 }, "shapes": [ { "type": "mesh", "file": "cornell-box.obj" } ] }
+                """);
+        assertRefused(RenderCommandTest.strahl("view", huge.toString()), "30000x30000");
+        assertRefused(RenderCommandTest.strahl("view", huge.toString(), "--height", "20000"), "30000x20000");
+    }
+
+    private static void assertRefused(RenderCommandTest.Run run, String size) {
+        assertThat(run.code()).as(run.err()).isEqualTo(2);
+        assertThat(run.errLines()).hasSize(1);
+        assertThat(run.err()).startsWith("strahl: a " + size + " image needs ").contains("for its film and image buffers", "java -Xmx")
+                .doesNotContain("Exception");
+        assertThat(Thread.getAllStackTraces().keySet()).as("no render thread was started")
+                .noneMatch(t -> t.isAlive() && t.getName().startsWith("strahl-render"));
     }
 }

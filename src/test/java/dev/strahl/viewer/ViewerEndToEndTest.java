@@ -128,11 +128,17 @@ class ViewerEndToEndTest {
         Path b = scene(dir, "b.json", "\"film\": { \"width\": 64, \"height\": 64 },"
                 + " \"integrator\": { \"type\": \"whitted\", \"maxDepth\": 2, \"lightSamples\": 2 },");
         Path bad = scene(dir, "bad.json", "\"integrator\": { \"type\": \"bidir\" },");
+        Path huge = scene(dir, "huge.json", "\"film\": { \"width\": 30000, \"height\": 30000 },");
+        Viewer.FilmCheck atMost4k = (w, h) -> {          // stands in for the command line's heap check
+            if (w > 4096 || h > 4096) {
+                throw new IllegalArgumentException("a " + w + "x" + h + " image is too large");
+            }
+        };
 
         // As 'strahl view a.json --integrator path': the option given wins over both files
         ViewerOptions options = new ViewerOptions(a, 512, 512, RenderController.UNLIMITED, -1, HemisphereSampling.COSINE, 0, 0,
                 IntegratorKind.PATH, 1, Theme.LIGHT, Set.of(SceneSettings.Setting.INTEGRATOR));
-        Viewer viewer = Viewer.open(options);
+        Viewer viewer = Viewer.open(options, atMost4k);
         try {
             ViewerFrame ui = viewer.ui();
             RenderController c = viewer.controller();
@@ -164,25 +170,38 @@ class ViewerEndToEndTest {
 
             // --- settings that cannot be applied: a dialog, and the scene on screen stays -----------
             var before = c.scene();
-            SwingUtilities.invokeLater(() -> ui.files.openScene(bad));
-            AtomicReference<JDialog> dialog = new AtomicReference<>();
-            waitFor("the error dialog", 10, () -> {
-                for (Window w : Window.getWindows()) {
-                    if (w instanceof JDialog d && d.isShowing()) {
-                        dialog.set(d);
-                    }
-                }
-                return dialog.get() != null;
-            });
-            String message = onEdt(() -> String.valueOf(find(dialog.get(), JOptionPane.class).getMessage()));
-            SwingUtilities.invokeAndWait(dialog.get()::dispose);
-            assertThat(message).isEqualTo(bad + ": unknown integrator 'bidir' (known: "
+            assertThat(errorDialogOnOpening(ui, bad)).isEqualTo(bad + ": unknown integrator 'bidir' (known: "
                     + String.join(", ", Arrays.stream(IntegratorKind.values()).map(IntegratorKind::id).toList()) + ")");
             assertThat(c.scene()).isSameAs(before);
+            assertThat(onEdt(ui.frame::getTitle)).endsWith("b.json");
+
+            // --- a film that fails the film check: a dialog, nothing started, the scene stays --------
+            long lastGeneration = c.status().generation();
+            assertThat(errorDialogOnOpening(ui, huge)).isEqualTo(huge + ": a 30000x30000 image is too large");
+            assertThat(c.scene()).isSameAs(before);
+            assertThat(c.status().generation()).as("no job was started for huge.json").isEqualTo(lastGeneration);
+            assertThat(new Dimension(c.status().width(), c.status().height())).isEqualTo(new Dimension(64, 64));
             assertThat(onEdt(ui.frame::getTitle)).endsWith("b.json");
         } finally {
             viewer.close();
         }
+    }
+
+    /** Opens {@code file} from the window, waits for the error dialog, closes it and returns its message. */
+    private static String errorDialogOnOpening(ViewerFrame ui, Path file) throws Exception {
+        SwingUtilities.invokeLater(() -> ui.files.openScene(file));
+        AtomicReference<JDialog> dialog = new AtomicReference<>();
+        waitFor("the error dialog for " + file.getFileName(), 10, () -> {
+            for (Window w : Window.getWindows()) {
+                if (w instanceof JDialog d && d.isShowing()) {
+                    dialog.set(d);
+                }
+            }
+            return dialog.get() != null;
+        });
+        String message = onEdt(() -> String.valueOf(find(dialog.get(), JOptionPane.class).getMessage()));
+        SwingUtilities.invokeAndWait(dialog.get()::dispose);
+        return message;
     }
 
     private static Path scene(Path dir, String name, String settings) throws Exception {

@@ -152,13 +152,40 @@ class ViewerPartsTest {
                   "integrator": { "type": "direct", "maxDepth": 7, "spp": 3 },
                   "shapes": [ { "type": "mesh", "file": "cornell-box.obj" } ] }
                 """);
-        SceneFiles.Opened opened = SceneFiles.open(file, ViewerOptions.defaults());
+        List<Dimension> checked = new ArrayList<>();
+        SceneFiles.Opened opened = SceneFiles.open(file, ViewerOptions.defaults(), (w, h) -> checked.add(new Dimension(w, h)));
         assertThat(opened.file()).isEqualTo(file);
         assertThat(opened.settings().width()).isEqualTo(96);
         assertThat(opened.settings().height()).isEqualTo(48);
         assertThat(opened.settings().integrator()).isEqualTo(IntegratorKind.DIRECT);
         assertThat(opened.settings().maxDepth()).isEqualTo(7);
         assertThat(opened.scene().settings().samplesPerPixel()).isEqualTo(3);
+        assertThat(checked).as("the film check sees the size the settings ask for").containsExactly(new Dimension(96, 48));
+    }
+
+    @Test
+    void aFilmThatFailsTheCheckIsRefusedWithItsMessage() throws Exception {
+        Files.copy(Path.of("scenes", "cornell-box.obj"), dir.resolve("cornell-box.obj"));
+        Files.copy(Path.of("scenes", "cornell-box.mtl"), dir.resolve("cornell-box.mtl"));
+        Path huge = Files.writeString(dir.resolve("huge.json"), """
+                { "film": { "width": 30000, "height": 20000 }, "shapes": [ { "type": "mesh", "file": "cornell-box.obj" } ] }
+                """);
+        Viewer.FilmCheck atMost4k = (w, h) -> {
+            if (w > 4096 || h > 4096) {
+                throw new IllegalArgumentException("a " + w + "x" + h + " image is too large");
+            }
+        };
+        assertThatThrownBy(() -> SceneFiles.open(huge, ViewerOptions.defaults(), atMost4k))
+                .isInstanceOf(IllegalArgumentException.class).hasMessage("a 30000x20000 image is too large");
+        assertThat(SceneFiles.open(huge, options(Set.of(Setting.WIDTH, Setting.HEIGHT)), atMost4k).settings().width())
+                .as("--width and --height given win over the file's film, and pass").isEqualTo(200);
+        assertThatThrownBy(() -> SceneFiles.open(huge, options(Set.of(Setting.WIDTH)), atMost4k))
+                .as("--width alone keeps the file's height").hasMessage("a 200x20000 image is too large");
+        ViewerOptions wide = new ViewerOptions(null, 8000, 100, 256, 5, HemisphereSampling.COSINE, 2, 9, IntegratorKind.WHITTED, 2,
+                Theme.LIGHT, Set.of(Setting.WIDTH, Setting.HEIGHT));
+        assertThatThrownBy(() -> SceneFiles.open(huge, wide, atMost4k)).as("as --width 8000 --height 100")
+                .hasMessage("a 8000x100 image is too large");
+        assertThat(SceneFiles.open(huge, ViewerOptions.defaults(), Viewer.FilmCheck.NONE).settings().width()).isEqualTo(30000);
     }
 
     @Test
