@@ -37,8 +37,14 @@ public final class Bvh {
     private final float[] boxes;
     private final int[] children;
     private final int nodeCount;
+    /** Whether box tests take the Vector API path ({@link SimdNodes}). */
+    private final boolean simd;
 
     Bvh(Geometry geometry, float[] boxes, int[] children, int nodeCount) {
+        this(geometry, boxes, children, nodeCount, SimdNodes.AVAILABLE);
+    }
+
+    private Bvh(Geometry geometry, float[] boxes, int[] children, int nodeCount, boolean simd) {
         this.geometry = geometry;
         this.triangleCount = geometry.triangleCount();
         this.pos = geometry.positionArray();
@@ -47,6 +53,20 @@ public final class Bvh {
         this.boxes = boxes;
         this.children = children;
         this.nodeCount = nodeCount;
+        this.simd = simd;
+    }
+
+    /** The same tree with box tests on the Vector API path or not (for tests and benchmarks comparing the two). */
+    Bvh withSimd(boolean on) {
+        if (on && !SimdNodes.AVAILABLE) {
+            throw new IllegalStateException("the Vector API path needs --add-modules jdk.incubator.vector");
+        }
+        return new Bvh(geometry, boxes, children, nodeCount, on);
+    }
+
+    /** Whether box tests use the Vector API (the JVM runs with {@code --add-modules jdk.incubator.vector}). */
+    public boolean usesSimd() {
+        return simd;
     }
 
     /**
@@ -131,6 +151,7 @@ public final class Bvh {
         final float[] box = boxes;
         final int[] refs = stack.refs;
         final int[] dist = stack.dist;
+        final int[] lanes = stack.lanes;
         double tHit = ray.tMax;
         int tMax = bits(BvhBuilder.roundUp(tHit));
         int found = -1;
@@ -142,9 +163,16 @@ public final class Bvh {
                 int o = 24 * ref;
                 int c = 4 * ref;
                 int base = sp;
+                if (simd) {
+                    SimdNodes.entries(box, o, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax, MARGIN_ULPS, lanes);
+                } else {
+                    for (int k = 0; k < 4; k++) {
+                        lanes[k] = entry(box, o + k, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax);
+                    }
+                }
                 for (int k = 0; k < 4; k++) {
                     // Written always, kept only on a hit: no branch to mispredict.
-                    int t = entry(box, o + k, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax);
+                    int t = lanes[k];
                     refs[sp] = children[c + k];
                     dist[sp] = t;
                     sp += ~t >>> 31;
@@ -256,16 +284,23 @@ public final class Bvh {
         final int[] tri = this.tri;
         final float[] box = boxes;
         final int[] refs = stack.refs;
+        final int[] lanes = stack.lanes;
         int sp = 0;
         int ref = 0;
         while (true) {
             if (ref >= 0) {
                 int o = 24 * ref;
                 int c = 4 * ref;
+                if (simd) {
+                    SimdNodes.entries(box, o, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax, MARGIN_ULPS, lanes);
+                } else {
+                    for (int k = 0; k < 4; k++) {
+                        lanes[k] = entry(box, o + k, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax);
+                    }
+                }
                 for (int k = 0; k < 4; k++) {
-                    int t = entry(box, o + k, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax);
                     refs[sp] = children[c + k];
-                    sp += ~t >>> 31;
+                    sp += ~lanes[k] >>> 31;
                 }
             } else {
                 int first = leafFirst(ref), end = first + leafCount(ref);

@@ -12,6 +12,8 @@ public final class TraversalStack {
     final int[] refs = new int[Bvh.STACK_SIZE];
     /** Entry distances as float bits (non-negative floats order like their bits). */
     final int[] dist = new int[Bvh.STACK_SIZE];
+    /** The four children's entry distances (or -1) of the node being visited. */
+    final int[] lanes = new int[4];
 
     // Slab test: inverse direction, offsets of the near planes in a node, origin bounds for near and far planes.
     float ix, iy, iz;

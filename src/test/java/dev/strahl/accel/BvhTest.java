@@ -250,7 +250,13 @@ class BvhTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void closestHitEqualsBruteForce(Scene scene) {
-        Bvh bvh = Bvh.build(scene.geometry());
+        closestHitEqualsBruteForce(scene, false);
+        assertThat(SimdNodes.AVAILABLE).as("the tests run with the Vector API module, to cover its path too").isTrue();
+        closestHitEqualsBruteForce(scene, true);
+    }
+
+    private void closestHitEqualsBruteForce(Scene scene, boolean simd) {
+        Bvh bvh = Bvh.build(scene.geometry()).withSimd(simd);
         Geometry g = bvh.geometry();
         TraversalStack stack = Bvh.newStack();
         SplittableRandom random = new SplittableRandom(scene.name().hashCode() + g.primitiveCount());
@@ -264,8 +270,8 @@ class BvhTest {
                 Hit hb = new Hit().reset(), hf = new Hit().reset();
                 boolean expected = bruteIntersect(g, rf, hf, cull);
                 boolean actual = bvh.intersect(rb, hb, stack, cull);
-                String what = "%s, cull %s, ray %d %s";        // formatted only on failure
-                Object[] args = {scene, cull, i, r};
+                String what = "%s, simd %s, cull %s, ray %d %s";        // formatted only on failure
+                Object[] args = {scene, simd, cull, i, r};
                 assertThat(actual).as(what, args).isEqualTo(expected);
                 assertThat(rb.o).isEqualTo(r.o);
                 assertThat(rb.d).isEqualTo(r.d);
@@ -283,7 +289,7 @@ class BvhTest {
                     // A tie: the BVH's primitive alone must be hit at the same distance.
                     Hit alone = new Hit().reset();
                     assertThat(g.intersect(hb.prim, copy(r, r.tMax), alone, cull)).as(what, args).isTrue();
-                    assertThat(alone.t).as(what + ": prim %d vs brute force prim %d", scene, cull, i, r, hb.prim, hf.prim).isCloseTo(hf.t, within(1e-12 * hf.t));
+                    assertThat(alone.t).as(what + ": prim %d vs brute force prim %d", scene, simd, cull, i, r, hb.prim, hf.prim).isCloseTo(hf.t, within(1e-12 * hf.t));
                 } else {
                     assertThat(hb.b1).as(what, args).isEqualTo(hf.b1);
                     assertThat(hb.b2).as(what, args).isEqualTo(hf.b2);
@@ -296,7 +302,12 @@ class BvhTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void anyHitEqualsBruteForceForFiniteTMax(Scene scene) {
-        Bvh bvh = Bvh.build(scene.geometry());
+        anyHitEqualsBruteForceForFiniteTMax(scene, false);
+        anyHitEqualsBruteForceForFiniteTMax(scene, true);
+    }
+
+    private void anyHitEqualsBruteForceForFiniteTMax(Scene scene, boolean simd) {
+        Bvh bvh = Bvh.build(scene.geometry()).withSimd(simd);
         Geometry g = bvh.geometry();
         TraversalStack stack = Bvh.newStack();
         SplittableRandom random = new SplittableRandom(~scene.name().hashCode() + g.primitiveCount());
@@ -308,7 +319,7 @@ class BvhTest {
             double tMax = random.nextInt(8) == 0 ? Double.POSITIVE_INFINITY : random.nextDouble(0, 2 * Math.max(box.diagonal(), 0.1));
             boolean expected = bruteOccluded(g, copy(r, tMax));
             Ray rb = copy(r, tMax);
-            assertThat(bvh.occluded(rb, stack)).as("%s, ray %d %s, tMax %s", scene, i, r, tMax).isEqualTo(expected);
+            assertThat(bvh.occluded(rb, stack)).as("%s, simd %s, ray %d %s, tMax %s", scene, simd, i, r, tMax).isEqualTo(expected);
             assertThat(rb.tMax).as("occlusion queries leave the ray alone").isEqualTo(tMax);
             occluded += expected ? 1 : 0;
         }
