@@ -52,6 +52,8 @@ public final class RenderJob implements AutoCloseable {
     private volatile boolean cancelled;
     private volatile int completedSpp;
     private final long startNanos;
+    /** Stratified sample mode of {@link Rng} (the default), or plain streams with {@code -Dstrahl.sampler=independent}. */
+    private final boolean stratified = !"independent".equals(System.getProperty("strahl.sampler"));
 
     private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener) {
         this.settings = settings;
@@ -255,7 +257,11 @@ public final class RenderJob implements AutoCloseable {
                 for (int x = x0; x < x1; x++) {
                     int pixel = film.pixelIndex(x, y);
                     for (int s = firstSample; s < endSample; s++) {
-                        w.rng.seed(Rng.streamSeed(seed, x, y, s));
+                        if (stratified) {
+                            w.rng.startSample(seed, x, y, s);
+                        } else {
+                            w.rng.seed(Rng.streamSeed(seed, x, y, s));
+                        }
                         cameraRays.generate(x + w.rng.nextDouble(), y + w.rng.nextDouble(), w.ray);
                         w.integrator.radiance(w.ray, w.rng, w.radiance);
                         if (w.radiance.isFinite()) {
