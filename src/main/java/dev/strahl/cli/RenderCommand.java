@@ -86,6 +86,11 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = {"-q", "--quiet"}, description = "Print nothing but errors.")
     boolean quiet;
 
+    @Option(names = "--stats", paramLabel = "FILE.json", description = "Also write the render's figures (time, samples/s, rays/s, load and BVH build time) as JSON.")
+    Path statsFile;
+
+    private double loadSeconds;
+
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
@@ -95,7 +100,13 @@ final class RenderCommand implements Callable<Integer> {
                 throw new IllegalArgumentException("--fov: the field of view must be in (0, 180) degrees, got " + fov);
             }
             checkOutput();
+            Path statsDir = statsFile == null ? null : statsFile.toAbsolutePath().getParent();
+            if (statsDir != null && !Files.isDirectory(statsDir)) {
+                throw new IllegalArgumentException("--stats: directory does not exist: " + statsDir);
+            }
+            long loadStart = System.nanoTime();
             Scene loaded = SceneLoader.load(scene);
+            loadSeconds = (System.nanoTime() - loadStart) * 1e-9 - loaded.bvhBuildSeconds();
             Scene s = loaded.withCamera(camera(loaded.camera()));
             if (!quiet) {
                 for (String note : s.notes()) {
@@ -163,6 +174,14 @@ final class RenderCommand implements Callable<Integer> {
             }
         }
         ImageWriters.write(film, output);
+        if (statsFile != null) {
+            try {
+                StatsFile.write(statsFile, stats, settings, loadSeconds, s.bvhBuildSeconds());
+            } catch (IOException e) {
+                err.println("strahl: cannot write " + statsFile + ": " + e.getMessage());
+                return 1;
+            }
+        }
         if (!quiet) {
             err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %d spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
                     transport.integrator.id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
