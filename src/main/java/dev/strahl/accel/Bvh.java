@@ -11,10 +11,11 @@ import dev.strahl.geometry.Ray;
  * the hierarchy was built from. Immutable and shared by all render threads; each thread passes
  * its own {@link TraversalStack}.
  *
- * <p>Node i holds the boxes of its four children in {@code boxes[24i .. 24i+23]}, coordinate by
- * coordinate ({@code boxes[24i + 4k + c]} is coordinate k of child c, k = min x, min y, min z,
- * max x, max y, max z), so that the four slab tests read neighbouring floats; and the children
- * in {@code children[4i .. 4i+3]}: an interior node's index (≥ 0), a leaf as
+ * <p>Node i is {@value #NODE} ints at {@code nodes[28i ..]}, its four children's boxes and then the
+ * children themselves, so that a visit touches two cache lines: the boxes as float bits,
+ * coordinate by coordinate ({@code nodes[28i + 4k + c]} is coordinate k of child c, k = min x,
+ * min y, min z, max x, max y, max z), so that the four slab tests read neighbouring values; then
+ * the children at {@code nodes[28i + 24 + c]}: an interior node's index (≥ 0), a leaf as
  * {@link #leaf(int, int)} (sign bit set, first primitive, count), or {@link #EMPTY} (with an
  * empty box, which no ray enters). That is 112 bytes per node and about a third as many nodes
  * as leaves.
@@ -34,24 +35,24 @@ public final class Bvh {
     private final float[] pos;
     private final int[] tri;
     private final byte[] flags;
-    private final float[] boxes;
-    private final int[] children;
+    /** Ints per node: 24 box coordinates, 4 children. */
+    static final int NODE = 28;
+    private final int[] nodes;
     private final int nodeCount;
     /** Whether box tests take the Vector API path ({@link SimdNodes}). */
     private final boolean simd;
 
-    Bvh(Geometry geometry, float[] boxes, int[] children, int nodeCount) {
-        this(geometry, boxes, children, nodeCount, SimdNodes.AVAILABLE);
+    Bvh(Geometry geometry, int[] nodes, int nodeCount) {
+        this(geometry, nodes, nodeCount, SimdNodes.AVAILABLE);
     }
 
-    private Bvh(Geometry geometry, float[] boxes, int[] children, int nodeCount, boolean simd) {
+    private Bvh(Geometry geometry, int[] nodes, int nodeCount, boolean simd) {
         this.geometry = geometry;
         this.triangleCount = geometry.triangleCount();
         this.pos = geometry.positionArray();
         this.tri = geometry.indexArray();
         this.flags = geometry.flagArray();
-        this.boxes = boxes;
-        this.children = children;
+        this.nodes = nodes;
         this.nodeCount = nodeCount;
         this.simd = simd;
     }
@@ -61,7 +62,7 @@ public final class Bvh {
         if (on && !SimdNodes.AVAILABLE) {
             throw new IllegalStateException("the Vector API path needs --add-modules jdk.incubator.vector");
         }
-        return new Bvh(geometry, boxes, children, nodeCount, on);
+        return new Bvh(geometry, nodes, nodeCount, on);
     }
 
     /** Whether box tests use the Vector API (the JVM runs with {@code --add-modules jdk.incubator.vector}). */
@@ -89,7 +90,7 @@ public final class Bvh {
 
     /** Bytes held by the node arrays. */
     public long byteSize() {
-        return 4L * boxes.length + 4L * children.length;
+        return 4L * nodes.length;
     }
 
     /** A leaf child reference: {@code count} primitives from {@code first} on. */
@@ -109,10 +110,19 @@ public final class Bvh {
     }
 
     /** The node arrays themselves (not copies), for structural checks by tests in this package. */
-    record Layout(float[] boxes, int[] children) {}
+    record Layout(int[] nodes) {
+        /** Coordinate k (min x, y, z, max x, y, z) of child c's box in node i. */
+        float box(int i, int k, int c) {
+            return Float.intBitsToFloat(nodes[NODE * i + 4 * k + c]);
+        }
+
+        int child(int i, int c) {
+            return nodes[NODE * i + 24 + c];
+        }
+    }
 
     Layout layout() {
-        return new Layout(boxes, children);
+        return new Layout(nodes);
     }
 
     /** Allocates a traversal stack for one thread. */
@@ -148,7 +158,7 @@ public final class Bvh {
         final double sx = stack.sx, sy = stack.sy, sz = stack.sz, okx = stack.okx, oky = stack.oky, okz = stack.okz;
         final float[] pos = this.pos;
         final int[] tri = this.tri;
-        final float[] box = boxes;
+        final int[] box = nodes;
         final int[] refs = stack.refs;
         final int[] dist = stack.dist;
         final int[] lanes = stack.lanes;
@@ -160,8 +170,8 @@ public final class Bvh {
         int ref = 0;
         while (true) {
             if (ref >= 0) {
-                int o = 24 * ref;
-                int c = 4 * ref;
+                int o = NODE * ref;
+                int c = o + 24;
                 int base = sp;
                 if (simd) {
                     SimdNodes.entries(box, o, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax, MARGIN_ULPS, lanes);
@@ -173,7 +183,7 @@ public final class Bvh {
                 for (int k = 0; k < 4; k++) {
                     // Written always, kept only on a hit: no branch to mispredict.
                     int t = lanes[k];
-                    refs[sp] = children[c + k];
+                    refs[sp] = box[c + k];
                     dist[sp] = t;
                     sp += ~t >>> 31;
                 }
@@ -282,15 +292,16 @@ public final class Bvh {
         final int tMax = bits(BvhBuilder.roundUp(tHit));
         final float[] pos = this.pos;
         final int[] tri = this.tri;
-        final float[] box = boxes;
+        final int[] box = nodes;
         final int[] refs = stack.refs;
+        final int[] dist = stack.dist;
         final int[] lanes = stack.lanes;
         int sp = 0;
         int ref = 0;
         while (true) {
             if (ref >= 0) {
-                int o = 24 * ref;
-                int c = 4 * ref;
+                int o = NODE * ref;
+                int c = o + 24;
                 if (simd) {
                     SimdNodes.entries(box, o, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax, MARGIN_ULPS, lanes);
                 } else {
@@ -298,9 +309,16 @@ public final class Bvh {
                         lanes[k] = entry(box, o + k, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax);
                     }
                 }
+                int base = sp;
                 for (int k = 0; k < 4; k++) {
-                    refs[sp] = children[c + k];
-                    sp += ~lanes[k] >>> 31;
+                    int t = lanes[k];
+                    refs[sp] = box[c + k];
+                    dist[sp] = t;
+                    sp += ~t >>> 31;
+                }
+                // Nearest child first here too: a blocker near the origin (the common case) is found sooner.
+                for (int i = base; i < sp - 1; i++) {
+                    orderPair(refs, dist, i);
                 }
             } else {
                 int first = leafFirst(ref), end = first + leafCount(ref);
@@ -353,17 +371,22 @@ public final class Bvh {
      * as below every non-negative one, which is all the test needs: entry distances are clamped
      * at 0, and any negative exit distance means a miss.
      */
-    private static int entry(float[] box, int o, int nx, int ny, int nz, float onx, float ony, float onz,
+    private static int entry(int[] box, int o, int nx, int ny, int nz, float onx, float ony, float onz,
                              float ofx, float ofy, float ofz, float ix, float iy, float iz, int tMaxBits) {
-        int tn = Math.max(Math.max(bits((box[o + nx] - onx) * ix), bits((box[o + ny] - ony) * iy)),
-                Math.max(bits((box[o + nz] - onz) * iz), 0));
-        int tf = Math.min(Math.min(bits((box[o + (nx ^ 12)] - ofx) * ix), bits((box[o + (ny ^ 20)] - ofy) * iy)),
-                Math.min(bits((box[o + (nz ^ 28)] - ofz) * iz), tMaxBits));
+        int tn = Math.max(Math.max(bits((f(box, o + nx) - onx) * ix), bits((f(box, o + ny) - ony) * iy)),
+                Math.max(bits((f(box, o + nz) - onz) * iz), 0));
+        int tf = Math.min(Math.min(bits((f(box, o + (nx ^ 12)) - ofx) * ix), bits((f(box, o + (ny ^ 20)) - ofy) * iy)),
+                Math.min(bits((f(box, o + (nz ^ 28)) - ofz) * iz), tMaxBits));
         return tn <= tf + MARGIN_ULPS ? tn : -1;
     }
 
     private static int bits(float f) {
         return Float.floatToRawIntBits(f);
+    }
+
+    /** A box coordinate stored as float bits (the compiler folds this into a float load). */
+    private static float f(int[] box, int i) {
+        return Float.intBitsToFloat(box[i]);
     }
 
     /** Puts the nearer of entries i and i + 1 on top (at i + 1), without a branch. */

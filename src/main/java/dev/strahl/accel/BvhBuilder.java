@@ -23,9 +23,9 @@ import java.util.concurrent.atomic.AtomicInteger;
  */
 final class BvhBuilder {
     static final int BINS = 32;
-    static final int MAX_LEAF = 4;
+    static final int MAX_LEAF = 6;
     /** Cost of one box test relative to one primitive test, in the SAH. */
-    static final double TRAVERSAL_COST = 1.0;
+    static final double TRAVERSAL_COST = 2.0;
     private static final int MAX_SAH_DEPTH = 40;
     private static final int PARALLEL_MIN = 1 << 14;
 
@@ -71,7 +71,7 @@ final class BvhBuilder {
 
     Bvh build() {
         if (n == 0) {
-            return new Bvh(geometry, new float[0], new int[0], 0);
+            return new Bvh(geometry, new int[0], 0);
         }
         float[] root = emptyBox();
         for (int i = 0; i < n; i++) {
@@ -94,11 +94,11 @@ final class BvhBuilder {
     /** Per-thread binning memory, reused at every split a thread makes. */
     private static final class Bins {
         final int[] count = new int[3 * BINS];
-        final float[] box = new float[3 * BINS * 6];
-        final float[] rightBox = new float[BINS * 6];
+        final float[] box = new float[3 * BINS * 6];       // bin (axis, b) at 6 * (axis * BINS + b)
+        final double[] rightArea = new double[BINS];
         final int[] rightCount = new int[BINS];
-        final float[] acc = new float[6];
-        final float[] bestLeft = new float[6], bestRight = new float[6];
+        final float[] centroidBounds = new float[6];
+        int bins;                                           // bins in use at this split
         int lastBin;
     }
 
@@ -129,8 +129,8 @@ final class BvhBuilder {
         }
         Bins s = BINS_SCRATCH.get();
         // Centroid bounds decide the binning range.
-        float[] cb = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY,
-            Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
+        float[] cb = s.centroidBounds;
+        setEmpty(cb);
         for (int k = start; k < end; k++) {
             int p = 3 * ref[k];
             for (int c = 0; c < 3; c++) {
@@ -139,6 +139,8 @@ final class BvhBuilder {
                 cb[3 + c] = Math.max(cb[3 + c], v);
             }
         }
+        // Fewer bins for few primitives: the sweep costs as much per bin as the binning per primitive.
+        s.bins = Math.min(BINS, Math.max(2, count));
         int bestAxis = -1, bestBin = -1;
         double bestCost = Double.POSITIVE_INFINITY;
         if (depth < MAX_SAH_DEPTH) {
@@ -168,9 +170,9 @@ final class BvhBuilder {
         int mid;
         int left = nodes.getAndAdd(2), right = left + 1;
         if (bestAxis >= 0) {
-            mid = partition(start, end, bestAxis, cb[bestAxis], BINS / (cb[3 + bestAxis] - cb[bestAxis]), bestBin);
-            System.arraycopy(s.bestLeft, 0, nodeBox, 6 * left, 6);
-            System.arraycopy(s.bestRight, 0, nodeBox, 6 * right, 6);
+            mid = partition(start, end, bestAxis, cb[bestAxis], binScale(cb, bestAxis, s.bins), s.bins, bestBin);
+            binsBox(s, bestAxis, 0, bestBin + 1, 6 * left);
+            binsBox(s, bestAxis, bestBin + 1, s.bins, 6 * right);
         } else {
             mid = isHomogeneous(start, end) ? medianSplit(start, end, cb) : typeSplit(start, end);
             rangeBox(start, mid, 6 * left);
@@ -192,76 +194,111 @@ final class BvhBuilder {
 
     /** Sorts every primitive of the range into its bin on each axis, growing the bins' boxes. */
     private void binAll(Bins s, int start, int end, float[] cb) {
-        java.util.Arrays.fill(s.count, 0);
+        int nb = s.bins;
+        int[] count = s.count;
         float[] box = s.box;
-        for (int i = 0; i < 3 * BINS; i++) {
-            int o = 6 * i;
-            box[o] = box[o + 1] = box[o + 2] = Float.POSITIVE_INFINITY;
-            box[o + 3] = box[o + 4] = box[o + 5] = Float.NEGATIVE_INFINITY;
+        for (int axis = 0; axis < 3; axis++) {
+            for (int b = 0; b < nb; b++) {
+                count[axis * BINS + b] = 0;
+                int o = 6 * (axis * BINS + b);
+                box[o] = box[o + 1] = box[o + 2] = Float.POSITIVE_INFINITY;
+                box[o + 3] = box[o + 4] = box[o + 5] = Float.NEGATIVE_INFINITY;
+            }
         }
-        float sx = binScale(cb, 0), sy = binScale(cb, 1), sz = binScale(cb, 2);
+        float sx = binScale(cb, 0, nb), sy = binScale(cb, 1, nb), sz = binScale(cb, 2, nb);
         for (int k = start; k < end; k++) {
             int p = ref[k];
-            int bx = bin(centroid[3 * p], cb[0], sx);
-            int by = BINS + bin(centroid[3 * p + 1], cb[1], sy);
-            int bz = 2 * BINS + bin(centroid[3 * p + 2], cb[2], sz);
-            s.count[bx]++;
-            s.count[by]++;
-            s.count[bz]++;
-            grow(box, 6 * bx, primBox, 6 * p);
-            grow(box, 6 * by, primBox, 6 * p);
-            grow(box, 6 * bz, primBox, 6 * p);
+            int bx = bin(centroid[3 * p], cb[0], sx, nb);
+            int by = BINS + bin(centroid[3 * p + 1], cb[1], sy, nb);
+            int bz = 2 * BINS + bin(centroid[3 * p + 2], cb[2], sz, nb);
+            count[bx]++;
+            count[by]++;
+            count[bz]++;
+            int q = 6 * p;
+            float x0 = primBox[q], y0 = primBox[q + 1], z0 = primBox[q + 2], x1 = primBox[q + 3], y1 = primBox[q + 4], z1 = primBox[q + 5];
+            grow(box, 6 * bx, x0, y0, z0, x1, y1, z1);
+            grow(box, 6 * by, x0, y0, z0, x1, y1, z1);
+            grow(box, 6 * bz, x0, y0, z0, x1, y1, z1);
         }
     }
 
-    private static float binScale(float[] cb, int axis) {
+    private static void grow(float[] b, int o, float x0, float y0, float z0, float x1, float y1, float z1) {
+        b[o] = Math.min(b[o], x0);
+        b[o + 1] = Math.min(b[o + 1], y0);
+        b[o + 2] = Math.min(b[o + 2], z0);
+        b[o + 3] = Math.max(b[o + 3], x1);
+        b[o + 4] = Math.max(b[o + 4], y1);
+        b[o + 5] = Math.max(b[o + 5], z1);
+    }
+
+    private static float binScale(float[] cb, int axis, int bins) {
         float ext = cb[3 + axis] - cb[axis];
-        return ext > 0 ? BINS / ext : 0;
+        return ext > 0 ? bins / ext : 0;
     }
 
     /**
      * SAH cost (unnormalised: Σ area × count) of the best bin boundary on one axis, if below
-     * {@code bound}; records the bin in {@code s.lastBin} and the two boxes in the scratch.
+     * {@code bound}, else +∞; records the bin in {@code s.lastBin}.
      */
-    private double sweep(Bins s, int axis, double bound) {
-        int base = axis * BINS;
-        float[] acc = s.acc;
-        setEmpty(acc);
-        int accCount = 0;
-        for (int b = BINS - 1; b > 0; b--) {
-            grow(acc, 0, s.box, 6 * (base + b));
-            accCount += s.count[base + b];
-            System.arraycopy(acc, 0, s.rightBox, 6 * b, 6);
-            s.rightCount[b] = accCount;
+    private static double sweep(Bins s, int axis, double bound) {
+        int nb = s.bins, base = axis * BINS;
+        float[] box = s.box;
+        float x0 = Float.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Float.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        int acc = 0;
+        for (int b = nb - 1; b > 0; b--) {
+            int o = 6 * (base + b);
+            x0 = Math.min(x0, box[o]);
+            y0 = Math.min(y0, box[o + 1]);
+            z0 = Math.min(z0, box[o + 2]);
+            x1 = Math.max(x1, box[o + 3]);
+            y1 = Math.max(y1, box[o + 4]);
+            z1 = Math.max(z1, box[o + 5]);
+            acc += s.count[base + b];
+            s.rightArea[b] = area(x0, y0, z0, x1, y1, z1);
+            s.rightCount[b] = acc;
         }
-        setEmpty(acc);
-        accCount = 0;
+        x0 = y0 = z0 = Float.POSITIVE_INFINITY;
+        x1 = y1 = z1 = Float.NEGATIVE_INFINITY;
+        acc = 0;
         double best = bound;
         s.lastBin = -1;
-        for (int b = 0; b < BINS - 1; b++) {
-            grow(acc, 0, s.box, 6 * (base + b));
-            accCount += s.count[base + b];
-            int rightCount = s.rightCount[b + 1];
-            if (accCount == 0 || rightCount == 0) {
+        for (int b = 0; b < nb - 1; b++) {
+            int o = 6 * (base + b);
+            x0 = Math.min(x0, box[o]);
+            y0 = Math.min(y0, box[o + 1]);
+            z0 = Math.min(z0, box[o + 2]);
+            x1 = Math.max(x1, box[o + 3]);
+            y1 = Math.max(y1, box[o + 4]);
+            z1 = Math.max(z1, box[o + 5]);
+            acc += s.count[base + b];
+            int right = s.rightCount[b + 1];
+            if (acc == 0 || right == 0) {
                 continue;
             }
-            double cost = area(acc, 0) * accCount + area(s.rightBox, 6 * (b + 1)) * rightCount;
+            double cost = area(x0, y0, z0, x1, y1, z1) * acc + s.rightArea[b + 1] * right;
             if (cost < best) {
                 best = cost;
                 s.lastBin = b;
-                System.arraycopy(acc, 0, s.bestLeft, 0, 6);
-                System.arraycopy(s.rightBox, 6 * (b + 1), s.bestRight, 0, 6);
             }
         }
         return s.lastBin >= 0 ? best : Double.POSITIVE_INFINITY;
     }
 
+    /** The union of bins [from, to) on one axis, written to nodeBox at {@code dest}. */
+    private void binsBox(Bins s, int axis, int from, int to, int dest) {
+        float[] b = emptyBox();
+        for (int k = from; k < to; k++) {
+            grow(b, 0, s.box, 6 * (axis * BINS + k));
+        }
+        System.arraycopy(b, 0, nodeBox, dest, 6);
+    }
+
     /** Moves primitives whose centroid falls in bins 0..splitBin to the front; returns the split index. */
-    private int partition(int start, int end, int axis, float cmin, float scale, int splitBin) {
+    private int partition(int start, int end, int axis, float cmin, float scale, int bins, int splitBin) {
         int i = start;
         int j = end - 1;
         while (i <= j) {
-            if (bin(centroid[3 * ref[i] + axis], cmin, scale) <= splitBin) {
+            if (bin(centroid[3 * ref[i] + axis], cmin, scale, bins) <= splitBin) {
                 i++;
             } else {
                 int tmp = ref[i];
@@ -272,9 +309,9 @@ final class BvhBuilder {
         return i;
     }
 
-    private static int bin(float c, float cmin, float scale) {
-        int b = (int) ((c - cmin) * scale);
-        return b < 0 ? 0 : (b >= BINS ? BINS - 1 : b);
+    /** The bin of a centroid: c ≥ cmin, so only the upper end needs clamping (a centroid on the upper bound). */
+    private static int bin(float c, float cmin, float scale, int bins) {
+        return Math.min((int) ((c - cmin) * scale), bins - 1);
     }
 
     /** Splits at the median centroid of the longest centroid axis (quickselect); bounds the depth. */
@@ -353,8 +390,7 @@ final class BvhBuilder {
     /** Writes the four-wide tree and the primitive order of its leaves. */
     private final class WideWriter {
         private final int[] newId = new int[n];
-        private float[] boxes = new float[24 * Math.max(1, n / 4)];
-        private int[] children = new int[4 * Math.max(1, n / 4)];
+        private int[] nodes = new int[Bvh.NODE * Math.max(1, n / 4)];
         private int count;
 
         WideWriter() {
@@ -377,23 +413,21 @@ final class BvhBuilder {
             } else {
                 writeNode(0, 1);
             }
-            return new Bvh(geometry.permute(order), java.util.Arrays.copyOf(boxes, 24 * count),
-                    java.util.Arrays.copyOf(children, 4 * count), count);
+            return new Bvh(geometry.permute(order), java.util.Arrays.copyOf(nodes, Bvh.NODE * count), count);
         }
 
         private int allocate() {
             int node = count++;
-            if (4 * count > children.length) {
-                boxes = java.util.Arrays.copyOf(boxes, 2 * boxes.length);
-                children = java.util.Arrays.copyOf(children, 2 * children.length);
+            if (Bvh.NODE * count > nodes.length) {
+                nodes = java.util.Arrays.copyOf(nodes, 2 * nodes.length);
             }
             for (int c = 0; c < 4; c++) {
-                int o = 24 * node + c;
+                int o = Bvh.NODE * node + c;
                 for (int k = 0; k < 3; k++) {
-                    boxes[o + 4 * k] = Float.POSITIVE_INFINITY;
-                    boxes[o + 4 * (3 + k)] = Float.NEGATIVE_INFINITY;
+                    nodes[o + 4 * k] = Float.floatToRawIntBits(Float.POSITIVE_INFINITY);
+                    nodes[o + 4 * (3 + k)] = Float.floatToRawIntBits(Float.NEGATIVE_INFINITY);
                 }
-                children[4 * node + c] = Bvh.EMPTY;
+                nodes[Bvh.NODE * node + 24 + c] = Bvh.EMPTY;
             }
             return node;
         }
@@ -433,19 +467,19 @@ final class BvhBuilder {
             for (int i = 0; i < k; i++) {
                 if (nodeB[kid[i]] >= 0) {
                     int child = writeNode(kid[i], depth + 1);     // may grow the arrays: index them after
-                    children[4 * node + i] = child;
+                    nodes[Bvh.NODE * node + 24 + i] = child;
                 }
             }
             return node;
         }
 
         private void setChild(int node, int slot, int b) {
-            int o = 24 * node + slot;
+            int o = Bvh.NODE * node + slot;
             for (int c = 0; c < 6; c++) {
-                boxes[o + 4 * c] = nodeBox[6 * b + c];
+                nodes[o + 4 * c] = Float.floatToRawIntBits(nodeBox[6 * b + c]);
             }
             if (nodeB[b] < 0) {
-                children[4 * node + slot] = Bvh.leaf(newId[nodeA[b]], ~nodeB[b]);
+                nodes[Bvh.NODE * node + 24 + slot] = Bvh.leaf(newId[nodeA[b]], ~nodeB[b]);
             }
         }
     }
@@ -471,7 +505,11 @@ final class BvhBuilder {
     }
 
     private static double area(float[] b, int o) {
-        double dx = b[o + 3] - b[o], dy = b[o + 4] - b[o + 1], dz = b[o + 5] - b[o + 2];
+        return area(b[o], b[o + 1], b[o + 2], b[o + 3], b[o + 4], b[o + 5]);
+    }
+
+    private static double area(float x0, float y0, float z0, float x1, float y1, float z1) {
+        double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
         if (!(dx >= 0 && dy >= 0 && dz >= 0)) {
             return 0;
         }

@@ -39,8 +39,6 @@ public final class Geometry {
     }
 
     private Geometry(Geometry g, int[] order) {
-        this.pos = g.pos;
-        this.nrm = g.nrm;
         this.triangleCount = g.triangleCount;
         this.sphereCount = g.sphereCount;
         this.tri = new int[g.tri.length];
@@ -48,6 +46,13 @@ public final class Geometry {
         this.triFlags = new byte[g.triFlags.length];
         this.sph = new double[g.sph.length];
         this.sphMaterial = new int[g.sphMaterial.length];
+        // Vertices are renumbered in the order the reordered triangles first use them, so that
+        // neighbouring triangles (of one leaf) find their vertices close together in memory;
+        // vertices no triangle uses are dropped.
+        int vertexCount = g.pos.length / 3;
+        int[] newVertex = new int[vertexCount];
+        java.util.Arrays.fill(newVertex, -1);
+        int used = 0;
         boolean[] seen = new boolean[order.length];
         for (int i = 0; i < order.length; i++) {
             int old = order[i];
@@ -56,7 +61,13 @@ public final class Geometry {
             }
             seen[old] = true;
             if (i < triangleCount) {
-                System.arraycopy(g.tri, 3 * old, tri, 3 * i, 3);
+                for (int k = 0; k < 3; k++) {
+                    int v = g.tri[3 * old + k];
+                    if (newVertex[v] < 0) {
+                        newVertex[v] = used++;
+                    }
+                    tri[3 * i + k] = newVertex[v];
+                }
                 triMaterial[i] = g.triMaterial[old];
                 triFlags[i] = g.triFlags[old];
             } else {
@@ -65,12 +76,24 @@ public final class Geometry {
                 sphMaterial[s] = g.sphMaterial[so];
             }
         }
+        this.pos = new float[3 * used];
+        this.nrm = g.nrm == null ? null : new float[3 * used];
+        for (int v = 0; v < vertexCount; v++) {
+            int n = newVertex[v];
+            if (n >= 0) {
+                System.arraycopy(g.pos, 3 * v, pos, 3 * n, 3);
+                if (nrm != null) {
+                    System.arraycopy(g.nrm, 3 * v, nrm, 3 * n, 3);
+                }
+            }
+        }
     }
 
     /**
      * The same primitives in another order: primitive i of the result is primitive
-     * {@code order[i]} of this one. Triangles must stay before spheres. Vertex arrays are shared,
-     * not copied. Acceleration structures use it to store primitives in the order of their leaves.
+     * {@code order[i]} of this one. Triangles must stay before spheres. Vertices are renumbered in
+     * the order of first use (unused ones dropped). Acceleration structures use it to store
+     * primitives in the order of their leaves.
      */
     public Geometry permute(int[] order) {
         if (order.length != primitiveCount()) {

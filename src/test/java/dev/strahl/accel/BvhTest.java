@@ -337,8 +337,7 @@ class BvhTest {
         Bvh.Layout layout = bvh.layout();
         int n = g.primitiveCount();
         assertThat(bvh.nodeCount()).isBetween(1, Math.max(1, n - 1));
-        assertThat(layout.boxes()).hasSize(24 * bvh.nodeCount());
-        assertThat(layout.children()).hasSize(4 * bvh.nodeCount());
+        assertThat(layout.nodes()).hasSize(Bvh.NODE * bvh.nodeCount());
         boolean[] visited = new boolean[bvh.nodeCount()];
         int[] primSeen = new int[n];
         Aabb all = new Aabb();
@@ -381,16 +380,15 @@ class BvhTest {
     private static int checkNode(Geometry g, Bvh.Layout layout, int node, int depth, boolean[] visited, int[] primSeen, Aabb dest) {
         assertThat(visited[node]).as("node %d visited twice", node).isFalse();
         visited[node] = true;
-        float[] b = layout.boxes();
         int deepest = depth;
         int used = 0;
         for (int c = 0; c < 4; c++) {
-            int child = layout.children()[4 * node + c];
+            int child = layout.child(node, c);
             Aabb subtree = new Aabb();
             if (child == Bvh.EMPTY) {
                 for (int k = 0; k < 3; k++) {
-                    assertThat(b[24 * node + 4 * k + c]).as("empty slot min").isEqualTo(Float.POSITIVE_INFINITY);
-                    assertThat(b[24 * node + 4 * (3 + k) + c]).as("empty slot max").isEqualTo(Float.NEGATIVE_INFINITY);
+                    assertThat(layout.box(node, k, c)).as("empty slot min").isEqualTo(Float.POSITIVE_INFINITY);
+                    assertThat(layout.box(node, 3 + k, c)).as("empty slot max").isEqualTo(Float.NEGATIVE_INFINITY);
                 }
                 continue;
             }
@@ -408,8 +406,8 @@ class BvhTest {
                 deepest = Math.max(deepest, checkNode(g, layout, child, depth + 1, visited, primSeen, subtree));
             }
             for (int k = 0; k < 3; k++) {
-                assertThat((double) b[24 * node + 4 * k + c]).as("node %d child %d min[%d]", node, c, k).isLessThanOrEqualTo(subtree.min(k));
-                assertThat((double) b[24 * node + 4 * (3 + k) + c]).as("node %d child %d max[%d]", node, c, k).isGreaterThanOrEqualTo(subtree.max(k));
+                assertThat((double) layout.box(node, k, c)).as("node %d child %d min[%d]", node, c, k).isLessThanOrEqualTo(subtree.min(k));
+                assertThat((double) layout.box(node, 3 + k, c)).as("node %d child %d max[%d]", node, c, k).isGreaterThanOrEqualTo(subtree.max(k));
             }
             dest.include(subtree);
         }
