@@ -32,8 +32,10 @@ final class BvhBuilder {
     private final Geometry geometry;
     private final int n;
     private final int triangleCount;
-    private final float[] primBox;     // per primitive: min x, y, z, max x, y, z (rounded outwards)
-    private final float[] centroid;    // per primitive: x, y, z
+    // Per reference position k (not primitive: partitioning moves them along with ref, so that
+    // binning reads them in order): the box, rounded outwards, as ordered keys (see key()), and the centroid.
+    private final int[] primKey;
+    private final float[] centroid;
     private final int[] ref;           // primitive ids, partitioned in place into leaf ranges
     // Binary nodes: box (6 floats), and a = left child, b = right child (interior) or a = start, b = ~count (leaf).
     private final float[] nodeBox;
@@ -44,7 +46,7 @@ final class BvhBuilder {
         this.geometry = geometry;
         this.n = geometry.primitiveCount();
         this.triangleCount = geometry.triangleCount();
-        this.primBox = new float[6 * n];
+        this.primKey = new int[6 * n];
         this.centroid = new float[3 * n];
         this.ref = new int[n];
         Aabb box = new Aabb();
@@ -52,14 +54,12 @@ final class BvhBuilder {
             box.reset();
             geometry.includeBounds(i, box);
             int o = 6 * i;
-            primBox[o] = roundDown(box.minX);
-            primBox[o + 1] = roundDown(box.minY);
-            primBox[o + 2] = roundDown(box.minZ);
-            primBox[o + 3] = roundUp(box.maxX);
-            primBox[o + 4] = roundUp(box.maxY);
-            primBox[o + 5] = roundUp(box.maxZ);
+            float[] b = {roundDown(box.minX), roundDown(box.minY), roundDown(box.minZ), roundUp(box.maxX), roundUp(box.maxY), roundUp(box.maxZ)};
+            for (int c = 0; c < 6; c++) {
+                primKey[o + c] = key(b[c]);
+            }
             for (int c = 0; c < 3; c++) {
-                centroid[3 * i + c] = 0.5f * primBox[o + c] + 0.5f * primBox[o + 3 + c];
+                centroid[3 * i + c] = 0.5f * b[c] + 0.5f * b[3 + c];
             }
             ref[i] = i;
         }
@@ -73,11 +73,7 @@ final class BvhBuilder {
         if (n == 0) {
             return new Bvh(geometry, new int[0], 0);
         }
-        float[] root = emptyBox();
-        for (int i = 0; i < n; i++) {
-            grow(root, 0, primBox, 6 * i);
-        }
-        System.arraycopy(root, 0, nodeBox, 0, 6);
+        rangeBox(0, n, 0);
         if (n >= PARALLEL_MIN && Runtime.getRuntime().availableProcessors() > 1) {
             ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
             try {
@@ -94,7 +90,7 @@ final class BvhBuilder {
     /** Per-thread binning memory, reused at every split a thread makes. */
     private static final class Bins {
         final int[] count = new int[3 * BINS];
-        final float[] box = new float[3 * BINS * 6];       // bin (axis, b) at 6 * (axis * BINS + b)
+        final int[] box = new int[3 * BINS * 6];           // bin (axis, b) at 6 * (axis * BINS + b), as ordered keys
         final double[] rightArea = new double[BINS];
         final int[] rightCount = new int[BINS];
         final float[] centroidBounds = new float[6];
@@ -132,7 +128,7 @@ final class BvhBuilder {
         float[] cb = s.centroidBounds;
         setEmpty(cb);
         for (int k = start; k < end; k++) {
-            int p = 3 * ref[k];
+            int p = 3 * k;
             for (int c = 0; c < 3; c++) {
                 float v = centroid[p + c];
                 cb[c] = Math.min(cb[c], v);
@@ -196,18 +192,18 @@ final class BvhBuilder {
     private void binAll(Bins s, int start, int end, float[] cb) {
         int nb = s.bins;
         int[] count = s.count;
-        float[] box = s.box;
+        int[] box = s.box;
         for (int axis = 0; axis < 3; axis++) {
             for (int b = 0; b < nb; b++) {
                 count[axis * BINS + b] = 0;
                 int o = 6 * (axis * BINS + b);
-                box[o] = box[o + 1] = box[o + 2] = Float.POSITIVE_INFINITY;
-                box[o + 3] = box[o + 4] = box[o + 5] = Float.NEGATIVE_INFINITY;
+                box[o] = box[o + 1] = box[o + 2] = Integer.MAX_VALUE;
+                box[o + 3] = box[o + 4] = box[o + 5] = Integer.MIN_VALUE;
             }
         }
         float sx = binScale(cb, 0, nb), sy = binScale(cb, 1, nb), sz = binScale(cb, 2, nb);
         for (int k = start; k < end; k++) {
-            int p = ref[k];
+            int p = k;
             int bx = bin(centroid[3 * p], cb[0], sx, nb);
             int by = BINS + bin(centroid[3 * p + 1], cb[1], sy, nb);
             int bz = 2 * BINS + bin(centroid[3 * p + 2], cb[2], sz, nb);
@@ -215,20 +211,36 @@ final class BvhBuilder {
             count[by]++;
             count[bz]++;
             int q = 6 * p;
-            float x0 = primBox[q], y0 = primBox[q + 1], z0 = primBox[q + 2], x1 = primBox[q + 3], y1 = primBox[q + 4], z1 = primBox[q + 5];
+            int x0 = primKey[q], y0 = primKey[q + 1], z0 = primKey[q + 2], x1 = primKey[q + 3], y1 = primKey[q + 4], z1 = primKey[q + 5];
             grow(box, 6 * bx, x0, y0, z0, x1, y1, z1);
             grow(box, 6 * by, x0, y0, z0, x1, y1, z1);
             grow(box, 6 * bz, x0, y0, z0, x1, y1, z1);
         }
     }
 
-    private static void grow(float[] b, int o, float x0, float y0, float z0, float x1, float y1, float z1) {
+    /** Grows the key box at {@code o}: integer minima and maxima of ordered keys are those of the floats. */
+    private static void grow(int[] b, int o, int x0, int y0, int z0, int x1, int y1, int z1) {
         b[o] = Math.min(b[o], x0);
         b[o + 1] = Math.min(b[o + 1], y0);
         b[o + 2] = Math.min(b[o + 2], z0);
         b[o + 3] = Math.max(b[o + 3], x1);
         b[o + 4] = Math.max(b[o + 4], y1);
         b[o + 5] = Math.max(b[o + 5], z1);
+    }
+
+    /**
+     * A float as an int that orders like the float (for all but NaN): the bits of a non-negative
+     * float, the bits with the magnitude bits flipped for a negative one. Binning then takes
+     * box bounds with integer minima and maxima, one conditional move each.
+     */
+    static int key(float f) {
+        int b = Float.floatToRawIntBits(f);
+        return b ^ ((b >> 31) >>> 1);
+    }
+
+    /** The float of a {@link #key}. */
+    static float unkey(int k) {
+        return Float.intBitsToFloat(k ^ ((k >> 31) >>> 1));
     }
 
     private static float binScale(float[] cb, int axis, int bins) {
@@ -242,8 +254,8 @@ final class BvhBuilder {
      */
     private static double sweep(Bins s, int axis, double bound) {
         int nb = s.bins, base = axis * BINS;
-        float[] box = s.box;
-        float x0 = Float.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Float.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        int[] box = s.box;
+        int x0 = Integer.MAX_VALUE, y0 = x0, z0 = x0, x1 = Integer.MIN_VALUE, y1 = x1, z1 = x1;
         int acc = 0;
         for (int b = nb - 1; b > 0; b--) {
             int o = 6 * (base + b);
@@ -254,11 +266,11 @@ final class BvhBuilder {
             y1 = Math.max(y1, box[o + 4]);
             z1 = Math.max(z1, box[o + 5]);
             acc += s.count[base + b];
-            s.rightArea[b] = area(x0, y0, z0, x1, y1, z1);
+            s.rightArea[b] = acc == 0 ? 0 : keyArea(x0, y0, z0, x1, y1, z1);
             s.rightCount[b] = acc;
         }
-        x0 = y0 = z0 = Float.POSITIVE_INFINITY;
-        x1 = y1 = z1 = Float.NEGATIVE_INFINITY;
+        x0 = y0 = z0 = Integer.MAX_VALUE;
+        x1 = y1 = z1 = Integer.MIN_VALUE;
         acc = 0;
         double best = bound;
         s.lastBin = -1;
@@ -275,7 +287,7 @@ final class BvhBuilder {
             if (acc == 0 || right == 0) {
                 continue;
             }
-            double cost = area(x0, y0, z0, x1, y1, z1) * acc + s.rightArea[b + 1] * right;
+            double cost = keyArea(x0, y0, z0, x1, y1, z1) * acc + s.rightArea[b + 1] * right;
             if (cost < best) {
                 best = cost;
                 s.lastBin = b;
@@ -284,13 +296,20 @@ final class BvhBuilder {
         return s.lastBin >= 0 ? best : Double.POSITIVE_INFINITY;
     }
 
+    private static double keyArea(int x0, int y0, int z0, int x1, int y1, int z1) {
+        return area(unkey(x0), unkey(y0), unkey(z0), unkey(x1), unkey(y1), unkey(z1));
+    }
+
     /** The union of bins [from, to) on one axis, written to nodeBox at {@code dest}. */
     private void binsBox(Bins s, int axis, int from, int to, int dest) {
-        float[] b = emptyBox();
+        int[] b = {Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE};
         for (int k = from; k < to; k++) {
-            grow(b, 0, s.box, 6 * (axis * BINS + k));
+            int o = 6 * (axis * BINS + k);
+            grow(b, 0, s.box[o], s.box[o + 1], s.box[o + 2], s.box[o + 3], s.box[o + 4], s.box[o + 5]);
         }
-        System.arraycopy(b, 0, nodeBox, dest, 6);
+        for (int c = 0; c < 6; c++) {
+            nodeBox[dest + c] = unkey(b[c]);
+        }
     }
 
     /** Moves primitives whose centroid falls in bins 0..splitBin to the front; returns the split index. */
@@ -298,12 +317,10 @@ final class BvhBuilder {
         int i = start;
         int j = end - 1;
         while (i <= j) {
-            if (bin(centroid[3 * ref[i] + axis], cmin, scale, bins) <= splitBin) {
+            if (bin(centroid[3 * i + axis], cmin, scale, bins) <= splitBin) {
                 i++;
             } else {
-                int tmp = ref[i];
-                ref[i] = ref[j];
-                ref[j--] = tmp;
+                swap(i, j--);
             }
         }
         return i;
@@ -325,19 +342,17 @@ final class BvhBuilder {
         int mid = (start + end) >>> 1;
         int lo = start, hi = end - 1;
         while (lo < hi) {
-            float pivot = centroid[3 * ref[(lo + hi) >>> 1] + axis];
+            float pivot = centroid[3 * ((lo + hi) >>> 1) + axis];
             int i = lo, j = hi;
             while (i <= j) {
-                while (centroid[3 * ref[i] + axis] < pivot) {
+                while (centroid[3 * i + axis] < pivot) {
                     i++;
                 }
-                while (centroid[3 * ref[j] + axis] > pivot) {
+                while (centroid[3 * j + axis] > pivot) {
                     j--;
                 }
                 if (i <= j) {
-                    int tmp = ref[i];
-                    ref[i++] = ref[j];
-                    ref[j--] = tmp;
+                    swap(i++, j--);
                 }
             }
             if (mid <= j) {
@@ -356,12 +371,27 @@ final class BvhBuilder {
         int i = start;
         for (int k = start; k < end; k++) {
             if (ref[k] < triangleCount) {
-                int tmp = ref[i];
-                ref[i++] = ref[k];
-                ref[k] = tmp;
+                swap(i++, k);
             }
         }
         return i;
+    }
+
+    /** Swaps the references at positions i and j with their boxes and centroids. */
+    private void swap(int i, int j) {
+        int r = ref[i];
+        ref[i] = ref[j];
+        ref[j] = r;
+        for (int c = 0; c < 6; c++) {
+            int t = primKey[6 * i + c];
+            primKey[6 * i + c] = primKey[6 * j + c];
+            primKey[6 * j + c] = t;
+        }
+        for (int c = 0; c < 3; c++) {
+            float t = centroid[3 * i + c];
+            centroid[3 * i + c] = centroid[3 * j + c];
+            centroid[3 * j + c] = t;
+        }
     }
 
     private boolean isHomogeneous(int start, int end) {
@@ -380,11 +410,14 @@ final class BvhBuilder {
     }
 
     private void rangeBox(int start, int end, int dest) {
-        float[] b = emptyBox();
+        int[] b = {Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE};
         for (int k = start; k < end; k++) {
-            grow(b, 0, primBox, 6 * ref[k]);
+            int q = 6 * k;
+            grow(b, 0, primKey[q], primKey[q + 1], primKey[q + 2], primKey[q + 3], primKey[q + 4], primKey[q + 5]);
         }
-        System.arraycopy(b, 0, nodeBox, dest, 6);
+        for (int c = 0; c < 6; c++) {
+            nodeBox[dest + c] = unkey(b[c]);
+        }
     }
 
     /** Writes the four-wide tree and the primitive order of its leaves. */
@@ -486,22 +519,9 @@ final class BvhBuilder {
 
     // ---- small box helpers on float[6] slices ----------------------------------------------------
 
-    private static float[] emptyBox() {
-        float[] b = new float[6];
-        setEmpty(b);
-        return b;
-    }
-
     private static void setEmpty(float[] b) {
         b[0] = b[1] = b[2] = Float.POSITIVE_INFINITY;
         b[3] = b[4] = b[5] = Float.NEGATIVE_INFINITY;
-    }
-
-    private static void grow(float[] acc, int a, float[] src, int s) {
-        for (int c = 0; c < 3; c++) {
-            acc[a + c] = Math.min(acc[a + c], src[s + c]);
-            acc[a + 3 + c] = Math.max(acc[a + 3 + c], src[s + 3 + c]);
-        }
     }
 
     private static double area(float[] b, int o) {
