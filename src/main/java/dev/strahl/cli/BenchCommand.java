@@ -81,6 +81,9 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--no-cornell", description = "Skip the Cornell Box render.")
     boolean noCornell;
 
+    @Option(names = "--rays", paramLabel = "N", description = "Rays per ray set (default: 2^20; --quick: 2^17).")
+    Integer raysPerSet;
+
     private BenchProgress progress;
 
     @Override
@@ -101,7 +104,11 @@ final class BenchCommand implements Callable<Integer> {
         List<Path> meshFiles = meshes != null ? meshes : List.of(data.resolve("meshes/bunny/bun_zipper.ply"),
                 data.resolve("meshes/dragon/dragon_100k.ply"), data.resolve("meshes/bunny/bunny_midpoint-sub2_1.1M.ply"));
         BenchResults r = BenchReport.machine(quick, timedRuns);
-        r.raysPerSet = quick ? 1 << 17 : 1 << 20;
+        r.raysPerSet = raysPerSet != null ? raysPerSet : quick ? 1 << 17 : 1 << 20;
+        if (r.raysPerSet < 1) {
+            err.println("strahl: --rays must be positive, got " + r.raysPerSet);
+            return 2;
+        }
         progress = new BenchProgress(System.err, Terminal.isStderrTerminal());
         ExecutorService pool = Executors.newFixedThreadPool(counts.last(), t -> {
             Thread thread = new Thread(t, "strahl-bench");
@@ -250,7 +257,7 @@ final class BenchCommand implements Callable<Integer> {
 
         progress.step(name + ": making rays");
         Camera camera = name.equals("cornell-box") ? scene.camera() : Camera.framing(g.bounds(), 40);
-        int side = quick ? 256 : 512;
+        int side = (int) Math.max(1, Math.min(512, Math.sqrt(r.raysPerSet / 4.0)));
         List<BenchRays.RaySet> sets = List.of(BenchRays.primary(camera, side, side, 4, 1),
                 BenchRays.incoherent(g.bounds(), r.raysPerSet, 2), BenchRays.shadow(g, r.raysPerSet, 3));
         String check = "passed";
