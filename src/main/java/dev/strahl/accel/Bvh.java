@@ -125,6 +125,25 @@ public final class Bvh {
         return new Layout(nodes);
     }
 
+    /**
+     * The slab test of node {@code node}'s four children for a ray, as the traversal runs it:
+     * entry distances (float bits) or -1 into {@code stack.lanes}. For micro-benchmarks and tests.
+     */
+    void testNode(int node, Ray ray, TraversalStack stack) {
+        stack.prepare(ray);
+        int o = NODE * node;
+        int tMax = bits(BvhBuilder.roundUp(ray.tMax));
+        if (simd) {
+            SimdNodes.entries(nodes, o, stack.nx, stack.ny, stack.nz, stack.onx, stack.ony, stack.onz, stack.ofx, stack.ofy, stack.ofz,
+                    stack.ix, stack.iy, stack.iz, tMax, MARGIN_ULPS, stack.lanes);
+        } else {
+            for (int k = 0; k < 4; k++) {
+                stack.lanes[k] = entry(nodes, o + k, stack.nx, stack.ny, stack.nz, stack.onx, stack.ony, stack.onz, stack.ofx, stack.ofy,
+                        stack.ofz, stack.ix, stack.iy, stack.iz, tMax);
+            }
+        }
+    }
+
     /** Allocates a traversal stack for one thread. */
     public static TraversalStack newStack() {
         return new TraversalStack();

@@ -100,10 +100,9 @@ public final class Rng {
             dimension = d + 1;
             int p = d >> 1;
             if (p != pair) {
-                int seed = OwenSobol.mix32(pixelSeed + p * 0x9e3779b9);
-                int i = OwenSobol.shuffle(sampleIndex, seed);
-                pairX = OwenSobol.x(i, seed);
-                pairY = OwenSobol.y(i, seed);
+                long xy = OwenSobol.point(sampleIndex, OwenSobol.mix32(pixelSeed + p * 0x9e3779b9));
+                pairX = (int) (xy >>> 32);
+                pairY = (int) xy;
                 pair = p;
             }
             return OwenSobol.toUnit((d & 1) == 0 ? pairX : pairY);

@@ -29,6 +29,19 @@ class OwenSobolTest {
     }
 
     @Test
+    void theFastPointEqualsTheDefinition() {
+        SplittableRandom random = new SplittableRandom(4);
+        for (int k = 0; k < 100_000; k++) {
+            int seed = random.nextInt(), index = k < 5000 ? k : random.nextInt();
+            int s = OwenSobol.shuffle(index, seed);
+            long xy = OwenSobol.point(index, seed);
+            assertThat((int) (xy >>> 32)).isEqualTo(OwenSobol.x(s, seed));
+            assertThat((int) xy).isEqualTo(OwenSobol.y(s, seed));
+            assertThat(OwenSobol.sobol1Reversed(index)).isEqualTo(Integer.reverse(OwenSobol.sobol1(index)));
+        }
+    }
+
+    @Test
     void everyPowerOfTwoPrefixIsAZeroMTwoNetForAnySeed() {
         SplittableRandom random = new SplittableRandom(2);
         for (int trial = 0; trial < 40; trial++) {
