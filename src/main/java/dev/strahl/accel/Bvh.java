@@ -11,8 +11,8 @@ import dev.strahl.geometry.Ray;
  * the hierarchy was built from. Immutable and shared by all render threads; each thread passes
  * its own {@link TraversalStack}.
  *
- * <p>Node i is {@value #NODE} ints at {@code nodes[28i ..]}, its four children's boxes and then the
- * children themselves, so that a visit touches two cache lines: the boxes as float bits,
+ * <p>Node i is {@value #NODE} floats at {@code nodes[28i ..]}, its four children's boxes and then the
+ * children themselves (as float bits), so that a visit touches two cache lines: the boxes
  * coordinate by coordinate ({@code nodes[28i + 4k + c]} is coordinate k of child c, k = min x,
  * min y, min z, max x, max y, max z), so that the four slab tests read neighbouring values; then
  * the children at {@code nodes[28i + 24 + c]}: an interior node's index (≥ 0), a leaf as
@@ -35,18 +35,18 @@ public final class Bvh {
     private final float[] pos;
     private final int[] tri;
     private final byte[] flags;
-    /** Ints per node: 24 box coordinates, 4 children. */
+    /** Floats per node: 24 box coordinates, 4 children (their int bits). */
     static final int NODE = 28;
-    private final int[] nodes;
+    private final float[] nodes;
     private final int nodeCount;
     /** Whether box tests take the Vector API path ({@link SimdNodes}). */
     private final boolean simd;
 
-    Bvh(Geometry geometry, int[] nodes, int nodeCount) {
+    Bvh(Geometry geometry, float[] nodes, int nodeCount) {
         this(geometry, nodes, nodeCount, SimdNodes.AVAILABLE);
     }
 
-    private Bvh(Geometry geometry, int[] nodes, int nodeCount, boolean simd) {
+    private Bvh(Geometry geometry, float[] nodes, int nodeCount, boolean simd) {
         this.geometry = geometry;
         this.triangleCount = geometry.triangleCount();
         this.pos = geometry.positionArray();
@@ -110,14 +110,14 @@ public final class Bvh {
     }
 
     /** The node arrays themselves (not copies), for structural checks by tests in this package. */
-    record Layout(int[] nodes) {
+    record Layout(float[] nodes) {
         /** Coordinate k (min x, y, z, max x, y, z) of child c's box in node i. */
         float box(int i, int k, int c) {
-            return Float.intBitsToFloat(nodes[NODE * i + 4 * k + c]);
+            return nodes[NODE * i + 4 * k + c];
         }
 
         int child(int i, int c) {
-            return nodes[NODE * i + 24 + c];
+            return Float.floatToRawIntBits(nodes[NODE * i + 24 + c]);
         }
     }
 
@@ -177,7 +177,7 @@ public final class Bvh {
         final double sx = stack.sx, sy = stack.sy, sz = stack.sz, okx = stack.okx, oky = stack.oky, okz = stack.okz;
         final float[] pos = this.pos;
         final int[] tri = this.tri;
-        final int[] box = nodes;
+        final float[] box = nodes;
         final int[] refs = stack.refs;
         final int[] dist = stack.dist;
         final int[] lanes = stack.lanes;
@@ -202,7 +202,7 @@ public final class Bvh {
                 for (int k = 0; k < 4; k++) {
                     // Written always, kept only on a hit: no branch to mispredict.
                     int t = lanes[k];
-                    refs[sp] = box[c + k];
+                    refs[sp] = Float.floatToRawIntBits(box[c + k]);
                     dist[sp] = t;
                     sp += ~t >>> 31;
                 }
@@ -311,7 +311,7 @@ public final class Bvh {
         final int tMax = bits(BvhBuilder.roundUp(tHit));
         final float[] pos = this.pos;
         final int[] tri = this.tri;
-        final int[] box = nodes;
+        final float[] box = nodes;
         final int[] refs = stack.refs;
         final int[] dist = stack.dist;
         final int[] lanes = stack.lanes;
@@ -331,7 +331,7 @@ public final class Bvh {
                 int base = sp;
                 for (int k = 0; k < 4; k++) {
                     int t = lanes[k];
-                    refs[sp] = box[c + k];
+                    refs[sp] = Float.floatToRawIntBits(box[c + k]);
                     dist[sp] = t;
                     sp += ~t >>> 31;
                 }
@@ -390,12 +390,12 @@ public final class Bvh {
      * as below every non-negative one, which is all the test needs: entry distances are clamped
      * at 0, and any negative exit distance means a miss.
      */
-    private static int entry(int[] box, int o, int nx, int ny, int nz, float onx, float ony, float onz,
+    private static int entry(float[] box, int o, int nx, int ny, int nz, float onx, float ony, float onz,
                              float ofx, float ofy, float ofz, float ix, float iy, float iz, int tMaxBits) {
-        int tn = Math.max(Math.max(bits((f(box, o + nx) - onx) * ix), bits((f(box, o + ny) - ony) * iy)),
-                Math.max(bits((f(box, o + nz) - onz) * iz), 0));
-        int tf = Math.min(Math.min(bits((f(box, o + (nx ^ 12)) - ofx) * ix), bits((f(box, o + (ny ^ 20)) - ofy) * iy)),
-                Math.min(bits((f(box, o + (nz ^ 28)) - ofz) * iz), tMaxBits));
+        int tn = Math.max(Math.max(bits((box[o + nx] - onx) * ix), bits((box[o + ny] - ony) * iy)),
+                Math.max(bits((box[o + nz] - onz) * iz), 0));
+        int tf = Math.min(Math.min(bits((box[o + (nx ^ 12)] - ofx) * ix), bits((box[o + (ny ^ 20)] - ofy) * iy)),
+                Math.min(bits((box[o + (nz ^ 28)] - ofz) * iz), tMaxBits));
         return tn <= tf + MARGIN_ULPS ? tn : -1;
     }
 
@@ -403,10 +403,6 @@ public final class Bvh {
         return Float.floatToRawIntBits(f);
     }
 
-    /** A box coordinate stored as float bits (the compiler folds this into a float load). */
-    private static float f(int[] box, int i) {
-        return Float.intBitsToFloat(box[i]);
-    }
 
     /** Puts the nearer of entries i and i + 1 on top (at i + 1), without a branch. */
     private static void orderPair(int[] refs, int[] dist, int i) {

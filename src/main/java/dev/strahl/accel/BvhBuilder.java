@@ -71,7 +71,7 @@ final class BvhBuilder {
 
     Bvh build() {
         if (n == 0) {
-            return new Bvh(geometry, new int[0], 0);
+            return new Bvh(geometry, new float[0], 0);
         }
         rangeBox(0, n, 0);
         if (n >= PARALLEL_MIN && Runtime.getRuntime().availableProcessors() > 1) {
@@ -446,7 +446,16 @@ final class BvhBuilder {
             } else {
                 writeNode(0, 1);
             }
-            return new Bvh(geometry.permute(order), java.util.Arrays.copyOf(nodes, Bvh.NODE * count), count);
+            // Stored as floats: the children's int bits pass through intBitsToFloat and back
+            // unchanged on the JVM's 64-bit platforms (checked here, since the spec does not promise it for NaN patterns).
+            float[] out = new float[Bvh.NODE * count];
+            for (int i = 0; i < out.length; i++) {
+                out[i] = Float.intBitsToFloat(nodes[i]);
+                if (Float.floatToRawIntBits(out[i]) != nodes[i]) {
+                    throw new IllegalStateException("float bits not preserved for node word " + i);
+                }
+            }
+            return new Bvh(geometry.permute(order), out, count);
         }
 
         private int allocate() {

@@ -1,5 +1,6 @@
 package dev.strahl.accel;
 
+import jdk.incubator.vector.FloatVector;
 import jdk.incubator.vector.IntVector;
 import jdk.incubator.vector.VectorOperators;
 import jdk.incubator.vector.VectorSpecies;
@@ -22,24 +23,24 @@ final class SimdNodes {
      * Writes the entry distances (float bits) of the four children of the node whose boxes start
      * at {@code o}, or -1 for the children the ray misses, into {@code out[0..3]}.
      */
-    static void entries(int[] box, int o, int nx, int ny, int nz, float onx, float ony, float onz,
+    static void entries(float[] box, int o, int nx, int ny, int nz, float onx, float ony, float onz,
                         float ofx, float ofy, float ofz, float ix, float iy, float iz, int tMaxBits, int margin, int[] out) {
         Lanes.entries(box, o, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMaxBits, margin, out);
     }
 
     /** Holds the species, so that merely checking {@link #AVAILABLE} never touches the module. */
     private static final class Lanes {
-        private static final VectorSpecies<Integer> I = IntVector.SPECIES_128;
+        private static final VectorSpecies<Float> F = FloatVector.SPECIES_128;
 
-        static void entries(int[] box, int o, int nx, int ny, int nz, float onx, float ony, float onz,
+        static void entries(float[] box, int o, int nx, int ny, int nz, float onx, float ony, float onz,
                             float ofx, float ofy, float ofz, float ix, float iy, float iz, int tMaxBits, int margin, int[] out) {
-            IntVector tnx = IntVector.fromArray(I, box, o + nx).reinterpretAsFloats().sub(onx).mul(ix).reinterpretAsInts();
-            IntVector tny = IntVector.fromArray(I, box, o + ny).reinterpretAsFloats().sub(ony).mul(iy).reinterpretAsInts();
-            IntVector tnz = IntVector.fromArray(I, box, o + nz).reinterpretAsFloats().sub(onz).mul(iz).reinterpretAsInts();
+            IntVector tnx = FloatVector.fromArray(F, box, o + nx).sub(onx).mul(ix).reinterpretAsInts();
+            IntVector tny = FloatVector.fromArray(F, box, o + ny).sub(ony).mul(iy).reinterpretAsInts();
+            IntVector tnz = FloatVector.fromArray(F, box, o + nz).sub(onz).mul(iz).reinterpretAsInts();
             IntVector tn = tnx.max(tny).max(tnz.max(0));
-            IntVector tfx = IntVector.fromArray(I, box, o + (nx ^ 12)).reinterpretAsFloats().sub(ofx).mul(ix).reinterpretAsInts();
-            IntVector tfy = IntVector.fromArray(I, box, o + (ny ^ 20)).reinterpretAsFloats().sub(ofy).mul(iy).reinterpretAsInts();
-            IntVector tfz = IntVector.fromArray(I, box, o + (nz ^ 28)).reinterpretAsFloats().sub(ofz).mul(iz).reinterpretAsInts();
+            IntVector tfx = FloatVector.fromArray(F, box, o + (nx ^ 12)).sub(ofx).mul(ix).reinterpretAsInts();
+            IntVector tfy = FloatVector.fromArray(F, box, o + (ny ^ 20)).sub(ofy).mul(iy).reinterpretAsInts();
+            IntVector tfz = FloatVector.fromArray(F, box, o + (nz ^ 28)).sub(ofz).mul(iz).reinterpretAsInts();
             IntVector tf = tfx.min(tfy).min(tfz.min(tMaxBits)).add(margin);
             tn.blend(-1, tn.compare(VectorOperators.GT, tf)).intoArray(out, 0);
         }

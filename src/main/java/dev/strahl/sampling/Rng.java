@@ -23,7 +23,7 @@ public final class Rng {
     private static final long GOLDEN_GAMMA = 0x9e3779b97f4a7c15L;
     private static final double DOUBLE_UNIT = 0x1.0p-53;
     /** Dimensions drawn from stratified points in sample mode: the pixel position and three path vertices of the path tracer. */
-    public static final int STRATIFIED_DIMENSIONS = 20;
+    public static final int STRATIFIED_DIMENSIONS = 8;
 
     private long state;
     private int limit;             // stratified dimensions of this sample: 0 outside sample mode
