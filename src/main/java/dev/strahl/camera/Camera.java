@@ -7,9 +7,22 @@ import org.joml.Vector3dc;
 /**
  * A pinhole camera: position, target, up vector and VERTICAL full field of view in degrees.
  * {@link #rays(int, int)} gives the ray generator for a film size.
+ *
+ * @param lookFrom   the camera position
+ * @param lookAt     the point looked at
+ * @param up         the up direction, not parallel to the viewing direction
+ * @param fovDegrees vertical full field of view in degrees, in (0, 180)
  */
 public record Camera(Vector3dc lookFrom, Vector3dc lookAt, Vector3dc up, double fovDegrees) {
 
+    /**
+     * Checks the field of view and that the vectors are finite and not degenerate; copies them.
+     *
+     * @param lookFrom   the camera position
+     * @param lookAt     the point looked at
+     * @param up         the up direction, not parallel to the viewing direction
+     * @param fovDegrees vertical full field of view in degrees, in (0, 180)
+     */
     public Camera {
         if (!(fovDegrees > 0 && fovDegrees < 180)) {
             throw new IllegalArgumentException("field of view must be in (0, 180) degrees, got " + fovDegrees);
@@ -32,6 +45,10 @@ public record Camera(Vector3dc lookFrom, Vector3dc lookAt, Vector3dc up, double 
     /**
      * A camera that frames a bounding box from +Z, looking down -Z with +Y up: the box's bounding
      * sphere fits into the vertical field of view.
+     *
+     * @param box        the bounds to frame
+     * @param fovDegrees vertical field of view in degrees
+     * @return the camera
      */
     public static Camera framing(Aabb box, double fovDegrees) {
         if (box.isEmpty()) {
@@ -49,11 +66,23 @@ public record Camera(Vector3dc lookFrom, Vector3dc lookAt, Vector3dc up, double 
         return "(" + v.x() + ", " + v.y() + ", " + v.z() + ")";
     }
 
-    /** The ray generator for a film of the given size. */
+    /**
+     * The ray generator for a film of the given size.
+     *
+     * @param width  film width in pixels
+     * @param height film height in pixels
+     * @return the generator
+     */
     public PinholeRays rays(int width, int height) {
         return new PinholeRays(this, width, height);
     }
 
+    /**
+     * The same camera with another field of view.
+     *
+     * @param fov vertical field of view in degrees, in (0, 180)
+     * @return a new camera
+     */
     public Camera withFov(double fov) {
         return new Camera(lookFrom, lookAt, up, fov);
     }

@@ -25,7 +25,25 @@ public final class Main implements Runnable {
 
     static CommandLine commandLine() {
         return new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true)
-                .setParameterExceptionHandler(Main::usageError);
+                .setParameterExceptionHandler(Main::usageError)
+                .setExecutionExceptionHandler(Main::internalError);
+    }
+
+    /**
+     * What a command did not handle itself is a bug: still one line (exit code 1), with the stack
+     * trace only under {@code --debug}, where it is what the bug report needs.
+     */
+    private static int internalError(Exception e, CommandLine cmd, CommandLine.ParseResult parsed) {
+        boolean debug = false;
+        for (CommandLine.ParseResult p = parsed; p != null; p = p.subcommand()) {
+            debug |= p.hasMatchedOption("--debug");
+        }
+        cmd.getErr().println("strahl: internal error: " + e + (debug ? "" : " (run with --debug for the stack trace)"));
+        if (debug) {
+            e.printStackTrace(cmd.getErr());
+        }
+        cmd.getErr().flush();
+        return 1;
     }
 
     /**

@@ -3,14 +3,21 @@ package dev.strahl.cli;
 import dev.strahl.camera.Camera;
 import dev.strahl.film.Film;
 import dev.strahl.film.ImageWriters;
+import dev.strahl.render.Checkpoint;
+import dev.strahl.render.CheckpointException;
 import dev.strahl.render.RenderJob;
+import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
 import dev.strahl.scene.SceneLoader;
+import dev.strahl.scene.SceneSettings;
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.io.UncheckedIOException;
+import java.math.BigDecimal;
+import java.math.MathContext;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -18,6 +25,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
 import org.joml.Vector3d;
+import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Mixin;
@@ -25,12 +33,17 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
-/** {@code strahl render}: renders a scene file to an image. */
+/**
+ * {@code strahl render}: renders a scene file to an image. Exit codes: 0 done, 1 a failure while
+ * rendering or writing, 2 bad usage or input (nothing is written), 130/143 interrupted by
+ * SIGINT/SIGTERM (the image rendered so far, and a checkpoint if asked for, are written).
+ */
 @Command(name = "render",
         mixinStandardHelpOptions = true,
         versionProvider = Main.Version.class,
-        description = {"Renders a scene (.json scene file or .obj) to a PNG (sRGB, 8 bit) or PFM (linear float) image.",
-            "Without camera options the scene's camera is used; an OBJ is framed from +Z."},
+        description = {"Renders a scene (.json scene file, .obj or .ply) to a PNG (sRGB, 8 bit) or PFM (linear float) image.",
+            "Without camera options the scene's camera is used; an OBJ is framed from +Z.",
+            "Ctrl-C stops and writes the image rendered so far; a second Ctrl-C exits at once."},
         sortOptions = false)
 final class RenderCommand implements Callable<Integer> {
 
@@ -40,7 +53,7 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     TransportOptions transport;
 
-    @Parameters(index = "0", paramLabel = "SCENE", description = "Scene file: .json (strahl scene) or .obj (with its .mtl).")
+    @Parameters(index = "0", paramLabel = "SCENE", description = "Scene file: .json (strahl scene), .obj (with its .mtl) or .ply.")
     Path scene;
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE", description = "Output image; the extension chooses the format: .png or .pfm.")
@@ -55,18 +68,28 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--spp", defaultValue = "64", description = "Samples per pixel (default: ${DEFAULT-VALUE}).")
     int spp;
 
-
     @Option(names = "--seed", defaultValue = "0", description = "Random seed; the same seed gives the same image (default: ${DEFAULT-VALUE}).")
     long seed;
 
     @Option(names = "--threads", defaultValue = "0", description = "Worker threads; 0 = all processors (default: ${DEFAULT-VALUE}).")
     int threads;
 
-
-
     @Option(names = "--time-limit", paramLabel = "DURATION", converter = Durations.class,
             description = "Stop at the end of the pass that crosses this time (e.g. 90s, 5m, 1h30m) and write the image.")
     Duration timeLimit;
+
+    @Option(names = "--checkpoint", paramLabel = "FILE",
+            description = "Save the render's state to FILE periodically, when interrupted and at the end, for --resume.")
+    Path checkpoint;
+
+    @Option(names = "--checkpoint-interval", paramLabel = "DURATION", converter = Durations.class, defaultValue = "5m",
+            description = "Time between periodic checkpoints (default: ${DEFAULT-VALUE}).")
+    Duration checkpointInterval;
+
+    @Option(names = "--resume", paramLabel = "FILE",
+            description = "Continue the render saved in checkpoint FILE (same scene and settings; --spp may be raised)."
+                    + " New checkpoints go to FILE too unless --checkpoint names another.")
+    Path resume;
 
     @Option(names = "--cull-back-faces", description = "Skip back faces of closed meshes for camera and bounce rays.")
     boolean cullBackFaces;
@@ -86,6 +109,9 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = {"-q", "--quiet"}, description = "Print nothing but errors.")
     boolean quiet;
 
+    @Mixin
+    DebugOption debug;
+
     @Option(names = "--stats", paramLabel = "FILE.json", description = "Also write the render's figures (time, samples/s, rays/s, load and BVH build time) as JSON.")
     Path statsFile;
 
@@ -94,59 +120,157 @@ final class RenderCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
-        try {
-            RenderSettings settings = settings();
-            if (fov != null && !(fov > 0 && fov < 180)) {
-                throw new IllegalArgumentException("--fov: the field of view must be in (0, 180) degrees, got " + fov);
-            }
-            checkOutput();
-            Path statsDir = statsFile == null ? null : statsFile.toAbsolutePath().getParent();
-            if (statsDir != null && !Files.isDirectory(statsDir)) {
-                throw new IllegalArgumentException("--stats: directory does not exist: " + statsDir);
-            }
-            long loadStart = System.nanoTime();
-            Scene loaded = SceneLoader.load(scene);
-            loadSeconds = (System.nanoTime() - loadStart) * 1e-9 - loaded.bvhBuildSeconds();
-            Scene s = loaded.withCamera(camera(loaded.camera()));
-            if (!quiet) {
-                for (String note : s.notes()) {
-                    err.println("strahl: note: " + note);
-                }
-                err.flush();
-            }
-            return render(s, settings, err);
-        } catch (SceneException e) {
-            err.println("strahl: " + e.getMessage());
-            return 2;
+        try (Interrupts irq = Interrupts.install(err)) {
+            return run(err, irq);
+        } catch (SceneException | CheckpointException e) {
+            return fail(err, e, e.getMessage(), 2);
         } catch (IllegalArgumentException e) {
-            err.println("strahl: " + e.getMessage());
-            return 2;
-        } catch (IOException e) {
-            err.println("strahl: cannot write " + output + ": " + e.getMessage());
-            return 1;
+            return fail(err, e, e.getMessage(), 2);
+        } catch (OutOfMemoryError e) {
+            return fail(err, e, "out of memory (the Java heap has at most " + HeapCheck.bytes(Runtime.getRuntime().maxMemory())
+                    + "): give Java more memory (java -Xmx...) or render a smaller scene or image", 1);
+        } catch (RenderFailure e) {
+            return fail(err, e.getCause(), e.getMessage(), 1);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            err.println("strahl: interrupted");
-            return 1;
+            return fail(err, e, "interrupted", 1);
+        }
+    }
+
+    private int fail(PrintWriter err, Throwable e, String message, int code) {
+        err.println("strahl: " + message);
+        if (debug.enabled && e != null) {
+            e.printStackTrace(err);
+        }
+        err.flush();
+        return code;
+    }
+
+    private int run(PrintWriter err, Interrupts irq) throws SceneException, CheckpointException, InterruptedException {
+        RenderSettings settings = settings();
+        if (fov != null && !(fov > 0 && fov < 180)) {
+            throw new IllegalArgumentException("--fov: the field of view must be in (0, 180) degrees, got " + fov);
+        }
+        checkOutput(output, "output");
+        if (statsFile != null) {
+            checkWritable(statsFile, "--stats");
+        }
+        Path checkpointFile = checkpoint != null ? checkpoint : resume;
+        if (checkpointFile != null) {
+            checkCheckpointFile(checkpointFile);
+        }
+        HeapCheck.checkFilm(width, height);
+        long loadStart = System.nanoTime();
+        Scene loaded = load();
+        loadSeconds = (System.nanoTime() - loadStart) * 1e-9 - loaded.bvhBuildSeconds();
+        Scene s = loaded.withCamera(camera(loaded.camera()));
+        settings = withSceneFile(loaded.settings());
+        if (settings.width() != width || settings.height() != height) {
+            HeapCheck.checkFilm(settings.width(), settings.height());          // the scene file's size
+        }
+        if (!quiet) {
+            for (String note : s.notes()) {
+                err.println("strahl: " + (note.startsWith("warning: ") ? note : "note: " + note));
+            }
+            err.flush();
+        }
+        Checkpoint identity = checkpointFile != null ? Checkpoint.of(s, settings) : null;
+        Checkpoint.Restored restored = resume != null ? restore(identity) : null;
+        if (restored != null && !quiet) {
+            err.println(String.format(Locale.ROOT, "strahl: resuming %s at %d spp (%.1f s rendered before)", resume,
+                    restored.samplesPerPixel(), restored.seconds()));
+            err.flush();
+        }
+        return render(s, settings, identity, checkpointFile, restored, err, irq);
+    }
+
+    private Scene load() throws SceneException {
+        try {
+            return SceneLoader.load(scene);
+        } catch (OutOfMemoryError e) {
+            throw new IllegalArgumentException(scene + ": the scene does not fit in the Java heap (at most "
+                    + HeapCheck.bytes(Runtime.getRuntime().maxMemory()) + "): give Java more memory (java -Xmx...)", e);
+        }
+    }
+
+    private Checkpoint.Restored restore(Checkpoint identity) throws CheckpointException {
+        try {
+            return identity.restore(resume);
+        } catch (IOException e) {
+            throw new CheckpointException(resume, "cannot read the checkpoint: " + e.getMessage());
         }
     }
 
     private RenderSettings settings() {
-        return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0, transport.integrator, transport.lightSamples,
-                timeLimit == null ? Duration.ZERO : timeLimit);
+        return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0,
+                transport.integrator, transport.lightSamples, timeLimit == null ? Duration.ZERO : timeLimit);
+    }
+
+    /**
+     * The scene file's film and integrator keys, overridden by every option given on the command
+     * line (an option left at its default does not override the file).
+     */
+    private RenderSettings withSceneFile(SceneSettings file) {
+        RenderSettings s;
+        try {
+            s = RenderSettings.defaults().withThreads(threads).withCullBackFaces(cullBackFaces)
+                    .withTimeLimit(timeLimit == null ? Duration.ZERO : timeLimit).withScene(file);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(scene + ": " + e.getMessage(), e);
+        }
+        CommandLine.ParseResult given = spec.commandLine().getParseResult();
+        if (given.hasMatchedOption("--width") || given.hasMatchedOption("--height")) {
+            s = s.withSize(given.hasMatchedOption("--width") ? width : s.width(), given.hasMatchedOption("--height") ? height : s.height());
+        }
+        if (given.hasMatchedOption("--spp")) {
+            s = s.withSamplesPerPixel(spp);
+        }
+        if (given.hasMatchedOption("--seed")) {
+            s = s.withSeed(seed);
+        }
+        if (given.hasMatchedOption("--max-depth")) {
+            s = s.withMaxDepth(transport.maxDepth);
+        }
+        if (given.hasMatchedOption("--integrator")) {
+            s = s.withIntegrator(transport.integrator);
+        }
+        if (given.hasMatchedOption("--hemisphere")) {
+            s = s.withHemisphere(transport.hemisphere);
+        }
+        if (given.hasMatchedOption("--light-samples")) {
+            s = s.withLightSamples(transport.lightSamples);
+        }
+        return s;
     }
 
     /** Refuses an unwritable output before spending time on the render. */
-    private void checkOutput() {
-        if (!ImageWriters.isSupported(output)) {
-            throw new IllegalArgumentException("unknown image format of " + output + ": use .png or .pfm");
+    private void checkOutput(Path file, String what) {
+        if (!ImageWriters.isSupported(file)) {
+            throw new IllegalArgumentException("unknown image format of " + file + ": use .png or .pfm");
         }
-        Path dir = output.toAbsolutePath().getParent();
+        checkWritable(file, what);
+    }
+
+    private void checkCheckpointFile(Path file) {
+        if (file.toAbsolutePath().normalize().equals(output.toAbsolutePath().normalize())) {
+            throw new IllegalArgumentException("the checkpoint " + file + " and the output image must be different files");
+        }
+        checkWritable(file, "checkpoint");
+    }
+
+    /** The directory must exist and take a new file: tried for real, since permissions alone do not tell (root, read-only mounts). */
+    private static void checkWritable(Path file, String what) {
+        Path dir = file.toAbsolutePath().getParent();
         if (dir == null || !Files.isDirectory(dir)) {
-            throw new IllegalArgumentException("output directory does not exist: " + dir);
+            throw new IllegalArgumentException(what + " directory does not exist: " + dir);
         }
-        if (!Files.isWritable(dir)) {
-            throw new IllegalArgumentException("output directory is not writable: " + dir);
+        if (Files.isDirectory(file)) {
+            throw new IllegalArgumentException(what + " " + file + " is a directory");
+        }
+        try {
+            Files.delete(Files.createTempFile(dir, ".strahl-write-test", ".tmp"));
+        } catch (IOException | SecurityException e) {
+            throw new IllegalArgumentException(what + " directory is not writable: " + dir);
         }
     }
 
@@ -155,41 +279,83 @@ final class RenderCommand implements Callable<Integer> {
                 up != null ? up : base.up(), fov != null ? fov : base.fovDegrees());
     }
 
-    private int render(Scene s, RenderSettings settings, PrintWriter err) throws IOException, InterruptedException {
+    private int render(Scene s, RenderSettings settings, Checkpoint identity, Path checkpointFile, Checkpoint.Restored restored,
+                       PrintWriter err, Interrupts irq) throws InterruptedException {
+        Film film = restored != null ? restored.film() : new Film(settings.width(), settings.height());
+        var saver = identity == null ? null
+                : new CheckpointSaver(identity, checkpointFile, film, checkpointInterval, restored, err);
         boolean showProgress = !quiet && Terminal.isStderrTerminal();
         ProgressBar bar = new ProgressBar(System.err);
         RenderStats stats;
-        Film film;
-        try (RenderJob job = RenderJob.start(s, settings)) {
+        try (RenderJob job = RenderJob.resume(s, settings, film, saver != null ? saver : new RenderListener() {})) {
+            if (saver != null) {
+                saver.attach(job);
+            }
+            irq.onFirstSignal(job::cancel);
             while (!job.await(200, TimeUnit.MILLISECONDS)) {
                 if (showProgress) {
                     bar.update(job.progress(), job.elapsedSeconds(), job.samplesDone());
                 }
             }
-            stats = job.awaitStats();
-            film = job.film();
+            try {
+                stats = job.awaitStats();
+            } catch (IllegalStateException e) {
+                throw new RenderFailure("the render failed: " + e.getCause(), e.getCause());
+            }
         } finally {
             if (showProgress) {
                 bar.finish();
             }
         }
-        ImageWriters.write(film, output);
+        try {
+            ImageWriters.write(film, output);
+        } catch (IOException | UncheckedIOException e) {
+            throw new RenderFailure("cannot write " + output + ": " + e.getMessage(), e);
+        }
         if (statsFile != null) {
             try {
                 StatsFile.write(statsFile, stats, settings, loadSeconds, s.bvhBuildSeconds());
             } catch (IOException e) {
-                err.println("strahl: cannot write " + statsFile + ": " + e.getMessage());
-                return 1;
+                throw new RenderFailure("cannot write " + statsFile + ": " + e.getMessage(), e);
             }
         }
-        if (!quiet) {
+        boolean savedCheckpoint = saver != null && saver.saveFinal(stats);
+        irq.written();
+        long invalid = stats.invalidSamples() + (restored != null ? restored.invalidSamples() : 0);
+        if (irq.interrupted()) {
+            err.println(String.format(Locale.ROOT, "strahl: interrupted at %d of %d spp after %.2f s: wrote %s%s",
+                    stats.samplesPerPixel(), settings.samplesPerPixel(), stats.seconds(), output,
+                    savedCheckpoint ? "; continue with --resume " + checkpointFile : ""));
+        } else if (!quiet) {
+            if (stats.samplesPerPixel() < settings.samplesPerPixel()) {
+                err.println("strahl: note: the time limit of " + limitText(timeLimit)
+                        + " ended the render at " + stats.samplesPerPixel() + " of " + settings.samplesPerPixel() + " spp"
+                        + (savedCheckpoint ? "; continue with --resume " + checkpointFile : ""));
+            }
             err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %d spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
-                    transport.integrator.id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
+                    settings.integrator().id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
                     ProgressBar.si(stats.samplesPerSecond()), ProgressBar.si(stats.raysPerSecond()), stats.threads(), output));
-            if (stats.invalidSamples() > 0) {
-                err.println("strahl: warning: " + stats.invalidSamples() + " samples were NaN or infinite and counted as black");
-            }
         }
-        return 0;
+        if (!quiet && invalid > 0) {
+            err.println("strahl: warning: " + invalid + " samples were NaN or infinite and counted as black");
+        }
+        err.flush();
+        return irq.interrupted() ? irq.exitCode() : 0;
+    }
+
+    /** "0.3 s", "90 s", "5:00", "1:30:00". */
+    static String limitText(Duration d) {
+        double seconds = d.toNanos() * 1e-9;
+        if (seconds >= 100) {
+            return ProgressBar.formatDuration(seconds);
+        }
+        return new BigDecimal(seconds).round(new MathContext(3)).stripTrailingZeros().toPlainString() + " s";
+    }
+
+    /** A failure while rendering or writing the result: exit code 1. */
+    static final class RenderFailure extends RuntimeException {
+        RenderFailure(String message, Throwable cause) {
+            super(message, cause);
+        }
     }
 }

@@ -8,7 +8,11 @@ import java.awt.AWTError;
 import java.awt.HeadlessException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.EnumSet;
+import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.Callable;
+import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Mixin;
@@ -32,7 +36,7 @@ final class ViewCommand implements Callable<Integer> {
     @Mixin
     TransportOptions transport;
 
-    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE", description = "Scene file: .json (strahl scene) or .obj (with its .mtl).")
+    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE", description = "Scene file: .json (strahl scene), .obj (with its .mtl) or .ply.")
     Path scene;
 
     @Option(names = "--width", defaultValue = "512", description = "Film width in pixels at start; resizing the window keeps the aspect (default: ${DEFAULT-VALUE}).")
@@ -58,16 +62,43 @@ final class ViewCommand implements Callable<Integer> {
             description = "Light or dark look; system follows the desktop where it can (default: ${DEFAULT-VALUE}).")
     String theme;
 
+    @Mixin
+    DebugOption debug;
+
+    /** What the options say; those given on the command line win over the scene file's settings. */
+    ViewerOptions options() {
+        return new ViewerOptions(scene, width, height, spp, transport.maxDepth, transport.hemisphere, threads, seed,
+                transport.integrator, transport.lightSamples, Theme.parse(theme), given());
+    }
+
+    private static final Map<String, ViewerOptions.Setting> SCENE_FILE_OPTIONS = Map.of(
+            "--width", ViewerOptions.Setting.WIDTH, "--height", ViewerOptions.Setting.HEIGHT,
+            "--max-depth", ViewerOptions.Setting.MAX_DEPTH, "--hemisphere", ViewerOptions.Setting.HEMISPHERE,
+            "--seed", ViewerOptions.Setting.SEED, "--integrator", ViewerOptions.Setting.INTEGRATOR,
+            "--light-samples", ViewerOptions.Setting.LIGHT_SAMPLES);
+
+    private Set<ViewerOptions.Setting> given() {
+        CommandLine.ParseResult parsed = spec.commandLine().getParseResult();
+        Set<ViewerOptions.Setting> given = EnumSet.noneOf(ViewerOptions.Setting.class);
+        SCENE_FILE_OPTIONS.forEach((option, setting) -> {
+            if (parsed.hasMatchedOption(option)) {
+                given.add(setting);
+            }
+        });
+        return given;
+    }
+
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         try {
-            ViewerOptions options = new ViewerOptions(scene, width, height, spp, transport.maxDepth, transport.hemisphere, threads, seed,
-                    transport.integrator, transport.lightSamples, Theme.parse(theme));
-            Viewer.open(options).awaitClosed();
+            Viewer.open(options()).awaitClosed();
             return 0;
         } catch (SceneException | IllegalArgumentException e) {
             err.println("strahl: " + e.getMessage());
+            if (debug.enabled) {
+                e.printStackTrace(err);
+            }
             return 2;
         } catch (HeadlessException e) {
             err.println("strahl: view needs a display: DISPLAY is not set, or java.awt.headless is true");

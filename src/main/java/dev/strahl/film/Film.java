@@ -20,6 +20,12 @@ public final class Film {
     private final double[] sum;
     private final int[] count;
 
+    /**
+     * An empty film.
+     *
+     * @param width  width in pixels, positive
+     * @param height height in pixels, positive
+     */
     public Film(int width, int height) {
         if (width <= 0 || height <= 0) {
             throw new IllegalArgumentException("film size must be positive, got " + width + "x" + height);
@@ -36,35 +42,75 @@ public final class Film {
         this.count = new int[(int) pixels];
     }
 
-    /** Bytes a film of this size needs, to refuse absurd sizes before allocating. */
+    /**
+     * Bytes a film of this size needs, to refuse absurd sizes before allocating.
+     *
+     * @param width  width in pixels
+     * @param height height in pixels
+     * @return the bytes of its buffers
+     */
     public static long bytesNeeded(int width, int height) {
         long tiles = (long) ((width + TILE - 1) / TILE) * ((height + TILE - 1) / TILE);
         return tiles * TILE * TILE * (3 * 8 + 4);
     }
 
+    /**
+     * The width.
+     *
+     * @return pixels
+     */
     public int width() {
         return width;
     }
 
+    /**
+     * The height.
+     *
+     * @return pixels
+     */
     public int height() {
         return height;
     }
 
+    /**
+     * Tiles per row.
+     *
+     * @return the count
+     */
     public int tileCountX() {
         return tilesX;
     }
 
+    /**
+     * Tiles per column.
+     *
+     * @return the count
+     */
     public int tileCountY() {
         return (height + TILE - 1) / TILE;
     }
 
-    /** Index of pixel (x, y) in the tile-major layout. */
+    /**
+     * Index of pixel (x, y) in the tile-major layout.
+     *
+     * @param x column, from 0
+     * @param y row, from 0 at the top
+     * @return the index for {@link #add}
+     */
     public int pixelIndex(int x, int y) {
         int tile = (y / TILE) * tilesX + x / TILE;
         return tile * TILE * TILE + (y % TILE) * TILE + (x % TILE);
     }
 
-    /** Adds one sample's radiance to a pixel given by {@link #pixelIndex}. */
+    /**
+     * Adds one sample's radiance to a pixel given by {@link #pixelIndex}. Not thread-safe: each
+     * pixel must be written by one thread at a time.
+     *
+     * @param pixelIndex the pixel
+     * @param r          red radiance
+     * @param g          green radiance
+     * @param b          blue radiance
+     */
     public void add(int pixelIndex, double r, double g, double b) {
         int k = 3 * pixelIndex;
         sum[k] += r;
@@ -73,12 +119,89 @@ public final class Film {
         count[pixelIndex]++;
     }
 
-    /** Number of samples pixel (x, y) has received. */
+    /**
+     * Number of samples pixel (x, y) has received.
+     *
+     * @param x column
+     * @param y row
+     * @return the count
+     */
     public int sampleCount(int x, int y) {
         return count[pixelIndex(x, y)];
     }
 
-    /** The mean radiance per pixel, in row-major order; pixels without samples are black. */
+    /**
+     * Number of samples a pixel has received.
+     *
+     * @param pixelIndex the pixel, as given by {@link #pixelIndex}
+     * @return the count
+     */
+    public int sampleCountAt(int pixelIndex) {
+        return count[pixelIndex];
+    }
+
+    /**
+     * The fewest samples any pixel has received: every pixel holds at least this many.
+     *
+     * @return the smallest sample count
+     */
+    public int minSampleCount() {
+        int min = Integer.MAX_VALUE;
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                min = Math.min(min, count[pixelIndex(x, y)]);
+            }
+        }
+        return min;
+    }
+
+    /**
+     * The saved state of pixel (x, y), for checkpoints: its r, g, b sums go into
+     * {@code sumsDest[0..2]}, and its sample count is returned. Only consistent while nothing
+     * renders into the film (between passes, or after the render).
+     *
+     * @param x        column
+     * @param y        row
+     * @param sumsDest receives the r, g, b sums
+     * @return the pixel's sample count
+     */
+    public int pixelState(int x, int y, double[] sumsDest) {
+        int p = pixelIndex(x, y);
+        sumsDest[0] = sum[3 * p];
+        sumsDest[1] = sum[3 * p + 1];
+        sumsDest[2] = sum[3 * p + 2];
+        return count[p];
+    }
+
+    /**
+     * Sets pixel (x, y) to a state saved by {@link #pixelState}: the sums of its first
+     * {@code samples} samples. Rendering then continues each pixel from the sample index it has
+     * reached, so a restored film gives the same bits as one that was never saved.
+     *
+     * @param x       column
+     * @param y       row
+     * @param samples the pixel's sample count
+     * @param r       the sum of its red values
+     * @param g       the sum of its green values
+     * @param b       the sum of its blue values
+     * @throws IllegalArgumentException if {@code samples} is negative
+     */
+    public void restorePixel(int x, int y, int samples, double r, double g, double b) {
+        if (samples < 0) {
+            throw new IllegalArgumentException("sample count must not be negative, got " + samples);
+        }
+        int p = pixelIndex(x, y);
+        sum[3 * p] = r;
+        sum[3 * p + 1] = g;
+        sum[3 * p + 2] = b;
+        count[p] = samples;
+    }
+
+    /**
+     * The mean radiance per pixel, in row-major order; pixels without samples are black.
+     *
+     * @return a new image
+     */
     public Image toImage() {
         float[] rgb = new float[3 * width * height];
         for (int y = 0; y < height; y++) {

@@ -5,9 +5,20 @@ import java.util.Arrays;
 /**
  * A linear HDR image: {@code rgb} holds r, g, b floats per pixel, row by row from the top-left
  * pixel (film y grows downwards). Immutable: the array is copied in and out.
+ *
+ * @param width  width in pixels, positive
+ * @param height height in pixels, positive
+ * @param rgb    3 · width · height floats, linear radiance
  */
 public record Image(int width, int height, float[] rgb) {
 
+    /**
+     * Checks the size against the array and copies it.
+     *
+     * @param width  width in pixels, positive
+     * @param height height in pixels, positive
+     * @param rgb    3 · width · height floats, linear radiance
+     */
     public Image {
         if (width <= 0 || height <= 0) {
             throw new IllegalArgumentException("image size must be positive, got " + width + "x" + height);
@@ -18,17 +29,43 @@ public record Image(int width, int height, float[] rgb) {
         rgb = rgb.clone();
     }
 
+    /**
+     * The pixels: r, g, b per pixel, row by row from the top-left pixel, linear radiance.
+     *
+     * @return a copy
+     */
     @Override
     public float[] rgb() {
         return rgb.clone();
     }
 
-    /** Channel c (0 = r, 1 = g, 2 = b) of pixel (x, y). */
+    /**
+     * The image for display: sRGB-encoded, clamped, 8 bits per channel, exposure 0 (as the PNG
+     * writer stores it; see {@link Tonemap#toBufferedImage}).
+     *
+     * @return a new {@link java.awt.image.BufferedImage#TYPE_INT_RGB} image
+     */
+    public java.awt.image.BufferedImage toBufferedImage() {
+        return Tonemap.toBufferedImage(this, 0);
+    }
+
+    /**
+     * One channel of one pixel.
+     *
+     * @param x column, from 0
+     * @param y row, from 0 at the top
+     * @param c channel: 0 = r, 1 = g, 2 = b
+     * @return the value
+     */
     public float get(int x, int y, int c) {
         return rgb[3 * (y * width + x) + c];
     }
 
-    /** The mean of each channel over the image. */
+    /**
+     * The mean of each channel over the image.
+     *
+     * @return {r, g, b}
+     */
     public double[] mean() {
         double[] m = new double[3];
         for (int i = 0; i < rgb.length; i++) {
@@ -38,7 +75,12 @@ public record Image(int width, int height, float[] rgb) {
         return new double[] {m[0] / n, m[1] / n, m[2] / n};
     }
 
-    /** The image box-filtered by an integer factor (each output pixel is the mean of factor² pixels). */
+    /**
+     * The image box-filtered by an integer factor (each output pixel is the mean of factor² pixels).
+     *
+     * @param factor divides both width and height
+     * @return the smaller image
+     */
     public Image downsample(int factor) {
         if (factor <= 0 || width % factor != 0 || height % factor != 0) {
             throw new IllegalArgumentException("cannot downsample " + width + "x" + height + " by " + factor);
@@ -65,6 +107,9 @@ public record Image(int width, int height, float[] rgb) {
     /**
      * Relative mean squared error against a reference: mean over pixels and channels of
      * (this − ref)² / (ref² + 0.01), the measure used with the reference images.
+     *
+     * @param ref the reference, of the same size
+     * @return the relative MSE
      */
     public double relMse(Image ref) {
         if (ref.width != width || ref.height != height) {

@@ -152,6 +152,45 @@ public final class Geometry {
         return triFlags;
     }
 
+    /**
+     * Feeds every primitive array into {@code md}, so that a digest identifies the geometry's
+     * content (used to tie a render checkpoint to its scene). Not on any hot path.
+     */
+    public void digest(java.security.MessageDigest md) {
+        var buf = java.nio.ByteBuffer.allocate(1 << 16);
+        buf.putInt(triangleCount).putInt(sphereCount).putInt(nrm == null ? 0 : 1);
+        for (float f : pos) {
+            digestFlush(md, buf, 4).putFloat(f);
+        }
+        for (int i : tri) {
+            digestFlush(md, buf, 4).putInt(i);
+        }
+        for (float f : nrm == null ? new float[0] : nrm) {
+            digestFlush(md, buf, 4).putInt(Float.floatToIntBits(f));
+        }
+        for (int i : triMaterial) {
+            digestFlush(md, buf, 4).putInt(i);
+        }
+        for (byte b : triFlags) {
+            digestFlush(md, buf, 1).put(b);
+        }
+        for (double d : sph) {
+            digestFlush(md, buf, 8).putDouble(d);
+        }
+        for (int i : sphMaterial) {
+            digestFlush(md, buf, 4).putInt(i);
+        }
+        md.update(buf.flip());
+    }
+
+    private static java.nio.ByteBuffer digestFlush(java.security.MessageDigest md, java.nio.ByteBuffer buf, int need) {
+        if (buf.remaining() < need) {
+            md.update(buf.flip());
+            buf.clear();
+        }
+        return buf;
+    }
+
     /** Grows {@code box} by the bounds of a primitive. */
     public void includeBounds(int prim, Aabb box) {
         if (prim < triangleCount) {

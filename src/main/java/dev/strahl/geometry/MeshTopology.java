@@ -1,11 +1,13 @@
 package dev.strahl.geometry;
 
-import java.util.HashMap;
-import java.util.Map;
+import java.util.Arrays;
 
 /**
  * Tells which parts of a mesh are closed, consistently oriented and facing outwards: the parts
  * whose back faces no ray from outside can reach, so that back-face culling is safe on them.
+ *
+ * <p>Works on sorted primitive arrays (welding and edge matching are sorts and binary searches),
+ * so a million-triangle mesh takes a fraction of a second and no boxed map entries.
  */
 public final class MeshTopology {
     private MeshTopology() {}
@@ -16,29 +18,45 @@ public final class MeshTopology {
      * occurs once and its twin b→a occurs once, and the enclosed signed volume is positive.
      */
     public static boolean[] closedOutwardGroups(float[] positions, int[] indices, int[] group, int groupCount) {
+        int triangles = indices.length / 3;
         int[] weld = weld(positions);
-        boolean[] closed = new boolean[groupCount];
+
+        // Triangles bucketed by group (a counting sort), so that each group is one contiguous run.
+        int[] start = new int[groupCount + 1];
+        for (int t = 0; t < triangles; t++) {
+            start[group[t] + 1]++;
+        }
         for (int g = 0; g < groupCount; g++) {
-            closed[g] = isClosedOutward(positions, indices, weld, group, g);
+            start[g + 1] += start[g];
+        }
+        int[] byGroup = new int[triangles];
+        int[] fill = Arrays.copyOf(start, groupCount);
+        for (int t = 0; t < triangles; t++) {
+            byGroup[fill[group[t]]++] = t;
+        }
+
+        boolean[] closed = new boolean[groupCount];
+        long[] edges = new long[3 * triangles];
+        for (int g = 0; g < groupCount; g++) {
+            closed[g] = isClosedOutward(positions, indices, weld, byGroup, start[g], start[g + 1], edges);
         }
         return closed;
     }
 
-    private static boolean isClosedOutward(float[] p, int[] idx, int[] weld, int[] group, int g) {
-        Map<Long, Integer> edges = new HashMap<>();
+    /** The test for the triangles byGroup[from..to); {@code edges} is scratch of at least 3 entries per triangle. */
+    private static boolean isClosedOutward(float[] p, int[] idx, int[] weld, int[] byGroup, int from, int to, long[] edges) {
+        int count = to - from;
+        if (count < 4) {
+            return false;
+        }
         double volume = 0;
-        int triangles = 0;
-        for (int t = 0; t < idx.length / 3; t++) {
-            if (group[t] != g) {
-                continue;
-            }
-            triangles++;
-            for (int k = 0; k < 3; k++) {
-                long a = weld[idx[3 * t + k]];
-                long b = weld[idx[3 * t + (k + 1) % 3]];
-                if (edges.merge((a << 32) | b, 1, Integer::sum) > 1) {
-                    return false;                      // the same directed edge twice: not a 2-manifold
-                }
+        int e = 0;
+        for (int k = from; k < to; k++) {
+            int t = byGroup[k];
+            for (int c = 0; c < 3; c++) {
+                long a = weld[idx[3 * t + c]];
+                long b = weld[idx[3 * t + (c + 1) % 3]];
+                edges[e++] = (a << 32) | b;
             }
             int i0 = 3 * idx[3 * t], i1 = 3 * idx[3 * t + 1], i2 = 3 * idx[3 * t + 2];
             // Signed volume of the tetrahedron (origin, v0, v1, v2): v0 · (v1 × v2) / 6.
@@ -47,29 +65,85 @@ public final class MeshTopology {
             double cz = (double) p[i1] * p[i2 + 1] - (double) p[i1 + 1] * p[i2];
             volume += (p[i0] * cx + p[i0 + 1] * cy + p[i0 + 2] * cz) / 6;
         }
-        if (triangles < 4) {
-            return false;
+        Arrays.sort(edges, 0, e);
+        for (int i = 1; i < e; i++) {
+            if (edges[i] == edges[i - 1]) {
+                return false;                          // the same directed edge twice: not a 2-manifold
+            }
         }
-        for (long key : edges.keySet()) {
-            long twin = (key << 32) | (key >>> 32);
-            if (!edges.containsKey(twin)) {
-                return false;
+        for (int i = 0; i < e; i++) {
+            long twin = (edges[i] << 32) | (edges[i] >>> 32);
+            if (Arrays.binarySearch(edges, 0, e, twin) < 0) {
+                return false;                          // an edge without its opposite: a hole or a flipped face
             }
         }
         return volume > 0;
     }
 
-    /** Maps each vertex to the first vertex with exactly the same position (-0 and +0 are the same). */
+    /**
+     * Maps each vertex to a weld id shared by exactly the vertices with the same position (-0 and
+     * +0 count as equal): vertices sorted by their coordinate bits, equal runs get one id.
+     */
     private static int[] weld(float[] positions) {
         int n = positions.length / 3;
         int[] weld = new int[n];
-        Map<String, Integer> first = new HashMap<>();
+        if (n == 0) {
+            return weld;
+        }
+        // Sort keys: the x and y bits in one long, the z bits in a second.
+        long[] xy = new long[n];
+        long[] zv = new long[n];
         for (int v = 0; v < n; v++) {
-            // x + 0.0f turns -0.0f into +0.0f, whose bits differ although the positions are equal
-            String key = Float.floatToIntBits(positions[3 * v] + 0.0f) + "," + Float.floatToIntBits(positions[3 * v + 1] + 0.0f)
-                    + "," + Float.floatToIntBits(positions[3 * v + 2] + 0.0f);
-            weld[v] = first.computeIfAbsent(key, k -> first.size());
+            xy[v] = ((long) bits(positions[3 * v]) << 32) | (bits(positions[3 * v + 1]) & 0xffffffffL);
+            zv[v] = bits(positions[3 * v + 2]);
+        }
+        int[] perm = sortedIndices(xy, zv);
+        int id = -1;
+        for (int k = 0; k < n; k++) {
+            int v = perm[k];
+            if (k == 0 || xy[v] != xy[perm[k - 1]] || zv[v] != zv[perm[k - 1]]) {
+                id++;
+            }
+            weld[v] = id;
         }
         return weld;
+    }
+
+    /** Coordinate bits with -0 folded into +0 ({@code x + 0.0f} turns -0.0f into +0.0f). */
+    private static int bits(float x) {
+        return Float.floatToIntBits(x + 0.0f);
+    }
+
+    /** The vertex indices ordered by (primary, secondary) key, by a merge sort on int indices. */
+    private static int[] sortedIndices(long[] primary, long[] secondary) {
+        int n = primary.length;
+        int[] a = new int[n];
+        for (int i = 0; i < n; i++) {
+            a[i] = i;
+        }
+        int[] b = new int[n];
+        for (int width = 1; width < n; width *= 2) {
+            for (int lo = 0; lo < n; lo += 2 * width) {
+                int mid = Math.min(lo + width, n), hi = Math.min(lo + 2 * width, n);
+                int i = lo, j = mid, k = lo;
+                while (i < mid && j < hi) {
+                    b[k++] = less(primary, secondary, a[j], a[i]) ? a[j++] : a[i++];
+                }
+                while (i < mid) {
+                    b[k++] = a[i++];
+                }
+                while (j < hi) {
+                    b[k++] = a[j++];
+                }
+            }
+            int[] tmp = a;
+            a = b;
+            b = tmp;
+        }
+        return a;
+    }
+
+    private static boolean less(long[] primary, long[] secondary, int u, int v) {
+        return primary[u] != primary[v] ? primary[u] < primary[v] : secondary[u] < secondary[v];
     }
 }

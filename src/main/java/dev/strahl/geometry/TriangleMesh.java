@@ -7,9 +7,20 @@ import java.util.Arrays;
  * (three vertex indices per triangle) and optional per-vertex {@code normals} (same layout as
  * positions; {@code null} when the mesh has none, NaN triples for single vertices without one).
  * Arrays are copied on construction so that the mesh is immutable.
+ *
+ * @param positions x, y, z per vertex, finite
+ * @param indices   three vertex indices per triangle, each in [0, vertex count)
+ * @param normals   x, y, z per vertex, or null
  */
 public record TriangleMesh(float[] positions, int[] indices, float[] normals) {
 
+    /**
+     * Checks the array lengths, the indices and that positions are finite; copies the arrays.
+     *
+     * @param positions x, y, z per vertex, finite
+     * @param indices   three vertex indices per triangle, each in [0, vertex count)
+     * @param normals   x, y, z per vertex, or null
+     */
     public TriangleMesh {
         if (positions.length % 3 != 0) {
             throw new IllegalArgumentException("positions must hold x, y, z triples, got length " + positions.length);
@@ -36,24 +47,49 @@ public record TriangleMesh(float[] positions, int[] indices, float[] normals) {
         normals = normals == null ? null : normals.clone();
     }
 
+    /**
+     * The number of triangles.
+     *
+     * @return indices.length / 3
+     */
     public int triangleCount() {
         return indices.length / 3;
     }
 
+    /**
+     * The number of vertices.
+     *
+     * @return positions.length / 3
+     */
     public int vertexCount() {
         return positions.length / 3;
     }
 
+    /**
+     * The positions.
+     *
+     * @return a copy
+     */
     @Override
     public float[] positions() {
         return positions.clone();
     }
 
+    /**
+     * The indices.
+     *
+     * @return a copy
+     */
     @Override
     public int[] indices() {
         return indices.clone();
     }
 
+    /**
+     * The normals.
+     *
+     * @return a copy, or null
+     */
     @Override
     public float[] normals() {
         return normals == null ? null : normals.clone();

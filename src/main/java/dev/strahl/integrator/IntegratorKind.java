@@ -13,7 +13,11 @@ public enum IntegratorKind {
     /** Recursive (Whitted) ray tracing: specular reflection and refraction, direct light with soft shadows, no indirect diffuse light. */
     WHITTED;
 
-    /** The name used on the command line and in scene files. */
+    /**
+     * The name used on the command line and in scene files.
+     *
+     * @return the lower-case name, e.g. "path"
+     */
     public String id() {
         return name().toLowerCase(Locale.ROOT);
     }
@@ -21,7 +25,12 @@ public enum IntegratorKind {
     /**
      * Creates the integrator.
      *
+     * @param scene         the scene it renders
+     * @param maxDepth      path segments including the camera segment; -1 for unbounded
+     * @param hemisphere    how diffuse bounces are sampled
+     * @param cullBackFaces whether camera and continuation rays skip back faces of closed meshes
      * @param lightSamples shadow rays per diffuse or glossy hit (DIRECT and WHITTED; PATH takes one)
+     * @return the integrator (internal)
      */
     public Integrator create(Scene scene, int maxDepth, HemisphereSampling hemisphere, boolean cullBackFaces, int lightSamples) {
         return switch (this) {

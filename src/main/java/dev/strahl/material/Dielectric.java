@@ -32,6 +32,11 @@ import org.joml.Vector3dc;
  */
 public record Dielectric(double eta) implements Bsdf {
 
+    /**
+     * Checks that eta is positive and finite.
+     *
+     * @param eta index of refraction of the inside relative to the outside, positive
+     */
     public Dielectric {
         if (!(eta > 0) || !Double.isFinite(eta)) {
             throw new IllegalArgumentException("index of refraction must be a positive finite number, got " + eta);

@@ -50,6 +50,14 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, HemisphereSampling
     /** Kd + Ks may exceed 1 by this much, the round-off of the normalisation in the factory. */
     private static final double ENERGY_TOLERANCE = 1e-9;
 
+    /**
+     * Checks the colours (energy conservation) and the roughness.
+     *
+     * @param diffuse  Kd, the diffuse albedo, channels ≥ 0
+     * @param specular Ks, the reflectance of the microfacet mirror, channels ≥ 0; every channel of Kd + Ks at most 1
+     * @param alpha    Beckmann roughness α &gt; 0, the root-mean-square slope of the microfacets
+     * @param sampling how the diffuse lobe picks directions
+     */
     public Glossy {
         Objects.requireNonNull(diffuse, "diffuse");
         Objects.requireNonNull(specular, "specular");
@@ -73,7 +81,10 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, HemisphereSampling
      * albedo never exceeds 1 while the ratio of the colours is kept. Cosine-weighted diffuse
      * sampling.
      *
+     * @param kd diffuse Kd, channels ≥ 0
+     * @param ks specular Ks, channels ≥ 0
      * @param ns Phong exponent, ≥ 0
+     * @return the BSDF
      */
     public static Glossy fromPhongExponent(Rgb kd, Rgb ks, double ns) {
         if (!(ns >= 0) || !Double.isFinite(ns)) {
@@ -87,7 +98,12 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, HemisphereSampling
         return new Glossy(kd, ks, alphaFromPhongExponent(ns), HemisphereSampling.COSINE);
     }
 
-    /** Beckmann α for a Phong exponent: α = sqrt(2 / (Ns + 2)) (Walter et al. 2007). */
+    /**
+     * Beckmann α for a Phong exponent: α = sqrt(2 / (Ns + 2)) (Walter et al. 2007).
+     *
+     * @param ns Phong exponent, ≥ 0
+     * @return α
+     */
     public static double alphaFromPhongExponent(double ns) {
         return Math.sqrt(2 / (ns + 2));
     }

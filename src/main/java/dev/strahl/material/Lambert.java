@@ -10,10 +10,19 @@ import org.joml.Vector3dc;
  * Lambertian diffuse reflection: f = albedo / π on the side of wo, zero for transmission.
  * Sampled cosine-weighted (pdf = cosθ/π, weight = albedo) or uniformly (pdf = 1/(2π),
  * weight = 2·albedo·cosθ).
+ *
+ * @param albedo   reflectance, each channel in [0, 1]
+ * @param sampling how directions are sampled
  */
 public record Lambert(Rgb albedo, HemisphereSampling sampling) implements Bsdf {
     private static final double INV_PI = 1 / Math.PI;
 
+    /**
+     * Checks that the albedo lies in [0, 1].
+     *
+     * @param albedo   reflectance, each channel in [0, 1]
+     * @param sampling how directions are sampled
+     */
     public Lambert {
         Objects.requireNonNull(albedo, "albedo");
         Objects.requireNonNull(sampling, "sampling");
@@ -22,6 +31,11 @@ public record Lambert(Rgb albedo, HemisphereSampling sampling) implements Bsdf {
         }
     }
 
+    /**
+     * Cosine-weighted sampling.
+     *
+     * @param albedo reflectance, each channel in [0, 1]
+     */
     public Lambert(Rgb albedo) {
         this(albedo, HemisphereSampling.COSINE);
     }

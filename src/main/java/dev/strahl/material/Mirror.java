@@ -16,6 +16,11 @@ import org.joml.Vector3dc;
  */
 public record Mirror(Rgb reflectance) implements Bsdf {
 
+    /**
+     * Checks that the reflectance lies in [0, 1].
+     *
+     * @param reflectance Ks, each channel in [0, 1]
+     */
     public Mirror {
         Objects.requireNonNull(reflectance, "reflectance");
         if (reflectance.r() < 0 || reflectance.g() < 0 || reflectance.b() < 0 || reflectance.max() > 1) {

@@ -51,14 +51,17 @@ public final class RenderJob implements AutoCloseable {
     private final WorkerState[] workers;
     private volatile boolean cancelled;
     private volatile int completedSpp;
+    private volatile long restoredSamples;           // held by a resumed film before this job began
+    /** The mean image at the end of the last completed pass: what {@link #snapshot()} returns. */
+    private volatile Image lastPass;
     private final long startNanos;
     /** Stratified sample mode of {@link Rng} (the default), or plain streams with {@code -Dstrahl.sampler=independent}. */
     private final boolean stratified = !"independent".equals(System.getProperty("strahl.sampler"));
 
-    private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener) {
+    private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener, Film film) {
         this.settings = settings;
         this.listener = listener;
-        this.film = new Film(settings.width(), settings.height());
+        this.film = film != null ? film : new Film(settings.width(), settings.height());
         this.cameraRays = scene.camera().rays(settings.width(), settings.height());
         this.integrator = integrator;
         this.threads = settings.effectiveThreads();
@@ -76,12 +79,25 @@ public final class RenderJob implements AutoCloseable {
         this.startNanos = System.nanoTime();
     }
 
-    /** Starts rendering {@code scene} in the background. */
+    /**
+     * Starts rendering {@code scene} in the background.
+     *
+     * @param scene    the scene, shared read-only
+     * @param settings how to render
+     * @return the running job; close it (or wait for it) when done
+     */
     public static RenderJob start(Scene scene, RenderSettings settings) {
         return start(scene, settings, new RenderListener() {});
     }
 
-    /** Starts rendering {@code scene} in the background, reporting to {@code listener}. */
+    /**
+     * Starts rendering {@code scene} in the background, reporting to {@code listener}.
+     *
+     * @param scene    the scene, shared read-only
+     * @param settings how to render
+     * @param listener hears about every pass and the end, on a render thread
+     * @return the running job; close it (or wait for it) when done
+     */
     public static RenderJob start(Scene scene, RenderSettings settings, RenderListener listener) {
         Objects.requireNonNull(settings, "settings");
         Integrator integrator = settings.integrator().create(scene, settings.maxDepth(), settings.hemisphere(),
@@ -92,50 +108,132 @@ public final class RenderJob implements AutoCloseable {
     /**
      * Starts rendering with a given integrator (made for this scene); the settings' integrator
      * choice is then ignored.
+     * (internal: {@link Integrator} is not part of the stable API).
+     *
+     * @param scene      the scene, shared read-only
+     * @param settings   how to render
+     * @param integrator the integrator, made for this scene
+     * @param listener   hears about every pass and the end
+     * @return the running job
      */
     public static RenderJob start(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener) {
         Objects.requireNonNull(scene, "scene");
         Objects.requireNonNull(settings, "settings");
         Objects.requireNonNull(integrator, "integrator");
         Objects.requireNonNull(listener, "listener");
-        RenderJob job = new RenderJob(scene, settings, integrator, listener);
+        return launch(new RenderJob(scene, settings, integrator, listener, null));
+    }
+
+    /**
+     * Continues a render into {@code film}, which holds the state of an earlier one with the same
+     * scene and settings (restored from a checkpoint, see {@link Film#restorePixel}). Each pixel
+     * goes on from the sample index it has reached, and the samples of a pixel are added in index
+     * order as always, so the result is bit-identical to a render that was never interrupted.
+     * The listener may read {@code film} in {@link RenderListener#passCompleted}: no worker writes
+     * to it until that returns. A new, empty film starts a render from the beginning.
+     *
+     * @param scene    the scene, shared read-only; the same as the earlier render's
+     * @param settings how to render; the same as the earlier render's, except perhaps a higher
+     *                 sample count, another thread count, pass size or time limit
+     * @param film     the film to go on filling, of the settings' size
+     * @param listener hears about every pass and the end
+     * @return the running job
+     * @throws IllegalArgumentException if the film's size is not the settings'
+     */
+    public static RenderJob resume(Scene scene, RenderSettings settings, Film film, RenderListener listener) {
+        Objects.requireNonNull(scene, "scene");
+        Objects.requireNonNull(settings, "settings");
+        Objects.requireNonNull(film, "film");
+        Objects.requireNonNull(listener, "listener");
+        if (film.width() != settings.width() || film.height() != settings.height()) {
+            throw new IllegalArgumentException("film " + film.width() + "x" + film.height() + " does not match the settings' "
+                    + settings.width() + "x" + settings.height());
+        }
+        Integrator integrator = settings.integrator().create(scene, settings.maxDepth(), settings.hemisphere(),
+                settings.cullBackFaces(), settings.lightSamples());
+        return launch(new RenderJob(scene, settings, integrator, listener, film));
+    }
+
+    private static RenderJob launch(RenderJob job) {
         Thread coordinator = new Thread(job::run, "strahl-render-" + JOB_NUMBER.get());
         coordinator.setDaemon(true);
         coordinator.start();
         return job;
     }
 
+    /**
+     * The settings the job was started with.
+     *
+     * @return the settings
+     */
     public RenderSettings settings() {
         return settings;
     }
 
-    /** The film being filled; see {@link Film#toImage()} for reading it while rendering goes on. */
+    /**
+     * The film being filled. Read it when the job is done; while it renders, use {@link #snapshot()}.
+     *
+     * @return the film
+     */
     public Film film() {
         return film;
     }
 
-    /** The mean image of all samples taken so far. */
+    /**
+     * A consistent image of the render so far: the mean of all samples of the passes completed
+     * up to now, every pixel with the same sample count (black before the first pass ends).
+     * Safe to call from any thread at any time; the render goes on meanwhile. Use
+     * {@link Image#rgb()} for linear float RGB and {@link Image#toBufferedImage()} for display.
+     *
+     * @return the image, immutable
+     */
     public Image snapshot() {
-        return film.toImage();
+        Image image = lastPass;
+        return image != null ? image : new Image(settings.width(), settings.height(), new float[3 * settings.width() * settings.height()]);
     }
 
-    /** Samples per pixel of all completed passes. */
+    /**
+     * Samples per pixel of all completed passes.
+     *
+     * @return the count
+     */
     public int completedSamplesPerPixel() {
         return completedSpp;
     }
 
-    /** Fraction of the requested samples taken, in [0, 1]. */
+    /**
+     * Fraction of the requested samples taken.
+     *
+     * @return a number in [0, 1]
+     */
     public double progress() {
         double total = (double) settings.samplesPerPixel() * settings.width() * settings.height();
-        return Math.min(1, samplesDone.get() / total);
+        return Math.min(1, (restoredSamples + samplesDone.get()) / total);
     }
 
-    /** Camera samples taken so far. */
+    /**
+     * Camera samples taken so far by this job (not counting those of a resumed film).
+     *
+     * @return the count
+     */
     public long samplesDone() {
         return samplesDone.get();
     }
 
-    /** Seconds since the job started. */
+    /**
+     * Samples of this job whose radiance was NaN or infinite (added to the film as black).
+     *
+     * @return the count so far
+     */
+    public long invalidSamples() {
+        return invalidSamples.get();
+    }
+
+    /**
+     * Time since the job started.
+     *
+     * @return seconds
+     */
     public double elapsedSeconds() {
         return (System.nanoTime() - startNanos) * 1e-9;
     }
@@ -145,17 +243,34 @@ public final class RenderJob implements AutoCloseable {
         cancelled = true;
     }
 
+    /**
+     * Whether the render has ended (completed, cancelled or failed).
+     *
+     * @return true once it has ended
+     */
     public boolean isDone() {
         return result.isDone();
     }
 
-    /** Waits for the render to end and returns its film. */
+    /**
+     * Waits for the render to end and returns its film.
+     *
+     * @return the film
+     * @throws InterruptedException if the waiting thread is interrupted
+     */
     public Film awaitCompletion() throws InterruptedException {
         awaitStats();
         return film;
     }
 
-    /** Waits up to the given time for the render to end; returns whether it has. */
+    /**
+     * Waits up to the given time for the render to end.
+     *
+     * @param timeout how long to wait at most
+     * @param unit    the unit of {@code timeout}
+     * @return whether it has ended
+     * @throws InterruptedException if the waiting thread is interrupted
+     */
     public boolean await(long timeout, TimeUnit unit) throws InterruptedException {
         try {
             result.get(timeout, unit);
@@ -167,7 +282,13 @@ public final class RenderJob implements AutoCloseable {
         return true;
     }
 
-    /** Waits for the render to end and returns its figures. */
+    /**
+     * Waits for the render to end and returns its figures.
+     *
+     * @return the figures
+     * @throws InterruptedException if the waiting thread is interrupted
+     * @throws IllegalStateException if the render failed
+     */
     public RenderStats awaitStats() throws InterruptedException {
         try {
             return result.get();
@@ -192,7 +313,12 @@ public final class RenderJob implements AutoCloseable {
     private void run() {
         try {
             int spp = settings.samplesPerPixel();
-            int start = 0;
+            int start = film.minSampleCount();             // 0, unless the film was restored
+            completedSpp = Math.min(start, spp);
+            restoredSamples = samplesIn(film);
+            if (restoredSamples > 0) {
+                lastPass = film.toImage();                 // what the restored film holds, until a pass ends
+            }
             int pass = 0;
             while (start < spp && !cancelled) {
                 int size = settings.samplesPerPass() > 0 ? settings.samplesPerPass() : autoPassSize(pass);
@@ -202,7 +328,10 @@ public final class RenderJob implements AutoCloseable {
                     break;
                 }
                 completedSpp = end;
-                listener.passCompleted(end, film.toImage());
+                Image image = film.toImage();
+                lastPass = image;
+                double seconds = elapsedSeconds();
+                listener.passFinished(new RenderListener.Pass(pass + 1, end, samplesDone.get(), seconds), image);
                 start = end;
                 pass++;
                 if (!settings.timeLimit().isZero() && elapsedSeconds() >= settings.timeLimit().toNanos() * 1e-9) {
@@ -217,6 +346,16 @@ public final class RenderJob implements AutoCloseable {
         } finally {
             pool.shutdownNow();
         }
+    }
+
+    private static long samplesIn(Film film) {
+        long n = 0;
+        for (int y = 0; y < film.height(); y++) {
+            for (int x = 0; x < film.width(); x++) {
+                n += film.sampleCount(x, y);
+            }
+        }
+        return n;
     }
 
     /** Passes of 1, 1, 2, 4, 8 and then 16 samples per pixel: a first image at once, little overhead later. */
@@ -254,9 +393,13 @@ public final class RenderJob implements AutoCloseable {
             int y1 = Math.min(y0 + Film.TILE, film.height());
             long invalid = 0;
             for (int y = y0; y < y1 && !cancelled; y++) {
+                long rowSamples = 0;
                 for (int x = x0; x < x1; x++) {
                     int pixel = film.pixelIndex(x, y);
-                    for (int s = firstSample; s < endSample; s++) {
+                    // a restored film may hold more samples in some pixels: they go on from there
+                    int s0 = Math.max(firstSample, film.sampleCountAt(pixel));
+                    rowSamples += Math.max(0, endSample - s0);
+                    for (int s = s0; s < endSample; s++) {
                         if (stratified) {
                             w.rng.startSample(seed, x, y, s);
                         } else {
@@ -272,7 +415,7 @@ public final class RenderJob implements AutoCloseable {
                         }
                     }
                 }
-                samplesDone.addAndGet((long) (x1 - x0) * (endSample - firstSample));
+                samplesDone.addAndGet(rowSamples);
             }
             if (invalid > 0) {
                 invalidSamples.addAndGet(invalid);

@@ -14,10 +14,20 @@ package dev.strahl.render;
 public record RenderStats(double seconds, long samples, long rays, int samplesPerPixel, int threads,
                           boolean cancelled, long invalidSamples) {
 
+    /**
+     * Camera samples per second of wall-clock time.
+     *
+     * @return samples / seconds, 0 if no time passed
+     */
     public double samplesPerSecond() {
         return seconds > 0 ? samples / seconds : 0;
     }
 
+    /**
+     * Rays per second of wall-clock time.
+     *
+     * @return rays / seconds, 0 if no time passed
+     */
     public double raysPerSecond() {
         return seconds > 0 ? rays / seconds : 0;
     }

@@ -6,6 +6,8 @@ package dev.strahl.sampling;
  * show that difference.
  */
 public enum HemisphereSampling {
+    /** pdf = cosθ/π (Malley's method): the default. */
     COSINE,
+    /** pdf = 1/(2π): noisier, for comparison. */
     UNIFORM
 }

@@ -17,7 +17,7 @@ import java.util.Map;
  * name its line. Parsed with Jackson's streaming parser; duplicate keys are refused.
  */
 final class JsonNode {
-    final Object value;          // Map<String, JsonNode>, List<JsonNode>, Double, String, Boolean or null
+    final Object value;          // Map<String, JsonNode>, List<JsonNode>, Long, Double, String, Boolean or null
     final int line;
 
     private JsonNode(Object value, int line) {
@@ -40,7 +40,7 @@ final class JsonNode {
         } catch (JsonParseException e) {
             String msg = e.getOriginalMessage();
             int nl = msg.indexOf('\n');
-            throw new SceneException(file, e.getLocation() == null ? 0 : (int) e.getLocation().getLineNr(),
+            throw new SceneException(file, e.getLocation() == null ? 0 : e.getLocation().getLineNr(),
                     "malformed JSON: " + (nl >= 0 ? msg.substring(0, nl) : msg));
         } catch (IOException e) {
             throw new SceneException(file, "cannot parse: " + e.getMessage(), e);
@@ -48,7 +48,7 @@ final class JsonNode {
     }
 
     private static int line(JsonParser p) {
-        return (int) p.currentTokenLocation().getLineNr();
+        return p.currentTokenLocation().getLineNr();
     }
 
     private static JsonNode read(JsonParser p, Path file) throws IOException, SceneException {
@@ -72,6 +72,9 @@ final class JsonNode {
                 return new JsonNode(list, line);
             }
             case VALUE_NUMBER_INT:
+                // whole numbers keep all their digits (a seed may use 64 bits); beyond a long, a double
+                return new JsonNode(p.getNumberType() == JsonParser.NumberType.BIG_INTEGER ? (Object) p.getDoubleValue()
+                        : (Object) p.getLongValue(), line);
             case VALUE_NUMBER_FLOAT:
                 return new JsonNode(p.getDoubleValue(), line);
             case VALUE_STRING:
@@ -110,7 +113,7 @@ final class JsonNode {
         if (value instanceof List) {
             return "an array";
         }
-        if (value instanceof Double) {
+        if (value instanceof Double || value instanceof Long) {
             return "a number";
         }
         if (value instanceof String) {

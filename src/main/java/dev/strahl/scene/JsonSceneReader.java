@@ -2,184 +2,255 @@ package dev.strahl.scene;
 
 import dev.strahl.camera.Camera;
 import dev.strahl.geometry.Sphere;
-import dev.strahl.material.Dielectric;
-import dev.strahl.material.Glossy;
-import dev.strahl.material.Material;
-import dev.strahl.material.Mirror;
+import dev.strahl.geometry.TriangleMesh;
 import dev.strahl.math.Rgb;
+import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.scene.SceneDescription.MaterialSpec;
+import dev.strahl.scene.SceneDescription.ShapeSpec;
 import java.io.IOException;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.HashMap;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import org.joml.Vector3d;
 
 /**
- * Reads a strahl scene file (JSON; documented in docs/scene-format.md). Strict: unknown keys,
- * wrong types and missing required keys are errors naming the file, line and key.
+ * Reads a strahl scene file (JSON; every key is documented in docs/scene-format.md and described
+ * by docs/scene.schema.json) into a {@link SceneDescription}, then builds the scene. Strict:
+ * unknown keys, wrong types, missing required keys, out-of-range values, unknown material names
+ * and missing mesh files are errors naming the file, the line and the key.
  */
 final class JsonSceneReader {
     /** The material types of the scene file and the keys each accepts. */
-    private static final Map<String, Set<String>> MATERIAL_KEYS = Map.of(
+    static final Map<String, Set<String>> MATERIAL_KEYS = Map.of(
             "diffuse", Set.of("type", "albedo", "emission"),
             "mirror", Set.of("type", "reflectance"),
             "dielectric", Set.of("type", "ior"),
             "glossy", Set.of("type", "diffuse", "specular", "exponent", "emission"));
+    /** The shape types and the keys each accepts. */
+    static final Map<String, Set<String>> SHAPE_KEYS = Map.of(
+            "sphere", Set.of("type", "center", "radius", "material", "transform"),
+            "mesh", Set.of("type", "file", "material", "transform"),
+            "triangles", Set.of("type", "positions", "indices", "normals", "material", "transform"));
+    /** The largest film edge, as RenderSettings.MAX_SIZE (which lives above this layer). */
+    static final int MAX_FILM = 1 << 15;
+    static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment");
+    static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov");
+    static final Set<String> FILM_KEYS = Set.of("width", "height");
+    static final Set<String> INTEGRATOR_KEYS = Set.of("type", "spp", "maxDepth", "seed", "lightSamples", "hemisphere");
 
     private final Path file;
-    private final Map<String, Material> materials = new HashMap<>();
+    private final JsonValues v;
+    /** Material names used by shapes, with the line of the use, checked once all materials are known. */
+    private final List<Map.Entry<String, Integer>> materialUses = new ArrayList<>();
 
     private JsonSceneReader(Path file) {
         this.file = file;
+        this.v = new JsonValues(file);
     }
 
+    /** Reads and builds the scene in {@code file}. */
     static Scene read(Path file) throws SceneException {
+        SceneDescription d = parse(file);
+        return d.build(folder(file));
+    }
+
+    /** Reads the scene file into its description, checking everything but the contents of mesh files. */
+    static SceneDescription parse(Path file) throws SceneException {
         String text;
         try {
             text = Files.readString(file, StandardCharsets.UTF_8);
         } catch (CharacterCodingException e) {
-            throw new SceneException(file, ObjReader.TextLines.lineOfInvalidUtf8(file, 1), "not a text scene file (invalid UTF-8)");
+            throw new SceneException(file, TextLines.lineOfInvalidUtf8(file, 1), "not a text scene file (invalid UTF-8)");
         } catch (IOException e) {
             throw SceneLoader.cannotRead(file, e);
         }
         return new JsonSceneReader(file).scene(JsonNode.parse(file, text));
     }
 
-    private Scene scene(JsonNode root) throws SceneException {
-        Map<String, JsonNode> top = object(root, "scene");
-        allowOnly(top, "scene", Set.of("camera", "materials", "shapes", "environment"));
-        Scene.Builder builder = Scene.builder();
+    static Path folder(Path file) {
+        return file.toAbsolutePath().getParent();
+    }
+
+    private SceneDescription scene(JsonNode root) throws SceneException {
+        Map<String, JsonNode> top = v.object(root, "scene");
+        v.allowOnly(top, "scene", TOP_KEYS);
+        Map<String, MaterialSpec> materials = new LinkedHashMap<>();
         if (top.containsKey("materials")) {
-            for (var e : object(top.get("materials"), "materials").entrySet()) {
+            for (var e : v.object(top.get("materials"), "materials").entrySet()) {
                 materials.put(e.getKey(), material(e.getKey(), e.getValue()));
             }
         }
-        JsonNode shapes = require(top, "shapes", root);
-        List<JsonNode> list = array(shapes, "shapes");
+        JsonNode shapesNode = v.require(top, "shapes", root);
+        List<JsonNode> list = v.array(shapesNode, "shapes");
         if (list.isEmpty()) {
-            throw new SceneException(file, shapes.line, "'shapes' is empty: the scene has no geometry");
+            throw new SceneException(file, shapesNode.line, "'shapes' is empty: the scene has no geometry");
         }
+        List<ShapeSpec> shapes = new ArrayList<>();
         for (JsonNode shape : list) {
-            shape(shape, builder);
+            shapes.add(shape(shape));
         }
-        if (top.containsKey("camera")) {
-            builder.camera(camera(top.get("camera")));
+        for (var use : materialUses) {
+            if (!materials.containsKey(use.getKey())) {
+                throw new SceneException(file, use.getValue(), "unknown material '" + use.getKey() + "' (define it under 'materials')");
+            }
         }
-        if (top.containsKey("environment")) {
-            builder.environment(color(top.get("environment"), "environment"));
-        }
-        return builder.build();
+        Camera camera = top.containsKey("camera") ? camera(top.get("camera")) : null;
+        Rgb environment = top.containsKey("environment") ? v.color(top.get("environment"), "environment") : null;
+        SceneSettings settings = settings(top.get("film"), top.get("integrator"));
+        return new SceneDescription(camera, settings, materials, shapes, environment);
     }
 
-    private Material material(String name, JsonNode node) throws SceneException {
+    // ---- materials -----------------------------------------------------------------------------
+
+    private MaterialSpec material(String name, JsonNode node) throws SceneException {
         String key = "materials." + name;
-        Map<String, JsonNode> m = object(node, key);
-        String type = string(require(m, "type", node), key + ".type");
+        Map<String, JsonNode> m = v.object(node, key);
+        String type = v.string(v.require(m, "type", node), key + ".type");
         Set<String> keys = MATERIAL_KEYS.get(type);
         if (keys == null) {
             throw new SceneException(file, m.get("type").line, "unknown material type '" + type + "' for '" + key
-                    + "' (known: " + String.join(", ", MATERIAL_KEYS.keySet().stream().sorted().toList()) + ")");
+                    + "' (known: " + JsonValues.sorted(MATERIAL_KEYS.keySet()) + ")");
         }
         if (m.containsKey("emission") && !keys.contains("emission")) {
             throw new SceneException(file, m.get("emission").line, "'" + key + ".emission': a " + type
                     + " material cannot emit light; emission is allowed on diffuse and glossy materials (a one-sided area light)");
         }
-        allowOnly(m, key + " of type " + type, keys);
+        v.allowOnly(m, key + " of type " + type, keys);
         switch (type) {
-            case "mirror": {
-                Rgb reflectance = m.containsKey("reflectance") ? unitColor(m.get("reflectance"), key + ".reflectance") : Rgb.WHITE;
-                return new Material(name, new Mirror(reflectance), Rgb.BLACK);
-            }
+            case "mirror":
+                return new SceneDescription.Mirror(m.containsKey("reflectance") ? v.unitColor(m.get("reflectance"), key + ".reflectance") : Rgb.WHITE);
             case "dielectric": {
                 double ior = 1.5;
                 if (m.containsKey("ior")) {
-                    ior = number(m.get("ior"), key + ".ior");
+                    ior = v.number(m.get("ior"), key + ".ior");
                     if (!(ior > 0)) {
-                        throw new SceneException(file, m.get("ior").line, "'" + key + ".ior' must be positive, got " + format(ior));
+                        throw new SceneException(file, m.get("ior").line, "'" + key + ".ior' must be positive, got " + JsonValues.format(ior));
                     }
                 }
-                return new Material(name, new Dielectric(ior), Rgb.BLACK);
+                return new SceneDescription.Dielectric(ior);
             }
             case "glossy": {
-                Rgb kd = m.containsKey("diffuse") ? unitColor(m.get("diffuse"), key + ".diffuse") : Rgb.BLACK;
-                Rgb ks = unitColor(require(m, "specular", node), key + ".specular");
-                double ns = number(require(m, "exponent", node), key + ".exponent");
+                Rgb kd = m.containsKey("diffuse") ? v.unitColor(m.get("diffuse"), key + ".diffuse") : Rgb.BLACK;
+                Rgb ks = v.unitColor(v.require(m, "specular", node), key + ".specular");
+                double ns = v.number(v.require(m, "exponent", node), key + ".exponent");
                 if (!(ns >= 0)) {
-                    throw new SceneException(file, m.get("exponent").line, "'" + key + ".exponent' must be >= 0, got " + format(ns));
+                    throw new SceneException(file, m.get("exponent").line, "'" + key + ".exponent' must be >= 0, got " + JsonValues.format(ns));
                 }
-                return new Material(name, Glossy.fromPhongExponent(kd, ks, ns), emission(m, key));
+                return new SceneDescription.Glossy(kd, ks, ns, emission(m, key));
             }
-            default: {
-                Rgb albedo = m.containsKey("albedo") ? unitColor(m.get("albedo"), key + ".albedo") : Rgb.gray(0.8);
-                return Material.emissive(name, albedo, emission(m, key));
-            }
+            default:
+                return new SceneDescription.Diffuse(m.containsKey("albedo") ? v.unitColor(m.get("albedo"), key + ".albedo") : Rgb.gray(0.8),
+                        emission(m, key));
         }
     }
 
     private Rgb emission(Map<String, JsonNode> m, String key) throws SceneException {
-        return m.containsKey("emission") ? color(m.get("emission"), key + ".emission") : Rgb.BLACK;
+        return m.containsKey("emission") ? v.color(m.get("emission"), key + ".emission") : Rgb.BLACK;
     }
 
-    /** A colour with every channel in [0, 1] (a reflectance). */
-    private Rgb unitColor(JsonNode node, String key) throws SceneException {
-        Rgb c = color(node, key);
-        if (c.max() > 1) {
-            throw new SceneException(file, node.line, "'" + key + "' must lie in [0, 1], got " + c);
+    // ---- shapes --------------------------------------------------------------------------------
+
+    private ShapeSpec shape(JsonNode node) throws SceneException {
+        Map<String, JsonNode> s = v.object(node, "shapes[]");
+        String type = v.string(v.require(s, "type", node), "shapes[].type");
+        Set<String> keys = SHAPE_KEYS.get(type);
+        if (keys == null) {
+            throw new SceneException(file, s.get("type").line, "unknown shape type '" + type + "' (known: "
+                    + JsonValues.sorted(SHAPE_KEYS.keySet()) + ")");
         }
-        return c;
-    }
-
-    /** A number as a user wrote it: 0 rather than 0.0. */
-    private static String format(double v) {
-        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
-    }
-
-    private void shape(JsonNode node, Scene.Builder builder) throws SceneException {
-        Map<String, JsonNode> s = object(node, "shapes[]");
-        String type = string(require(s, "type", node), "shapes[].type");
+        v.allowOnly(s, "shapes[] of type " + type, keys);
+        Transform transform = s.containsKey("transform") ? TransformReader.read(v, s.get("transform")) : Transform.IDENTITY;
         switch (type) {
-            case "obj": {
-                allowOnly(s, "shapes[] of type obj", Set.of("type", "file"));
-                String name = string(require(s, "file", node), "shapes[].file");
-                Path obj = file.toAbsolutePath().getParent().resolve(name);
-                if (!Files.isRegularFile(obj)) {
-                    throw new SceneException(file, s.get("file").line, "OBJ file not found: " + obj);
+            case "mesh": {
+                JsonNode fileNode = v.require(s, "file", node);
+                String name = v.string(fileNode, "shapes[].file");
+                Path mesh;
+                try {
+                    mesh = folder(file).resolve(name);
+                } catch (java.nio.file.InvalidPathException e) {
+                    throw new SceneException(file, fileNode.line, "'shapes[].file' is not a valid path: " + name);
                 }
-                SceneLoader.addObj(obj, builder);
-                break;
+                String lower = name.toLowerCase(Locale.ROOT);
+                if (!lower.endsWith(".obj") && !lower.endsWith(".ply")) {
+                    throw new SceneException(file, fileNode.line, "'shapes[].file' must name an .obj or .ply file, got '" + name + "'");
+                }
+                if (!Files.isRegularFile(mesh)) {
+                    throw new SceneException(file, fileNode.line, "mesh file not found: " + mesh);
+                }
+                return new SceneDescription.MeshShape(name, s.containsKey("material") ? materialName(s.get("material")) : null, transform);
             }
             case "sphere": {
-                allowOnly(s, "shapes[] of type sphere", Set.of("type", "center", "radius", "material"));
-                Vector3d center = vector(require(s, "center", node), "shapes[].center");
-                double radius = number(require(s, "radius", node), "shapes[].radius");
+                Vector3d center = v.vector(v.require(s, "center", node), "shapes[].center");
+                double radius = v.number(v.require(s, "radius", node), "shapes[].radius");
                 if (!(radius > 0)) {
-                    throw new SceneException(file, s.get("radius").line, "'shapes[].radius' must be positive, got " + radius);
+                    throw new SceneException(file, s.get("radius").line, "'shapes[].radius' must be positive, got " + JsonValues.format(radius));
                 }
-                JsonNode mNode = require(s, "material", node);
-                String mName = string(mNode, "shapes[].material");
-                Material m = materials.get(mName);
-                if (m == null) {
-                    throw new SceneException(file, mNode.line, "unknown material '" + mName + "' (define it under 'materials')");
+                String material = materialName(v.require(s, "material", node));
+                try {
+                    transform.apply(new Sphere(center, radius));
+                } catch (IllegalArgumentException e) {
+                    throw new SceneException(file, s.get("transform").line, "'shapes[].transform': " + e.getMessage());
                 }
-                builder.addSphere(new Sphere(center, radius), m);
-                break;
+                return new SceneDescription.SphereShape(center, radius, material, transform);
             }
             default:
-                throw new SceneException(file, s.get("type").line, "unknown shape type '" + type + "' (known: obj, sphere)");
+                return triangles(s, node, transform);
         }
     }
 
+    private ShapeSpec triangles(Map<String, JsonNode> s, JsonNode node, Transform transform) throws SceneException {
+        float[] positions = v.floats(v.require(s, "positions", node), "shapes[].positions");
+        JsonNode indexNode = v.require(s, "indices", node);
+        int[] indices = v.ints(indexNode, "shapes[].indices");
+        float[] normals = s.containsKey("normals") ? v.floats(s.get("normals"), "shapes[].normals") : null;
+        String material = materialName(v.require(s, "material", node));
+        if (positions.length % 3 != 0) {
+            throw new SceneException(file, s.get("positions").line, "'shapes[].positions' must hold x, y, z triples, got " + positions.length + " numbers");
+        }
+        if (indices.length == 0 || indices.length % 3 != 0) {
+            throw new SceneException(file, indexNode.line, "'shapes[].indices' must hold three vertex indices per triangle, got " + indices.length);
+        }
+        if (normals != null && normals.length != positions.length) {
+            throw new SceneException(file, s.get("normals").line, "'shapes[].normals' must have one x, y, z triple per vertex: "
+                    + normals.length + " numbers for " + positions.length / 3 + " vertices");
+        }
+        for (int i = 0; i < indices.length; i++) {
+            if (indices[i] < 0 || indices[i] >= positions.length / 3) {
+                throw new SceneException(file, indexNode.line, "'shapes[].indices[" + i + "]' = " + indices[i]
+                        + " is out of range (there are " + positions.length / 3 + " vertices)");
+            }
+        }
+        for (float p : positions) {
+            if (!Float.isFinite(p)) {
+                throw new SceneException(file, s.get("positions").line, "'shapes[].positions' must fit into floats, got " + p);
+            }
+        }
+        new TriangleMesh(positions, indices, normals);          // cannot fail after the checks above
+        return new SceneDescription.TrianglesShape(positions, indices, normals, material, transform);
+    }
+
+    private String materialName(JsonNode node) throws SceneException {
+        String name = v.string(node, "shapes[].material");
+        materialUses.add(Map.entry(name, node.line));
+        return name;
+    }
+
+    // ---- camera, film, integrator ----------------------------------------------------------------
+
     private Camera camera(JsonNode node) throws SceneException {
-        Map<String, JsonNode> c = object(node, "camera");
-        allowOnly(c, "camera", Set.of("lookFrom", "lookAt", "up", "fov"));
-        Vector3d from = vector(require(c, "lookFrom", node), "camera.lookFrom");
-        Vector3d at = vector(require(c, "lookAt", node), "camera.lookAt");
-        Vector3d up = c.containsKey("up") ? vector(c.get("up"), "camera.up") : new Vector3d(0, 1, 0);
-        double fov = c.containsKey("fov") ? number(c.get("fov"), "camera.fov") : 40;
+        Map<String, JsonNode> c = v.object(node, "camera");
+        v.allowOnly(c, "camera", CAMERA_KEYS);
+        Vector3d from = v.vector(v.require(c, "lookFrom", node), "camera.lookFrom");
+        Vector3d at = v.vector(v.require(c, "lookAt", node), "camera.lookAt");
+        Vector3d up = c.containsKey("up") ? v.vector(c.get("up"), "camera.up") : new Vector3d(0, 1, 0);
+        double fov = c.containsKey("fov") ? v.number(c.get("fov"), "camera.fov") : 40;
         try {
             return new Camera(from, at, up, fov);
         } catch (IllegalArgumentException e) {
@@ -187,77 +258,38 @@ final class JsonSceneReader {
         }
     }
 
-    // --- typed access with messages that name the key and line ---
-
-    private Map<String, JsonNode> object(JsonNode node, String key) throws SceneException {
-        if (!node.isObject()) {
-            throw new SceneException(file, node.line, "'" + key + "' must be an object, got " + node.typeName());
+    private SceneSettings settings(JsonNode film, JsonNode integrator) throws SceneException {
+        Integer width = null, height = null, spp = null, maxDepth = null, lightSamples = null;
+        Long seed = null;
+        String type = null;
+        HemisphereSampling hemisphere = null;
+        if (film != null) {
+            Map<String, JsonNode> f = v.object(film, "film");
+            v.allowOnly(f, "film", FILM_KEYS);
+            width = f.containsKey("width") ? v.integer(f.get("width"), "film.width", 1, MAX_FILM) : null;
+            height = f.containsKey("height") ? v.integer(f.get("height"), "film.height", 1, MAX_FILM) : null;
         }
-        return node.object();
-    }
-
-    private List<JsonNode> array(JsonNode node, String key) throws SceneException {
-        if (!(node.value instanceof List)) {
-            throw new SceneException(file, node.line, "'" + key + "' must be an array, got " + node.typeName());
-        }
-        return node.array();
-    }
-
-    private String string(JsonNode node, String key) throws SceneException {
-        if (!(node.value instanceof String s)) {
-            throw new SceneException(file, node.line, "'" + key + "' must be a string, got " + node.typeName());
-        }
-        return s;
-    }
-
-    private double number(JsonNode node, String key) throws SceneException {
-        if (!(node.value instanceof Double d)) {
-            throw new SceneException(file, node.line, "'" + key + "' must be a number, got " + node.typeName());
-        }
-        if (!Double.isFinite(d)) {
-            throw new SceneException(file, node.line, "'" + key + "' must be finite, got " + d);
-        }
-        return d;
-    }
-
-    private double[] numbers(JsonNode node, String key, int count) throws SceneException {
-        List<JsonNode> list = array(node, key);
-        if (list.size() != count) {
-            throw new SceneException(file, node.line, "'" + key + "' must have " + count + " numbers, got " + list.size());
-        }
-        double[] v = new double[count];
-        for (int i = 0; i < count; i++) {
-            v[i] = number(list.get(i), key + "[" + i + "]");
-        }
-        return v;
-    }
-
-    private Vector3d vector(JsonNode node, String key) throws SceneException {
-        double[] v = numbers(node, key, 3);
-        return new Vector3d(v[0], v[1], v[2]);
-    }
-
-    private Rgb color(JsonNode node, String key) throws SceneException {
-        double[] v = numbers(node, key, 3);
-        if (v[0] < 0 || v[1] < 0 || v[2] < 0) {
-            throw new SceneException(file, node.line, "'" + key + "' must not be negative");
-        }
-        return new Rgb(v[0], v[1], v[2]);
-    }
-
-    private JsonNode require(Map<String, JsonNode> map, String key, JsonNode parent) throws SceneException {
-        JsonNode n = map.get(key);
-        if (n == null) {
-            throw new SceneException(file, parent.line, "missing required key '" + key + "'");
-        }
-        return n;
-    }
-
-    private void allowOnly(Map<String, JsonNode> map, String where, Set<String> keys) throws SceneException {
-        for (var e : map.entrySet()) {
-            if (!keys.contains(e.getKey())) {
-                throw new SceneException(file, e.getValue().line, "unknown key '" + e.getKey() + "' in " + where + " (known: " + String.join(", ", keys.stream().sorted().toList()) + ")");
+        if (integrator != null) {
+            Map<String, JsonNode> i = v.object(integrator, "integrator");
+            v.allowOnly(i, "integrator", INTEGRATOR_KEYS);
+            type = i.containsKey("type") ? v.string(i.get("type"), "integrator.type") : null;
+            spp = i.containsKey("spp") ? v.integer(i.get("spp"), "integrator.spp", 1, Integer.MAX_VALUE) : null;
+            if (i.containsKey("maxDepth")) {
+                maxDepth = v.integer(i.get("maxDepth"), "integrator.maxDepth", -1, Integer.MAX_VALUE);
+                if (maxDepth == 0) {
+                    throw new SceneException(file, i.get("maxDepth").line, "'integrator.maxDepth' must be -1 (unbounded) or >= 1, got 0");
+                }
+            }
+            seed = i.containsKey("seed") ? v.longInteger(i.get("seed"), "integrator.seed") : null;
+            lightSamples = i.containsKey("lightSamples") ? v.integer(i.get("lightSamples"), "integrator.lightSamples", 1, Integer.MAX_VALUE) : null;
+            if (i.containsKey("hemisphere")) {
+                String h = v.string(i.get("hemisphere"), "integrator.hemisphere");
+                if (!h.equals("cosine") && !h.equals("uniform")) {
+                    throw new SceneException(file, i.get("hemisphere").line, "'integrator.hemisphere' must be \"cosine\" or \"uniform\", got '" + h + "'");
+                }
+                hemisphere = h.equals("cosine") ? HemisphereSampling.COSINE : HemisphereSampling.UNIFORM;
             }
         }
+        return new SceneSettings(width, height, spp, maxDepth, seed, type, lightSamples, hemisphere);
     }
 }

@@ -39,8 +39,8 @@ final class MtlReader {
         Set<String> warnedKeys = new HashSet<>();
         boolean warnedTextures = false;
         Block block = null;
-        var cur = new ObjReader.LineCursor(mtl);
-        try (var lines = ObjReader.TextLines.open(mtl, "MTL", false)) {
+        var cur = new LineCursor(mtl);
+        try (var lines = TextLines.open(mtl, "MTL", false)) {
             for (String line; (line = lines.next()) != null; ) {
                 cur.reset(line, lines.lineNumber());
                 if (!cur.next()) {
@@ -60,20 +60,20 @@ final class MtlReader {
                 if (isTexture(lower)) {
                     if (!warnedTextures) {
                         warnedTextures = true;
-                        warnings.add(mtl + ": texture maps are not supported (first " + ObjReader.LineCursor.quote(key)
+                        warnings.add(mtl + ": texture maps are not supported (first " + LineCursor.quote(key)
                                 + " at line " + cur.lineNumber + "): ignored");
                     }
                     continue;
                 }
                 if (!isMaterialKey(lower)) {
                     if (warnedKeys.add(key)) {
-                        warnings.add(mtl + ": unknown key " + ObjReader.LineCursor.quote(key) + " (line "
+                        warnings.add(mtl + ": unknown key " + LineCursor.quote(key) + " (line "
                                 + cur.lineNumber + "): ignored");
                     }
                     continue;
                 }
                 if (block == null) {
-                    throw cur.error(ObjReader.LineCursor.quote(key) + " before any newmtl");
+                    throw cur.error(LineCursor.quote(key) + " before any newmtl");
                 }
                 readKey(lower, key, cur, block, mtl, warnings);
             }
@@ -96,7 +96,7 @@ final class MtlReader {
         };
     }
 
-    private static void readKey(String lower, String key, ObjReader.LineCursor cur, Block block, Path mtl,
+    private static void readKey(String lower, String key, LineCursor cur, Block block, Path mtl,
             List<String> warnings) throws SceneException {
         switch (lower) {
             case "kd" -> block.kd = colour(key, cur, mtl, warnings, block.kd);
@@ -117,7 +117,7 @@ final class MtlReader {
                 if (ni > 0) {
                     block.ni = ni;
                 } else {
-                    warnings.add(mtl + ": 'Ni " + ni + "' of material " + ObjReader.LineCursor.quote(block.name) + " (line "
+                    warnings.add(mtl + ": 'Ni " + ni + "' of material " + LineCursor.quote(block.name) + " (line "
                             + cur.lineNumber + ") is not an index of refraction: using " + MtlMaterial.DEFAULT_NI);
                     block.ni = MtlMaterial.DEFAULT_NI;
                 }
@@ -134,9 +134,9 @@ final class MtlReader {
     }
 
     /** A key with exactly one number. */
-    private static double single(String key, ObjReader.LineCursor cur) throws SceneException {
+    private static double single(String key, LineCursor cur) throws SceneException {
         if (!cur.next()) {
-            throw cur.error(ObjReader.LineCursor.quote(key) + " needs 1 number, got 0");
+            throw cur.error(LineCursor.quote(key) + " needs 1 number, got 0");
         }
         double value = cur.number(key);
         int n = 1;
@@ -144,7 +144,7 @@ final class MtlReader {
             n++;
         }
         if (n > 1) {
-            throw cur.error(ObjReader.LineCursor.quote(key) + " needs 1 number, got " + n);
+            throw cur.error(LineCursor.quote(key) + " needs 1 number, got " + n);
         }
         return value;
     }
@@ -153,7 +153,7 @@ final class MtlReader {
      * {@code Kd r g b} or {@code Kd v} (grey). The {@code spectral} and {@code xyz} forms are not
      * supported: a warning, and {@code previous} stays.
      */
-    private static Rgb colour(String key, ObjReader.LineCursor cur, Path mtl, List<String> warnings, Rgb previous)
+    private static Rgb colour(String key, LineCursor cur, Path mtl, List<String> warnings, Rgb previous)
             throws SceneException {
         double[] c = new double[3];
         int n = 0;
@@ -165,8 +165,8 @@ final class MtlReader {
             }
             double value = cur.number(key);
             if (!(value >= 0) || !Double.isFinite(value)) {
-                throw cur.error("colour component " + ObjReader.LineCursor.quote(cur.token()) + " in "
-                        + ObjReader.LineCursor.quote(key) + " must be finite and >= 0");
+                throw cur.error("colour component " + LineCursor.quote(cur.token()) + " in "
+                        + LineCursor.quote(key) + " must be finite and >= 0");
             }
             if (n < 3) {
                 c[n] = value;
@@ -177,7 +177,7 @@ final class MtlReader {
             return Rgb.gray(c[0]);
         }
         if (n != 3) {
-            throw cur.error(ObjReader.LineCursor.quote(key) + " needs 1 or 3 numbers, got " + n);
+            throw cur.error(LineCursor.quote(key) + " needs 1 or 3 numbers, got " + n);
         }
         return new Rgb(c[0], c[1], c[2]);
     }
@@ -187,7 +187,7 @@ final class MtlReader {
             return;
         }
         if (materials.containsKey(block.name)) {
-            warnings.add(mtl + ": material " + ObjReader.LineCursor.quote(block.name) + " (line " + block.line
+            warnings.add(mtl + ": material " + LineCursor.quote(block.name) + " (line " + block.line
                     + ") is defined again: keeping the first definition");
             return;
         }

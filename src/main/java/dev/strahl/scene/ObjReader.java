@@ -1,27 +1,11 @@
 package dev.strahl.scene;
 
 import dev.strahl.geometry.TriangleMesh;
-import java.io.BufferedInputStream;
-import java.io.BufferedReader;
-import java.io.IOException;
-import java.io.InputStream;
-import java.io.InputStreamReader;
-import java.nio.charset.CharacterCodingException;
-import java.nio.charset.CharsetDecoder;
-import java.nio.charset.CodingErrorAction;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.AccessDeniedException;
-import java.nio.file.Files;
-import java.nio.file.InvalidPathException;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.HashMap;
 import java.util.HashSet;
-import java.util.IdentityHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 
 /**
@@ -39,12 +23,21 @@ import java.util.Set;
  * <p>Output vertices are the distinct (position, normal) pairs that faces use, in order of first
  * use, so that OBJ normals become per-vertex normals of the mesh and unused vertices disappear.
  *
+ * <p>The parts: {@link TextLines} reads the file's lines, {@link LineCursor} splits each into
+ * tokens, {@link ObjMaterials} keeps the {@code usemtl} slots and the MTL libraries, and a
+ * {@link LongIntMap} finds each (position, normal) pair's output vertex.
+ *
  * <p>Every problem with the input is a {@link SceneException} whose message starts with
  * {@code file:line:}; no other exception escapes for any file content.
  */
 final class ObjReader {
 
     private static final int VERTEX_NONE = -1;
+    /**
+     * Largest accepted |coordinate| of a position: products of four coordinates (squared lengths
+     * of edge cross products) then stay far inside the double range.
+     */
+    static final double MAX_COORDINATE = 1e18;
 
     private final Path obj;
     private final TextLines lines;
@@ -66,27 +59,21 @@ final class ObjReader {
     private int outCount;
     private boolean anyNormal;
 
+    // Output triangles (output vertex indices) and the material slot of each (see ObjMaterials)
     private int[] tri = new int[3 * 1024];
     private int[] triSlot = new int[1024];
     private int triCount;
     private int[] face = new int[16];
+    private int degenerateCount;
+    private int firstDegenerateLine;
 
-    // Material slots: one per distinct usemtl name, slot 0 = "no usemtl yet"
-    private final List<String> slotNames = new ArrayList<>(List.of(""));
-    private final List<Integer> slotLines = new ArrayList<>(List.of(0));
-    private final Map<String, Integer> slotByName = new HashMap<>();
-    private final List<Integer> usedSlots = new ArrayList<>();
-    private boolean[] slotUsed = new boolean[8];
-    private int slot;
-
-    private final Map<String, MtlMaterial> library = new HashMap<>();
-    private final Set<Path> loadedLibraries = new HashSet<>();
-    private boolean libraryMissing;
+    private final ObjMaterials materials;
 
     private ObjReader(Path obj, TextLines lines) {
         this.obj = obj;
         this.lines = lines;
         this.cur = new LineCursor(obj);
+        this.materials = new ObjMaterials(obj, warnings);
     }
 
     /** Reads {@code obj}; material libraries are resolved relative to its directory. */
@@ -122,8 +109,8 @@ final class ObjReader {
         } else {
             String keyword = cur.token();
             switch (keyword) {
-                case "usemtl" -> useMaterial(cur.rest());
-                case "mtllib" -> materialLibraries(cur.rest());
+                case "usemtl" -> materials.use(cur.rest(), cur.lineNumber);
+                case "mtllib" -> materials.libraries(cur.rest(), cur.lineNumber);
                 case "g", "o", "s", "mg", "lod", "bevel", "c_interp", "d_interp", "shadow_obj", "trace_obj" -> { }
                 case "l" -> warnOnce(keyword, "line element 'l' is not rendered");
                 case "p" -> warnOnce(keyword, "point element 'p' is not rendered");
@@ -144,19 +131,13 @@ final class ObjReader {
     // ---- vertex data ---------------------------------------------------------------------
 
     private void vertex() throws SceneException {
-        double x = coordinate("v", "3 numbers (x y z)", 0);
-        double y = coordinate("v", "3 numbers (x y z)", 1);
-        double z = coordinate("v", "3 numbers (x y z)", 2);
+        double x = position(0);
+        double y = position(1);
+        double z = position(2);
         while (cur.next()) {
             cur.number("v"); // w, or r g b of the vertex-colour extension: checked, not used
         }
-        if (vCount * 3 + 3 > v.length) {
-            v = grow(v, vCount * 3 + 3);
-        }
-        v[vCount * 3] = (float) x;
-        v[vCount * 3 + 1] = (float) y;
-        v[vCount * 3 + 2] = (float) z;
-        vCount++;
+        v = putTriple(v, vCount++, x, y, z);
     }
 
     private void normal() throws SceneException {
@@ -179,13 +160,7 @@ final class ObjReader {
         } else {
             x = y = z = Double.NaN; // a zero vector names no direction: the vertex gets no normal
         }
-        if (vnCount * 3 + 3 > vn.length) {
-            vn = grow(vn, vnCount * 3 + 3);
-        }
-        vn[vnCount * 3] = (float) x;
-        vn[vnCount * 3 + 1] = (float) y;
-        vn[vnCount * 3 + 2] = (float) z;
-        vnCount++;
+        vn = putTriple(vn, vnCount++, x, y, z);
     }
 
     private void texcoord() throws SceneException {
@@ -194,6 +169,14 @@ final class ObjReader {
             checkFinite(cur.number("vt"), "vt");
         }
         vtCount++;
+    }
+
+    private double position(int index) throws SceneException {
+        double value = coordinate("v", "3 numbers (x y z)", index);
+        if (Math.abs(value) > MAX_COORDINATE) {
+            throw cur.error("coordinate " + LineCursor.quote(cur.token()) + " in 'v' is too large (the limit is 1e18 in magnitude)");
+        }
+        return value;
     }
 
     /** The next number of a v/vn/vt line, which must exist, be finite and fit a float. */
@@ -227,15 +210,16 @@ final class ObjReader {
         if (n < 3) {
             throw cur.error("face with " + n + (n == 1 ? " vertex" : " vertices") + " (needs at least 3)");
         }
-        if (!slotUsed[slot]) {
-            slotUsed[slot] = true;
-            usedSlots.add(slot);
-        }
+        int slot = materials.faceSlot();
         int newCount = triCount + n - 2;
         if ((long) newCount * 3 > Integer.MAX_VALUE - 16) {
             throw cur.error("too many triangles for one mesh");
         }
         if (newCount * 3 > tri.length) {
+            String tooMany = HeapBudget.tooMany(newCount);
+            if (tooMany != null) {
+                throw cur.error(tooMany);
+            }
             tri = grow(tri, newCount * 3);
         }
         if (newCount > triSlot.length) {
@@ -243,12 +227,30 @@ final class ObjReader {
         }
         // Fan (v0, vi, vi+1): keeps the winding of the polygon, hence its geometric normal
         for (int i = 1; i + 1 < n; i++) {
+            if (isDegenerate(face[0], face[i], face[i + 1])) {
+                if (degenerateCount++ == 0) {
+                    firstDegenerateLine = cur.lineNumber;
+                }
+                continue;
+            }
             tri[triCount * 3] = face[0];
             tri[triCount * 3 + 1] = face[i];
             tri[triCount * 3 + 2] = face[i + 1];
             triSlot[triCount] = slot;
             triCount++;
         }
+    }
+
+    /**
+     * Whether the triangle of three output vertices has zero area: cross(v1 − v0, v2 − v0) = 0
+     * with the float positions subtracted in double, the test the geometry uses.
+     */
+    private boolean isDegenerate(int a, int b, int c) {
+        int pa = 3 * outPosition[a], pb = 3 * outPosition[b], pc = 3 * outPosition[c];
+        double e1x = (double) v[pb] - v[pa], e1y = (double) v[pb + 1] - v[pa + 1], e1z = (double) v[pb + 2] - v[pa + 2];
+        double e2x = (double) v[pc] - v[pa], e2y = (double) v[pc + 1] - v[pa + 1], e2z = (double) v[pc + 2] - v[pa + 2];
+        double cx = e1y * e2z - e1z * e2y, cy = e1z * e2x - e1x * e2z, cz = e1x * e2y - e1y * e2x;
+        return cx * cx + cy * cy + cz * cz == 0;
     }
 
     /** Parses the current token as v, v/t, v//n or v/t/n and returns the output vertex. */
@@ -325,112 +327,23 @@ final class ObjReader {
         return i >= 0 && i < to ? i : -1;
     }
 
-    // ---- materials -----------------------------------------------------------------------
-
-    private void useMaterial(String name) {
-        Integer existing = slotByName.get(name);
-        if (existing != null) {
-            slot = existing;
-            return;
-        }
-        slot = slotNames.size();
-        slotNames.add(name);
-        slotLines.add(cur.lineNumber);
-        slotByName.put(name, slot);
-        if (slot == slotUsed.length) {
-            slotUsed = Arrays.copyOf(slotUsed, slot * 2);
-        }
-    }
-
-    /**
-     * {@code mtllib a.mtl b.mtl ...}; a name containing spaces is taken whole when the
-     * space-separated parts are not all existing files but the whole rest of the line is one.
-     */
-    private void materialLibraries(String rest) throws SceneException {
-        if (rest.isEmpty()) {
-            warnings.add(obj + ": mtllib without a file name (line " + cur.lineNumber + "): ignored");
-            return;
-        }
-        List<String> names = new ArrayList<>();
-        LineCursor split = new LineCursor(obj);
-        split.reset(rest, cur.lineNumber);
-        while (split.next()) {
-            names.add(split.token());
-        }
-        if (names.size() > 1 && !names.stream().allMatch(this::isLibraryFile) && isLibraryFile(rest)) {
-            names = List.of(rest);
-        }
-        for (String name : names) {
-            loadLibrary(name);
-        }
-    }
-
-    private boolean isLibraryFile(String name) {
-        try {
-            return Files.isRegularFile(obj.resolveSibling(name));
-        } catch (InvalidPathException | SecurityException e) {
-            return false;
-        }
-    }
-
-    private void loadLibrary(String name) throws SceneException {
-        String where = obj + ": material library " + LineCursor.quote(name) + " (line " + cur.lineNumber + ")";
-        String consequence = ": its materials are replaced by the default grey diffuse";
-        Path path;
-        try {
-            path = obj.resolveSibling(name);
-        } catch (InvalidPathException e) {
-            warnings.add(where + " is not a valid file name" + consequence);
-            libraryMissing = true;
-            return;
-        }
-        if (!loadedLibraries.add(path.toAbsolutePath().normalize())) {
-            return;
-        }
-        if (!Files.isRegularFile(path)) {
-            warnings.add(where + " not found at " + path + consequence);
-            libraryMissing = true;
-            return;
-        }
-        if (!Files.isReadable(path)) {
-            warnings.add(where + " is not readable" + consequence);
-            libraryMissing = true;
-            return;
-        }
-        // A library that exists but is malformed is an error, reported at its own file:line
-        for (MtlMaterial m : MtlReader.read(path, warnings).values()) {
-            if (library.putIfAbsent(m.name(), m) != null) {
-                warnings.add(path + ": material '" + m.name() + "' is already defined by an earlier material library: "
-                        + "keeping the first definition");
-            }
-        }
-    }
-
     // ---- result --------------------------------------------------------------------------
 
     private ObjModel build() throws SceneException {
         if (triCount == 0) {
-            throw new SceneException(obj, "no faces");
+            throw new SceneException(obj, degenerateCount == 0 ? "no faces: the file holds no geometry"
+                    : "no geometry: all " + degenerateCount + " triangles have zero area");
         }
-        MtlMaterial fallback = MtlMaterial.defaultMaterial();
-        List<MtlMaterial> materials = new ArrayList<>();
-        Map<MtlMaterial, Integer> materialIndex = new IdentityHashMap<>();
-        int[] slotMaterial = new int[slotNames.size()];
-        for (int s : usedSlots) {
-            MtlMaterial m = s == 0 ? fallback : library.get(slotNames.get(s));
-            if (m == null) {
-                m = fallback;
-                // After a missing library its warning already explains every unknown name
-                if (!libraryMissing) {
-                    warnings.add(obj + ": unknown material " + LineCursor.quote(slotNames.get(s)) + " (line "
-                            + slotLines.get(s) + "): using the default grey diffuse");
-                }
-            }
-            slotMaterial[s] = materialIndex.computeIfAbsent(m, k -> {
-                materials.add(k);
-                return materials.size() - 1;
-            });
+        String tooMany = HeapBudget.tooMany(triCount);
+        if (tooMany != null) {
+            throw new SceneException(obj, tooMany.replace(" so far", ""));
         }
+        if (degenerateCount > 0) {
+            warnings.add(obj + ": skipped " + degenerateCount + " degenerate triangle" + (degenerateCount == 1 ? "" : "s")
+                    + " (zero area), the first at line " + firstDegenerateLine);
+        }
+        List<MtlMaterial> used = new ArrayList<>();
+        int[] slotMaterial = materials.resolve(used);
         int[] triangleMaterial = new int[triCount];
         for (int t = 0; t < triCount; t++) {
             triangleMaterial[t] = slotMaterial[triSlot[t]];
@@ -450,7 +363,7 @@ final class ObjReader {
             }
         }
         var mesh = new TriangleMesh(positions, Arrays.copyOf(tri, triCount * 3), normals);
-        return new ObjModel(mesh, triangleMaterial, materials, warnings);
+        return new ObjModel(mesh, triangleMaterial, used, warnings);
     }
 
     // ---- helpers -------------------------------------------------------------------------
@@ -468,406 +381,15 @@ final class ObjReader {
         return Arrays.copyOf(a, newCapacity(a.length, needed));
     }
 
-    /**
-     * The lines of a UTF-8 text file, with the checks both OBJ and MTL need: a file that is not
-     * text (NUL bytes near the start, invalid UTF-8 anywhere) or cannot be read is a
-     * {@link SceneException} at the line where that shows. A leading byte order mark is dropped.
-     */
-    static final class TextLines implements AutoCloseable {
-        private static final int HEAD = 1024;
-
-        private final Path file;
-        private final String kind;
-        private final boolean continuation;
-        private final BufferedReader reader;
-        private int physicalLine;
-        private int lineNumber;
-
-        private TextLines(Path file, String kind, boolean continuation, BufferedReader reader) {
-            this.file = file;
-            this.kind = kind;
-            this.continuation = continuation;
-            this.reader = reader;
+    /** Stores (x, y, z) as floats at triple {@code index} of {@code a}, grown if needed; returns the array. */
+    private static float[] putTriple(float[] a, int index, double x, double y, double z) {
+        if (index * 3 + 3 > a.length) {
+            a = grow(a, index * 3 + 3);
         }
-
-        /**
-         * Opens {@code file}; {@code kind} ("OBJ", "MTL") is used in messages, {@code continuation}
-         * joins a line ending in a backslash with the next one.
-         */
-        static TextLines open(Path file, String kind, boolean continuation) throws SceneException {
-            if (Files.isDirectory(file)) {
-                throw new SceneException(file, "is a directory, not an " + kind + " file");
-            }
-            InputStream in;
-            try {
-                in = Files.newInputStream(file);
-            } catch (NoSuchFileException e) {
-                throw new SceneException(file, "file not found", e);
-            } catch (AccessDeniedException e) {
-                throw new SceneException(file, "cannot read: permission denied", e);
-            } catch (IOException | SecurityException e) {
-                throw new SceneException(file, "cannot read: " + describe(e), e);
-            }
-            try {
-                var buffered = new BufferedInputStream(in, 1 << 16);
-                buffered.mark(HEAD);
-                byte[] head = buffered.readNBytes(HEAD);
-                buffered.reset();
-                for (int i = 0, line = 1; i < head.length; i++) {
-                    if (head[i] == '\n') {
-                        line++;
-                    } else if (head[i] == 0) {
-                        throw notText(file, kind, line, "NUL byte");
-                    }
-                }
-                CharsetDecoder utf8 = StandardCharsets.UTF_8.newDecoder()
-                        .onMalformedInput(CodingErrorAction.REPORT)
-                        .onUnmappableCharacter(CodingErrorAction.REPORT);
-                var reader = new BufferedReader(new InputStreamReader(buffered, utf8), 1 << 16);
-                return new TextLines(file, kind, continuation, reader);
-            } catch (IOException e) {
-                closeQuietly(in);
-                throw new SceneException(file, "cannot read: " + describe(e), e);
-            } catch (SceneException e) {
-                closeQuietly(in);
-                throw e;
-            }
-        }
-
-        /** The next logical line, or null at the end of the file. */
-        String next() throws SceneException {
-            String line = readPhysical();
-            if (line == null) {
-                return null;
-            }
-            lineNumber = physicalLine;
-            if (physicalLine == 1 && line.startsWith("\uFEFF")) {
-                line = line.substring(1);
-            }
-            if (!continuation || !endsWithBackslash(line)) {
-                return line;
-            }
-            var joined = new StringBuilder(line);
-            while (endsWithBackslash(joined)) {
-                trimEnd(joined);
-                joined.setLength(joined.length() - 1);
-                String more = readPhysical();
-                if (more == null) {
-                    break;
-                }
-                joined.append(' ').append(more);
-            }
-            return joined.toString();
-        }
-
-        /** The line number (from 1) of the first physical line of the last logical line. */
-        int lineNumber() {
-            return lineNumber;
-        }
-
-        @Override
-        public void close() {
-            closeQuietly(reader);
-        }
-
-        private String readPhysical() throws SceneException {
-            try {
-                String line = reader.readLine();
-                if (line != null) {
-                    physicalLine++;
-                }
-                return line;
-            } catch (CharacterCodingException e) {
-                throw notText(file, kind, lineOfInvalidUtf8(file, physicalLine + 1), "invalid UTF-8");
-            } catch (IOException e) {
-                throw new SceneException(file, "cannot read after line " + physicalLine + ": " + describe(e), e);
-            }
-        }
-
-        /** A backslash as the last visible character of a line that holds no comment. */
-        private static boolean endsWithBackslash(CharSequence s) {
-            int i = s.length() - 1;
-            while (i >= 0 && LineCursor.isSpace(s.charAt(i))) {
-                i--;
-            }
-            if (i < 0 || s.charAt(i) != '\\') {
-                return false;
-            }
-            for (int j = 0; j < i; j++) {
-                if (s.charAt(j) == '#') {
-                    return false;
-                }
-            }
-            return true;
-        }
-
-        private static void trimEnd(StringBuilder s) {
-            int n = s.length();
-            while (n > 0 && LineCursor.isSpace(s.charAt(n - 1))) {
-                n--;
-            }
-            s.setLength(n);
-        }
-
-        private static SceneException notText(Path file, String kind, int line, String why) {
-            return new SceneException(file, line, "not a text " + kind + " file (" + why + ")");
-        }
-
-        /**
-         * The line of the first byte sequence that is not UTF-8. The decoder behind the reader works
-         * ahead in blocks and cannot say where it failed, so this pass over the bytes (only taken
-         * on the error path) finds it; {@code fallback} if it finds nothing.
-         */
-        static int lineOfInvalidUtf8(Path file, int fallback) {
-            try (InputStream in = new BufferedInputStream(Files.newInputStream(file), 1 << 16)) {
-                int line = 1;
-                int need = 0;
-                int lo = 0x80;
-                int hi = 0xBF;
-                for (int b; (b = in.read()) >= 0; ) {
-                    if (need > 0) {
-                        if (b < lo || b > hi) {
-                            return line;
-                        }
-                        need--;
-                        lo = 0x80;
-                        hi = 0xBF;
-                    } else if (b < 0x80) {
-                        line += b == '\n' ? 1 : 0;
-                    } else if (b >= 0xC2 && b <= 0xDF) {
-                        need = 1;
-                    } else if (b >= 0xE0 && b <= 0xEF) {
-                        need = 2;               // no overlong forms (E0) and no surrogates (ED)
-                        lo = b == 0xE0 ? 0xA0 : 0x80;
-                        hi = b == 0xED ? 0x9F : 0xBF;
-                    } else if (b >= 0xF0 && b <= 0xF4) {
-                        need = 3;               // no overlong forms (F0) and nothing above U+10FFFF (F4)
-                        lo = b == 0xF0 ? 0x90 : 0x80;
-                        hi = b == 0xF4 ? 0x8F : 0xBF;
-                    } else {
-                        return line;
-                    }
-                }
-                return need > 0 ? line : fallback;
-            } catch (IOException | SecurityException e) {
-                return fallback;
-            }
-        }
-
-        private static void closeQuietly(AutoCloseable c) {
-            try {
-                c.close();
-            } catch (Exception ignored) {
-                // nothing was written; a failing close cannot lose data
-            }
-        }
-
-        /** "NoSuchFileException: path" style: the exception type says most, its message the rest. */
-        static String describe(Exception e) {
-            String name = e.getClass().getSimpleName();
-            String message = e.getMessage();
-            return message == null || message.isBlank() ? name : name + ": " + message;
-        }
-    }
-
-    /**
-     * A hand-written tokeniser over one line (no regex, no split): whitespace-separated tokens
-     * up to a {@code #} comment, addressed by {@link #start}/{@link #stop} without copying.
-     */
-    static final class LineCursor {
-        private static final int QUOTE_MAX = 40;
-        private static final double[] POW10 = {
-            1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
-            1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22
-        };
-
-        private final Path file;
-        String line = "";
-        int lineNumber;
-        int start;
-        int stop;
-        private int pos;
-        private int end;
-
-        LineCursor(Path file) {
-            this.file = file;
-        }
-
-        void reset(String line, int lineNumber) {
-            this.line = line;
-            this.lineNumber = lineNumber;
-            int hash = line.indexOf('#');
-            end = hash < 0 ? line.length() : hash;
-            pos = 0;
-            start = stop = 0;
-        }
-
-        /** Moves to the next token; false at the end of the line (or at a comment). */
-        boolean next() {
-            while (pos < end && isSpace(line.charAt(pos))) {
-                pos++;
-            }
-            if (pos >= end) {
-                return false;
-            }
-            start = pos;
-            while (pos < end && !isSpace(line.charAt(pos))) {
-                pos++;
-            }
-            stop = pos;
-            return true;
-        }
-
-        String token() {
-            return line.substring(start, stop);
-        }
-
-        /** Everything after the current token up to the comment, without surrounding whitespace. */
-        String rest() {
-            int s = pos;
-            while (s < end && isSpace(line.charAt(s))) {
-                s++;
-            }
-            int e = end;
-            while (e > s && isSpace(line.charAt(e - 1))) {
-                e--;
-            }
-            pos = end;
-            return line.substring(s, e);
-        }
-
-        /** The current token as a number; {@code keyword} names the statement in the message. */
-        double number(String keyword) throws SceneException {
-            double value = parseDecimal(line, start, stop);
-            if (!Double.isNaN(value)) {
-                return value;
-            }
-            try {
-                return Double.parseDouble(token());
-            } catch (NumberFormatException e) {
-                throw error("bad number " + quote(token()) + " in " + quote(keyword));
-            }
-        }
-
-        SceneException error(String message) {
-            return new SceneException(file, lineNumber, message);
-        }
-
-        static boolean isSpace(char c) {
-            return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\u000B';
-        }
-
-        /** {@code 's'}, shortened if long, for messages about arbitrary input. */
-        static String quote(String s) {
-            return "'" + abbreviate(s) + "'";
-        }
-
-        static String abbreviate(String s) {
-            return s.length() <= QUOTE_MAX ? s : s.substring(0, QUOTE_MAX) + "...";
-        }
-
-        /**
-         * Fast path for plain decimals ([+-]digits[.digits], at most 15 significant digits and 22
-         * decimals): the digits as an exact integer divided by an exact power of ten is one
-         * correctly rounded IEEE operation, so the result equals {@link Double#parseDouble}
-         * (Clinger 1990). Returns NaN for anything else, which the caller hands to parseDouble.
-         */
-        static double parseDecimal(String s, int from, int to) {
-            int i = from;
-            boolean negative = false;
-            if (i < to && (s.charAt(i) == '-' || s.charAt(i) == '+')) {
-                negative = s.charAt(i) == '-';
-                i++;
-            }
-            long mantissa = 0;
-            int significant = 0;
-            int decimals = 0;
-            boolean dot = false;
-            boolean digit = false;
-            for (; i < to; i++) {
-                char c = s.charAt(i);
-                if (c >= '0' && c <= '9') {
-                    digit = true;
-                    decimals += dot ? 1 : 0;
-                    if (mantissa == 0 && c == '0') {
-                        continue;
-                    }
-                    if (++significant > 15) {
-                        return Double.NaN;
-                    }
-                    mantissa = mantissa * 10 + (c - '0');
-                } else if (c == '.' && !dot) {
-                    dot = true;
-                } else {
-                    return Double.NaN;
-                }
-            }
-            if (!digit || decimals >= POW10.length) {
-                return Double.NaN;
-            }
-            double value = mantissa / POW10[decimals];
-            return negative ? -value : value;
-        }
-    }
-
-    /** Open-addressing map from non-negative long keys to int values, without boxing. */
-    static final class LongIntMap {
-        private static final long EMPTY = -1;
-
-        private long[] keys;
-        private int[] values;
-        private int size;
-        private int shift;
-
-        LongIntMap() {
-            allocate(10);
-        }
-
-        /** The value stored for {@code key}; if there is none, stores {@code value} and returns -1. */
-        int putIfAbsent(long key, int value) {
-            int mask = keys.length - 1;
-            for (int i = slot(key); ; i = (i + 1) & mask) {
-                long k = keys[i];
-                if (k == key) {
-                    return values[i];
-                }
-                if (k == EMPTY) {
-                    keys[i] = key;
-                    values[i] = value;
-                    if (++size > keys.length >> 1) {
-                        rehash();
-                    }
-                    return -1;
-                }
-            }
-        }
-
-        private int slot(long key) {
-            return (int) ((key * 0x9E3779B97F4A7C15L) >>> shift); // Fibonacci hashing
-        }
-
-        private void allocate(int bits) {
-            keys = new long[1 << bits];
-            values = new int[1 << bits];
-            Arrays.fill(keys, EMPTY);
-            shift = 64 - bits;
-        }
-
-        private void rehash() {
-            long[] oldKeys = keys;
-            int[] oldValues = values;
-            allocate(65 - shift);
-            int mask = keys.length - 1;
-            for (int j = 0; j < oldKeys.length; j++) {
-                if (oldKeys[j] != EMPTY) {
-                    int i = slot(oldKeys[j]);
-                    while (keys[i] != EMPTY) {
-                        i = (i + 1) & mask;
-                    }
-                    keys[i] = oldKeys[j];
-                    values[i] = oldValues[j];
-                }
-            }
-        }
+        a[index * 3] = (float) x;
+        a[index * 3 + 1] = (float) y;
+        a[index * 3 + 2] = (float) z;
+        return a;
     }
 }
+

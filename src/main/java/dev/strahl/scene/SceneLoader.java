@@ -1,5 +1,6 @@
 package dev.strahl.scene;
 
+import dev.strahl.geometry.TriangleMesh;
 import dev.strahl.material.Bsdf;
 import dev.strahl.material.Dielectric;
 import dev.strahl.material.Glossy;
@@ -17,13 +18,24 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * Loads a scene from a file: a strahl scene file ({@code .json}) or a Wavefront OBJ with its MTL
- * materials ({@code .obj}; the camera then frames the scene from +Z).
+ * Loads a scene from a file: a strahl scene file ({@code .json}), a Wavefront OBJ with its MTL
+ * materials ({@code .obj}) or a PLY mesh ({@code .ply}, ASCII or binary, made of the grey diffuse
+ * {@link #DEFAULT_MATERIAL}). An OBJ or PLY has no camera: the scene is framed from +Z.
  */
 public final class SceneLoader {
+    /** The material of a PLY mesh loaded directly: Lambertian, albedo 0.8 (the MTL default Kd). */
+    public static final Material DEFAULT_MATERIAL = Material.diffuse("default", MtlMaterial.DEFAULT_KD);
+
     private SceneLoader() {}
 
-    /** Loads and builds the scene in {@code file}. */
+    /**
+     * Loads and builds the scene in {@code file}; the format follows the file's extension, in any case.
+     *
+     * @param file a {@code .json}, {@code .obj} or {@code .ply} file
+     * @return the scene
+     * @throws SceneException if the file is missing, unreadable or malformed: the message names
+     *                        the file and, where known, the line
+     */
     public static Scene load(Path file) throws SceneException {
         String name = file.getFileName() == null ? "" : file.getFileName().toString().toLowerCase(Locale.ROOT);
         if (Files.isDirectory(file)) {
@@ -35,25 +47,42 @@ public final class SceneLoader {
         if (name.endsWith(".json")) {
             return JsonSceneReader.read(file);
         }
-        if (name.endsWith(".obj")) {
+        if (name.endsWith(".obj") || name.endsWith(".ply")) {
             Scene.Builder builder = Scene.builder();
-            addObj(file, builder);
+            addMeshFile(file, null, Transform.IDENTITY, builder);
             return builder.build();
         }
-        throw new SceneException(file, "unknown scene format (expected .json or .obj)");
+        throw new SceneException(file, "unknown scene format (expected .json, .obj or .ply)");
     }
 
-    /** Adds the triangles of an OBJ file, with their MTL materials, to a scene under construction. */
-    static void addObj(Path obj, Scene.Builder builder) throws SceneException {
-        ObjModel model = ObjReader.read(obj);
-        List<Material> palette = new ArrayList<>(model.materials().size());
-        for (MtlMaterial m : model.materials()) {
-            palette.add(toMaterial(m, builder));
+    /**
+     * Adds the triangles of an OBJ file (with their MTL materials, or all of {@code material} if it
+     * is not null) or a PLY file (of {@code material}, or {@link #DEFAULT_MATERIAL}) to a scene
+     * under construction, moved by {@code transform}. The readers' warnings become notes that
+     * start with {@code "warning: "}.
+     */
+    static void addMeshFile(Path file, Material material, Transform transform, Scene.Builder builder) throws SceneException {
+        String name = file.getFileName() == null ? "" : file.getFileName().toString().toLowerCase(Locale.ROOT);
+        if (name.endsWith(".ply")) {
+            PlyReader.PlyModel model = PlyReader.read(file);
+            model.warnings().forEach(w -> builder.note("warning: " + w));
+            builder.addMesh(transform.apply(model.mesh()), material != null ? material : DEFAULT_MATERIAL);
+        } else if (name.endsWith(".obj")) {
+            ObjModel model = ObjReader.read(file);
+            model.warnings().forEach(w -> builder.note("warning: " + w));
+            TriangleMesh mesh = transform.apply(model.mesh());
+            if (material != null) {
+                builder.addMesh(mesh, material);
+                return;
+            }
+            List<Material> palette = new ArrayList<>(model.materials().size());
+            for (MtlMaterial m : model.materials()) {
+                palette.add(toMaterial(m, builder));
+            }
+            builder.addMesh(mesh, model.triangleMaterial(), palette);
+        } else {
+            throw new SceneException(file, "unknown mesh format (expected .obj or .ply)");
         }
-        for (String w : model.warnings()) {
-            builder.note(w);
-        }
-        builder.addMesh(model.mesh(), model.triangleMaterial(), palette);
     }
 
     /**

@@ -1,9 +1,7 @@
 package dev.strahl.viewer;
 
 import dev.strahl.film.ImageWriters;
-import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
-import dev.strahl.scene.SceneLoader;
 import java.awt.event.KeyEvent;
 import java.io.File;
 import java.nio.file.Files;
@@ -22,28 +20,33 @@ import javax.swing.filechooser.FileNameExtensionFilter;
 /**
  * Opening a scene and saving the image. Files are read and written on background threads
  * ({@link SwingWorker}); errors become a dialog with the one-line message, and a scene that fails
- * to load leaves the current one on screen.
+ * to load (or asks for settings that cannot be applied) leaves the current one on screen.
  */
 final class FileActions {
+    /** Loads a scene file with the settings it is to be shown with ({@link SceneFiles#open}). */
+    interface Opener {
+        SceneFiles.Opened open(Path file) throws SceneException;
+    }
+
     private final JFrame frame;
-    private final RenderController controller;
     private final FramePresenter presenter;
     private final Consumer<String> status;
-    private final Consumer<Path> onSceneOpened;
+    private final Opener opener;
+    private final Consumer<SceneFiles.Opened> onSceneOpened;
     private Path sceneFile;
 
     final Action open;
     final Action save;
 
-    FileActions(JFrame frame, RenderController controller, FramePresenter presenter, Consumer<String> status,
-                Path sceneFile, Consumer<Path> onSceneOpened) {
+    FileActions(JFrame frame, FramePresenter presenter, Consumer<String> status, Path sceneFile, Opener opener,
+                Consumer<SceneFiles.Opened> onSceneOpened) {
         this.frame = frame;
-        this.controller = controller;
         this.presenter = presenter;
         this.status = status;
         this.sceneFile = sceneFile;
+        this.opener = opener;
         this.onSceneOpened = onSceneOpened;
-        open = ViewerActions.action("Open scene…", Icons.open(), "Open a scene file (.json or .obj)",
+        open = ViewerActions.action("Open scene…", Icons.open(), "Open a scene file (.json, .obj or .ply)",
                 KeyStroke.getKeyStroke(KeyEvent.VK_O, ViewerActions.menuMask()), e -> chooseScene());
         save = ViewerActions.action("Save image…", Icons.save(), "Save the current image as PNG (sRGB) or PFM (linear)",
                 KeyStroke.getKeyStroke(KeyEvent.VK_S, ViewerActions.menuMask()), e -> chooseImageFile());
@@ -53,27 +56,30 @@ final class FileActions {
         JFileChooser chooser = new JFileChooser(sceneFile != null && sceneFile.toAbsolutePath().getParent() != null
                 ? sceneFile.toAbsolutePath().getParent().toFile() : new File("."));
         chooser.setDialogTitle("Open scene");
-        chooser.setFileFilter(new FileNameExtensionFilter("Scenes (*.json, *.obj)", "json", "obj"));
+        chooser.setFileFilter(new FileNameExtensionFilter("Scenes (*.json, *.obj, *.ply)", "json", "obj", "ply"));
         if (chooser.showOpenDialog(frame) == JFileChooser.APPROVE_OPTION) {
             openScene(chooser.getSelectedFile().toPath());
         }
     }
 
-    /** Loads {@code file} in the background and shows it; on failure shows the error and keeps the current scene. */
+    /**
+     * Loads {@code file} in the background and shows it with its settings; on failure shows the
+     * error and keeps the current scene.
+     */
     void openScene(Path file) {
         status.accept("Loading " + file.getFileName() + "…");
-        new SwingWorker<Scene, Void>() {
+        new SwingWorker<SceneFiles.Opened, Void>() {
             @Override
-            protected Scene doInBackground() throws SceneException {
-                return SceneLoader.load(file);
+            protected SceneFiles.Opened doInBackground() throws SceneException {
+                return opener.open(file);
             }
 
             @Override
             protected void done() {
                 try {
-                    controller.setScene(get());
+                    SceneFiles.Opened opened = get();
                     sceneFile = file;
-                    onSceneOpened.accept(file);
+                    onSceneOpened.accept(opened);
                     status.accept("Opened " + file.getFileName());
                 } catch (ExecutionException e) {
                     Throwable cause = e.getCause();

@@ -16,12 +16,13 @@ import java.util.function.BiConsumer;
 import javax.swing.JComponent;
 
 /**
- * Shows the newest converted frame, letterboxed: the film keeps the aspect ratio it was started
- * with, and the largest rectangle of that aspect that fits the panel is filled, centred, with
- * bars of the panel's background colour around it. The film size follows that rectangle in
- * DEVICE pixels (the panel size times the screen's scale factor), so on a HiDPI screen one film
- * pixel is one screen pixel. Reduced-resolution previews are scaled up (bilinear where the
- * graphics pipeline honours the hint); full-resolution frames are drawn one to one.
+ * Shows the newest converted frame, letterboxed: the film keeps the aspect ratio of the size the
+ * scene asks for ({@link #setFilm}), and the largest rectangle of that aspect that fits the panel
+ * is filled, centred, with bars of the panel's background colour around it. The film size
+ * follows that rectangle in DEVICE pixels (the panel size times the screen's scale factor), so on
+ * a HiDPI screen one film pixel is one screen pixel. Reduced-resolution previews are scaled up
+ * (bilinear where the graphics pipeline honours the hint); full-resolution frames are drawn one
+ * to one.
  */
 final class ImagePanel extends JComponent {
     /** The neutral dark grey around the image, in both themes (as in image editors). */
@@ -29,7 +30,7 @@ final class ImagePanel extends JComponent {
     /** How long a message ("Saved …") stays over the image. */
     static final int MESSAGE_MILLIS = 5000;
     private final FramePresenter presenter;
-    private final double aspect;
+    private double aspect;
     private BiConsumer<Integer, Integer> onFilmSize = (w, h) -> { };
     private java.util.function.Consumer<FramePresenter.Shown> onPainted = s -> { };
     private String message = "";
@@ -40,10 +41,7 @@ final class ImagePanel extends JComponent {
 
     ImagePanel(FramePresenter presenter, int filmWidth, int filmHeight) {
         this.presenter = presenter;
-        this.aspect = (double) filmWidth / filmHeight;
-        double scale = scale(GraphicsEnvironment.isHeadless() ? null
-                : GraphicsEnvironment.getLocalGraphicsEnvironment().getDefaultScreenDevice().getDefaultConfiguration());
-        setPreferredSize(new Dimension((int) Math.ceil(filmWidth / scale), (int) Math.ceil(filmHeight / scale)));
+        setFilm(filmWidth, filmHeight);
         setOpaque(true);
         setFocusable(true);
         presenter.onShown(this::repaint);        // repaint() is thread-safe and coalesced by Swing
@@ -54,6 +52,21 @@ final class ImagePanel extends JComponent {
             }
         });
         addPropertyChangeListener("graphicsConfiguration", e -> reportFilmSize());   // moved to a screen of another scale
+    }
+
+    /**
+     * The film size the scene asks for: from now on the film has its aspect, and the panel's
+     * preferred size shows it at one film pixel per device pixel.
+     */
+    void setFilm(int filmWidth, int filmHeight) {
+        aspect = (double) filmWidth / filmHeight;
+        GraphicsConfiguration gc = getGraphicsConfiguration();
+        if (gc == null && !GraphicsEnvironment.isHeadless()) {
+            gc = GraphicsEnvironment.getLocalGraphicsEnvironment().getDefaultScreenDevice().getDefaultConfiguration();
+        }
+        double scale = scale(gc);
+        setPreferredSize(new Dimension((int) Math.ceil(filmWidth / scale), (int) Math.ceil(filmHeight / scale)));
+        repaint();
     }
 
     /** Tells {@code listener} the film size (device pixels) whenever the panel's size or screen changes. */
@@ -79,11 +92,19 @@ final class ImagePanel extends JComponent {
     }
 
     private void reportFilmSize() {
-        if (getWidth() > 0 && getHeight() > 0) {
-            double s = scale(getGraphicsConfiguration());
-            Dimension film = fit((int) Math.round(getWidth() * s), (int) Math.round(getHeight() * s), aspect);
+        Dimension film = filmSize();
+        if (film != null) {
             onFilmSize.accept(film.width, film.height);
         }
+    }
+
+    /** The film size (device pixels) for the panel's size and the film's aspect; null while the panel has no size. */
+    Dimension filmSize() {
+        if (getWidth() <= 0 || getHeight() <= 0) {
+            return null;
+        }
+        double s = scale(getGraphicsConfiguration());
+        return fit((int) Math.round(getWidth() * s), (int) Math.round(getHeight() * s), aspect);
     }
 
     private static double scale(GraphicsConfiguration gc) {

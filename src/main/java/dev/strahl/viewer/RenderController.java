@@ -199,9 +199,13 @@ final class RenderController {
         }
     }
 
-    /** Shows another scene, from its own camera. */
-    synchronized void setScene(Scene newScene) {
+    /**
+     * Shows another scene, from its own camera, with its own settings (integrator, depth,
+     * sampling, seed, film size as the window fits it).
+     */
+    synchronized void setScene(Scene newScene, RenderSettings newSettings) {
         scene = Objects.requireNonNull(newScene, "scene");
+        settings = Objects.requireNonNull(newSettings, "settings");
         home = OrbitCamera.of(newScene.camera());
         camera = home;
         if (state != State.CLOSED) {

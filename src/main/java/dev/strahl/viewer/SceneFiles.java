@@ -1,5 +1,6 @@
 package dev.strahl.viewer;
 
+import dev.strahl.render.RenderSettings;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
 import dev.strahl.scene.SceneLoader;
@@ -10,10 +11,10 @@ import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 
 /**
- * Finds and loads the scene to show. Without a file named by the user, the default is the
- * Cornell Box: {@code scenes/cornell-box.json} in the working directory when it exists (a
- * checkout of strahl), else the copy packed into the jar under {@code /scenes/}, unpacked to a
- * temporary directory because the loader reads files.
+ * Finds and loads the scene to show, with the render settings it asks for. Without a file named
+ * by the user, the default is the Cornell Box: {@code scenes/cornell-box.json} in the working
+ * directory when it exists (a checkout of strahl), else the copy packed into the jar under
+ * {@code /scenes/}, unpacked to a temporary directory because the loader reads files.
  */
 final class SceneFiles {
     static final Path DEFAULT = Path.of("scenes", "cornell-box.json");
@@ -22,9 +23,19 @@ final class SceneFiles {
     private SceneFiles() {
     }
 
-    /** Loads {@code file}, or the default scene when it is null. */
-    static Scene load(Path file) throws SceneException {
-        return SceneLoader.load(file != null ? file : defaultScene());
+    /**
+     * A loaded scene and the settings to render it with.
+     *
+     * @param settings the viewer's options combined with the scene file's settings; the film size
+     *                 is the one asked for, before the window fits it
+     */
+    record Opened(Path file, Scene scene, RenderSettings settings) {}
+
+    /** Loads {@code file} (the default scene when it is null) and combines its settings with {@code options}. */
+    static Opened open(Path file, ViewerOptions options) throws SceneException {
+        Path f = file != null ? file : defaultScene();
+        Scene scene = SceneLoader.load(f);
+        return new Opened(f, scene, options.settingsFor(f, scene.settings()));
     }
 
     /** The file of the default scene. */

@@ -1,13 +1,10 @@
 package dev.strahl.viewer;
 
-import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
-import dev.strahl.scene.SceneLoader;
 import java.awt.GraphicsEnvironment;
 import java.awt.HeadlessException;
 import java.lang.management.ManagementFactory;
 import java.lang.reflect.InvocationTargetException;
-import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -45,7 +42,7 @@ public final class Viewer {
      * Loads the scene, starts rendering and opens the window. Call from any thread but the event
      * dispatch thread.
      *
-     * @throws SceneException    if the scene cannot be loaded (nothing is opened then)
+     * @throws SceneException    if the scene cannot be loaded or asks for an unknown integrator (nothing is opened then)
      * @throws HeadlessException if there is no display
      */
     public static Viewer open(ViewerOptions options) throws SceneException {
@@ -56,10 +53,9 @@ public final class Viewer {
             throw new IllegalStateException("Viewer.open must not be called on the event dispatch thread");
         }
         mark("opening");
-        Path file = options.scene() != null ? options.scene() : SceneFiles.defaultScene();
-        Scene scene = SceneLoader.load(file);
+        SceneFiles.Opened opened = SceneFiles.open(options.scene(), options);
         FramePresenter presenter = new FramePresenter();
-        RenderController controller = RenderController.rendering(scene, options.renderSettings(), options.stopAt(), presenter);
+        RenderController controller = RenderController.rendering(opened.scene(), opened.settings(), options.stopAt(), presenter);
         Viewer viewer = new Viewer(controller, presenter);
         if (TRACE) {
             presenter.onShown(viewer::trace);
@@ -67,7 +63,7 @@ public final class Viewer {
         mark("scene loaded");
         controller.startBeforeDisplay();      // a first small image while the window is being built
         try {
-            SwingUtilities.invokeAndWait(() -> viewer.createWindow(options, file));
+            SwingUtilities.invokeAndWait(() -> viewer.createWindow(options, opened));
         } catch (InvocationTargetException e) {
             viewer.close();
             if (e.getCause() instanceof Error error) {
@@ -89,11 +85,11 @@ public final class Viewer {
         }
     }
 
-    private void createWindow(ViewerOptions options, Path file) {
+    private void createWindow(ViewerOptions options, SceneFiles.Opened opened) {
         mark("building the window");
         options.theme().install();
         mark("look and feel installed");
-        ViewerFrame frame = new ViewerFrame(controller, presenter, file, options.width(), options.height(), this::close);
+        ViewerFrame frame = new ViewerFrame(controller, presenter, opened, file -> SceneFiles.open(file, options), this::close);
         if (TRACE) {
             AtomicBoolean first = new AtomicBoolean(true);
             frame.image.onPainted(shown -> {

@@ -6,7 +6,7 @@ import java.awt.event.ActionEvent;
 import java.awt.event.ActionListener;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
-import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import javax.swing.AbstractAction;
@@ -33,6 +33,10 @@ final class ViewerActions {
     static final List<Integer> STOP_AT = List.of(16, 64, 256, 1024, 4096, RenderController.UNLIMITED);
     static final List<Integer> DEPTHS = List.of(-1, 1, 2, 3, 4, 5, 8, 16);
     static final double EXPOSURE_STEP = 0.5;
+    /** Depths in the menus: unbounded (−1) first, then ascending. */
+    static final Comparator<Integer> DEPTH_ORDER = Comparator.comparingInt(d -> d < 0 ? Integer.MIN_VALUE : d);
+    /** Stop-at counts ascending, "never" (0) last. */
+    static final Comparator<Integer> STOP_AT_ORDER = Comparator.comparingInt(n -> n <= 0 ? Integer.MAX_VALUE : n);
 
     private final RenderController controller;
     private final FramePresenter presenter;
@@ -74,13 +78,12 @@ final class ViewerActions {
                 e -> JOptionPane.showMessageDialog(root, CONTROLS, "strahl viewer: controls", JOptionPane.PLAIN_MESSAGE));
         quit = action("Quit", null, "Close the viewer", KeyStroke.getKeyStroke(KeyEvent.VK_Q, menuMask()), e -> onQuit.run());
 
-        integrator = new Choice<>(List.of(IntegratorKind.values()), controller.settings().integrator(), IntegratorKind::id,
+        integrator = new Choice<>(List.of(IntegratorKind.values()), controller.settings().integrator(), null, IntegratorKind::id,
                 controller::setIntegrator);
-        maxDepth = new Choice<>(withValue(DEPTHS, controller.settings().maxDepth()), controller.settings().maxDepth(),
-                StatusBar::depthText, controller::setMaxDepth);
-        hemisphere = new Choice<>(List.of(HemisphereSampling.values()), controller.settings().hemisphere(),
+        maxDepth = new Choice<>(DEPTHS, controller.settings().maxDepth(), DEPTH_ORDER, StatusBar::depthText, controller::setMaxDepth);
+        hemisphere = new Choice<>(List.of(HemisphereSampling.values()), controller.settings().hemisphere(), null,
                 h -> h.name().toLowerCase(Locale.ROOT), controller::setHemisphere);
-        stopAt = new Choice<>(withValue(STOP_AT, controller.stopAt()), controller.stopAt(),
+        stopAt = new Choice<>(STOP_AT, controller.stopAt(), STOP_AT_ORDER,
                 n -> n == RenderController.UNLIMITED ? "never" : n + " spp", controller::setStopAt);
     }
 
@@ -131,26 +134,18 @@ final class ViewerActions {
         return mods.isEmpty() ? k : mods + "+" + k;
     }
 
-    private static List<Integer> withValue(List<Integer> values, int v) {
-        if (values.contains(v)) {
-            return values;
-        }
-        List<Integer> all = new ArrayList<>(values);
-        all.add(v);
-        all.sort((a, b) -> Integer.compare(a <= 0 ? Integer.MAX_VALUE : a, b <= 0 ? Integer.MAX_VALUE : b));
-        if (values == DEPTHS) {
-            all.remove(Integer.valueOf(-1));
-            all.add(0, -1);
-        }
-        return all;
-    }
-
     private void exposureBy(double stops) {
         presenter.setExposure(presenter.exposure() + stops);
     }
 
-    /** Shows "Pause" or "Resume" as the state requires, and the exposure. */
+    /**
+     * Shows "Pause" or "Resume" as the state requires, the exposure, and the settings in use
+     * (which opening a scene may have changed).
+     */
     void refresh(RenderController.Status s) {
+        integrator.show(s.integrator());
+        maxDepth.show(s.maxDepth());
+        hemisphere.show(s.hemisphere());
         exposureLabel.setText(StatusBar.exposureText(presenter.exposure()));
         boolean paused = s.state() == RenderController.State.PAUSED;
         pause.setEnabled(s.state() != RenderController.State.DONE);   // raise the stop-at count to go on

@@ -1,6 +1,9 @@
 package dev.strahl.viewer;
 
+import dev.strahl.render.RenderSettings;
 import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.Frame;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.nio.file.Path;
@@ -24,11 +27,21 @@ final class ViewerFrame {
     final ViewerActions actions;
     private final RenderController controller;
     private final Timer timer;
+    /** The film size the current scene asks for (its settings' size before the window fits it). */
+    private int askedWidth;
+    private int askedHeight;
 
-    ViewerFrame(RenderController controller, FramePresenter presenter, Path sceneFile, int filmWidth, int filmHeight, Runnable onClose) {
+    /**
+     * The window for {@code opened}, which {@code controller} renders; {@code opener} loads the
+     * scenes opened from the window.
+     */
+    ViewerFrame(RenderController controller, FramePresenter presenter, SceneFiles.Opened opened, FileActions.Opener opener,
+                Runnable onClose) {
         assert SwingUtilities.isEventDispatchThread();
         this.controller = controller;
-        frame = new JFrame(title(sceneFile));
+        askedWidth = opened.settings().width();
+        askedHeight = opened.settings().height();
+        frame = new JFrame(title(opened.file()));
         frame.setDefaultCloseOperation(WindowConstants.DO_NOTHING_ON_CLOSE);
         frame.addWindowListener(new WindowAdapter() {
             @Override
@@ -36,9 +49,9 @@ final class ViewerFrame {
                 onClose.run();
             }
         });
-        image = new ImagePanel(presenter, filmWidth, filmHeight);
+        image = new ImagePanel(presenter, askedWidth, askedHeight);
         status = new StatusBar();
-        files = new FileActions(frame, controller, presenter, image::showMessage, sceneFile, f -> frame.setTitle(title(f)));
+        files = new FileActions(frame, presenter, image::showMessage, opened.file(), opener, this::showScene);
         actions = new ViewerActions(controller, presenter, files, frame.getRootPane(), onClose);
         CameraMouse.attach(image, controller);
 
@@ -59,6 +72,27 @@ final class ViewerFrame {
         frame.setVisible(true);
         image.requestFocusInWindow();
         image.onFilmSize(controller::resize);
+    }
+
+    /**
+     * Shows a scene opened from the window, with its settings. When it asks for another film size
+     * than the scene before, the window is resized to show the film at that size (unless it is
+     * maximised); otherwise the window keeps its size. Either way the film takes the new scene's
+     * aspect, letterboxed in the window.
+     */
+    void showScene(SceneFiles.Opened opened) {
+        RenderSettings s = opened.settings();
+        boolean newSize = s.width() != askedWidth || s.height() != askedHeight;
+        askedWidth = s.width();
+        askedHeight = s.height();
+        image.setFilm(s.width(), s.height());
+        if (newSize && (frame.getExtendedState() & Frame.MAXIMIZED_BOTH) == 0) {
+            frame.pack();
+        }
+        Dimension film = image.filmSize();
+        controller.setScene(opened.scene(), film != null ? s.withSize(film.width, film.height) : s);
+        frame.setTitle(title(opened.file()));
+        refreshStatus();
     }
 
     void refreshStatus() {

@@ -153,12 +153,12 @@ class ImageWritersTest {
         ImageWriters.write(old, out);
 
         IOException diskFull = new IOException("disk full");
-        assertThatThrownBy(() -> ImageWriters.writeAtomically(out, os -> {
+        assertThatThrownBy(() -> AtomicFile.write(out, os -> {
             os.write(new byte[200_000]);                       // more than the stream buffers
             throw diskFull;
         })).isSameAs(diskFull);
         RuntimeException bug = new UncheckedIOException(new IOException("encoder bug"));
-        assertThatThrownBy(() -> ImageWriters.writeAtomically(out, os -> {
+        assertThatThrownBy(() -> AtomicFile.write(out, os -> {
             os.write(1);
             throw bug;
         })).isSameAs(bug);

@@ -52,7 +52,7 @@ class JsonSceneReaderTest {
                     "grey": { "type": "diffuse", "albedo": [0.5, 0.5, 0.5] }
                   },
                   "shapes": [
-                    { "type": "obj", "file": "models/tri.obj" },
+                    { "type": "mesh", "file": "models/tri.obj" },
                     { "type": "sphere", "center": [3, 4, 5], "radius": 0.5, "material": "lamp" },
                     { "type": "sphere", "center": [-3, -4, -5], "radius": 2, "material": "grey" }
                   ],
@@ -296,8 +296,8 @@ class JsonSceneReaderTest {
         Files.writeString(file, """
                 {
                   "shapes": [
-                    { "type": "obj", "file": "../models/tri.obj" },
-                    { "type": "obj", "file": "near.obj" }
+                    { "type": "mesh", "file": "../models/tri.obj" },
+                    { "type": "mesh", "file": "near.obj" }
                   ]
                 }
                 """);
@@ -315,7 +315,7 @@ class JsonSceneReaderTest {
         Files.writeString(obj, TRIANGLE_OBJ);
         Path sub = Files.createDirectories(dir.resolve("sub"));
         Path file = sub.resolve("scene.json");
-        Files.writeString(file, "{ \"shapes\": [ { \"type\": \"obj\", \"file\": " + quote(obj.toString()) + " } ] }");
+        Files.writeString(file, "{ \"shapes\": [ { \"type\": \"mesh\", \"file\": " + quote(obj.toString()) + " } ] }");
         assertThat(JsonSceneReader.read(file).geometry().triangleCount()).isEqualTo(1);
     }
 
@@ -323,7 +323,7 @@ class JsonSceneReaderTest {
     void aMissingObjIsAnErrorNamingTheResolvedFile() throws Exception {
         Path sub = Files.createDirectories(dir.resolve("sub"));
         Path file = sub.resolve("scene.json");
-        Files.writeString(file, "{ \"shapes\": [ { \"type\": \"obj\", \"file\": \"nope.obj\" } ] }");
+        Files.writeString(file, "{ \"shapes\": [ { \"type\": \"mesh\", \"file\": \"nope.obj\" } ] }");
         SceneException e = catchThrowableOfType(() -> JsonSceneReader.read(file), SceneException.class);
         assertThat(e).isNotNull();
         assertThat(e.getMessage()).contains(sub.resolve("nope.obj").toAbsolutePath().toString()).contains("file not found");
@@ -332,7 +332,7 @@ class JsonSceneReaderTest {
     @Test
     void errorsInAnObjAreReportedAtTheObjLine() throws Exception {
         Files.writeString(dir.resolve("bad.obj"), "v 0 0 0\nv 1 2 x\n");
-        SceneException e = error("{ \"shapes\": [ { \"type\": \"obj\", \"file\": \"bad.obj\" } ] }");
+        SceneException e = error("{ \"shapes\": [ { \"type\": \"mesh\", \"file\": \"bad.obj\" } ] }");
         assertThat(e.file().getFileName().toString()).isEqualTo("bad.obj");
         assertThat(e.line()).isEqualTo(2);
         assertThat(e.getMessage()).contains("bad.obj:2: ");
@@ -381,7 +381,7 @@ class JsonSceneReaderTest {
                   "shapes": [ %s ],
                   "lights": []
                 }
-                """.formatted(MATERIALS, SPHERE), "unknown key 'lights' in scene", "camera, environment, materials, shapes"),
+                """.formatted(MATERIALS, SPHERE), "unknown key 'lights' in scene", "camera, environment, film, integrator, materials, shapes"),
             bad("unknown key in camera", 6, """
                 {
                   %s
@@ -414,10 +414,10 @@ class JsonSceneReaderTest {
                 {
                   %s
                   "shapes": [
-                    { "type": "obj", "file": "x.obj", "material": "m" }
+                    { "type": "mesh", "file": "x.obj", "scale": 2 }
                   ]
                 }
-                """.formatted(MATERIALS), "unknown key 'material' in shapes[] of type obj"),
+                """.formatted(MATERIALS), "unknown key 'scale' in shapes[] of type mesh", "file, material, transform, type"),
             // wrong types
             bad("fov is a string", 5, """
                 {
@@ -505,7 +505,7 @@ class JsonSceneReaderTest {
             bad("obj file is a number", 3, """
                 {
                   "shapes": [
-                    { "type": "obj", "file": 7 }
+                    { "type": "mesh", "file": 7 }
                   ]
                 }
                 """, "'shapes[].file' must be a string, got a number"),
@@ -573,7 +573,7 @@ class JsonSceneReaderTest {
             bad("missing obj file", 3, """
                 {
                   "shapes": [
-                    { "type": "obj" }
+                    { "type": "mesh" }
                   ]
                 }
                 """, "missing required key 'file'"),
@@ -600,7 +600,7 @@ class JsonSceneReaderTest {
                     { "type": "cube", "size": 1 }
                   ]
                 }
-                """.formatted(MATERIALS), "unknown shape type 'cube'", "known: obj, sphere"),
+                """.formatted(MATERIALS), "unknown shape type 'cube'", "known: mesh, sphere, triangles"),
             bad("albedo above 1", 3, """
                 {
                   "materials": {

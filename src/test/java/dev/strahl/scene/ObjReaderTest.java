@@ -348,6 +348,9 @@ class ObjReaderTest {
                 Arguments.of("v NaN 0 0\n", 1, "'NaN' in 'v' is not finite"),
                 Arguments.of("v 0 -Infinity 0\n", 1, "'-Infinity' in 'v' is not finite"),
                 Arguments.of("v 0 0 1e39\n", 1, "'1e39' in 'v' is too large for a float"),
+                Arguments.of("v 0 0 1e30\n", 1, "'1e30' in 'v' is too large (the limit is 1e18 in magnitude)"),
+                Arguments.of("v 0 -2e18 0\n", 1, "'-2e18' in 'v' is too large"),
+                Arguments.of("vn 0 0 1e39\n", 1, "'1e39' in 'vn' is too large for a float"),
                 Arguments.of("v 0 0 0 w\n", 1, "bad number 'w' in 'v'"),
                 Arguments.of("vn 0 1\n", 1, "'vn' needs 3 numbers"),
                 Arguments.of("vn 0 x 1\n", 1, "bad number 'x' in 'vn'"),
@@ -373,7 +376,8 @@ class ObjReaderTest {
                 Arguments.of(eight + "f 1 2 1.5\n", 9, "bad vertex index '1.5' in 'f'"),
                 Arguments.of(eight + "f 1/x 2 3\n", 9, "bad texture index 'x' in 'f'"),
                 Arguments.of(eight + "f 1//-0 2 3\n", 9, "normal index '-0' is invalid"),
-                Arguments.of("# nothing\n" + eight + "g only vertices\n", 0, "no faces"));
+                Arguments.of("# nothing\n" + eight + "g only vertices\n", 0, "no faces: the file holds no geometry"),
+                Arguments.of(eight + "f 1 2 2\nf 1 1 1 1\n", 0, "no geometry: all 3 triangles have zero area"));
     }
 
     @ParameterizedTest
@@ -458,36 +462,6 @@ class ObjReaderTest {
         }
     }
 
-    @Test
-    void fastDecimalParsingAgreesWithParseDouble() {
-        var random = new SplittableRandom(7);
-        for (int i = 0; i < 200_000; i++) {
-            var s = new StringBuilder();
-            if (random.nextInt(3) == 0) {
-                s.append(random.nextBoolean() ? '-' : '+');
-            }
-            int intDigits = random.nextInt(10);
-            int fracDigits = random.nextInt(random.nextBoolean() ? 8 : 25);
-            for (int d = 0; d < intDigits; d++) {
-                s.append((char) ('0' + random.nextInt(10)));
-            }
-            if (fracDigits > 0 || random.nextBoolean()) {
-                s.append('.');
-            }
-            for (int d = 0; d < fracDigits; d++) {
-                s.append((char) ('0' + random.nextInt(10)));
-            }
-            String text = s.toString();
-            double fast = ObjReader.LineCursor.parseDecimal(text, 0, text.length());
-            if (!Double.isNaN(fast)) {
-                assertThat(Double.doubleToRawLongBits(fast)).as(text)
-                        .isEqualTo(Double.doubleToRawLongBits(Double.parseDouble(text)));
-            }
-        }
-        assertThat(ObjReader.LineCursor.parseDecimal("0.7250", 0, 6)).isEqualTo(0.725);
-        assertThat(ObjReader.LineCursor.parseDecimal("1e5", 0, 3)).as("exponents go to parseDouble").isNaN();
-    }
-
     // ---- helpers -----------------------------------------------------------------------------
 
     private Path write(String name, String text) throws IOException {
@@ -543,5 +517,33 @@ class ObjReaderTest {
             names.add(model.materialOf(t).name());
         }
         return names;
+    }
+
+    @Test
+    void aMeshTooLargeForTheHeapIsRefusedWhileReadingSayingWhatItNeeds() throws Exception {
+        StringBuilder text = new StringBuilder("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n");
+        for (int i = 0; i < 3000; i++) {
+            text.append(i % 2 == 0 ? "f 1 2 3\n" : "f 2 4 3\n");
+        }
+        Path file = write("big.obj", text.toString());
+        long saved = HeapBudget.limit;
+        try {
+            HeapBudget.limit = 100_000;                       // room for 666 triangles at 150 bytes each
+            assertThatThrownBy(() -> ObjReader.read(file)).isInstanceOf(SceneException.class)
+                    .hasMessageStartingWith(file + ":")
+                    .hasMessageContaining("the mesh needs at least ")
+                    .hasMessageContaining(" KiB (")
+                    .hasMessageContaining("triangles so far, at least 150 bytes each), more than the Java heap's 97.7 KiB")
+                    .hasMessageEndingWith("give Java more memory (java -Xmx...)")
+                    .satisfies(e -> assertThat(((SceneException) e).line()).isBetween(5 + 666, 5 + 3000));
+            HeapBudget.limit = 2999 * 150;                    // passes every check while reading, not the one at the end
+            assertThatThrownBy(() -> ObjReader.read(file)).isInstanceOf(SceneException.class)
+                    .hasMessage(file + ": the mesh needs at least 439.5 KiB (3000 triangles, at least 150 bytes each), more than"
+                            + " the Java heap's 439.3 KiB: give Java more memory (java -Xmx...)");
+            HeapBudget.limit = 3000 * 150;
+            assertThat(ObjReader.read(file).mesh().triangleCount()).isEqualTo(3000);
+        } finally {
+            HeapBudget.limit = saved;
+        }
     }
 }

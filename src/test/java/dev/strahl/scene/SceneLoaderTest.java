@@ -165,12 +165,12 @@ class SceneLoaderTest {
         Files.writeString(obj, SQUARE + "v 2 0 0\nv 3 0 0\nf 1 2 3\nf 1 2 5\n");   // the second is a segment
         Scene one = SceneLoader.load(obj);
         assertThat(one.geometry().triangleCount()).isEqualTo(1);
-        assertThat(one.notes()).contains("skipped 1 degenerate triangle (zero area)");
+        assertThat(one.notes()).contains("warning: " + obj + ": skipped 1 degenerate triangle (zero area), the first at line 8");
 
         Files.writeString(obj, SQUARE + "v 2 0 0\nv 3 0 0\nf 1 2 3\nf 1 2 5\nf 1 1 3\n");
         Scene two = SceneLoader.load(obj);
         assertThat(two.geometry().triangleCount()).isEqualTo(1);
-        assertThat(two.notes()).contains("skipped 2 degenerate triangles (zero area)");
+        assertThat(two.notes()).contains("warning: " + obj + ": skipped 2 degenerate triangles (zero area), the first at line 8");
     }
 
     @Test
@@ -200,7 +200,7 @@ class SceneLoaderTest {
         Files.writeString(obj, SQUARE + "f 1 2 3 4\n");
         assertThat(SceneLoader.load(obj).geometry().triangleCount()).isEqualTo(2);
         Path json = dir.resolve("Scene.Json");
-        Files.writeString(json, "{ \"shapes\": [ { \"type\": \"obj\", \"file\": \"UPPER.OBJ\" } ] }");
+        Files.writeString(json, "{ \"shapes\": [ { \"type\": \"mesh\", \"file\": \"UPPER.OBJ\" } ] }");
         assertThat(SceneLoader.load(json).geometry().triangleCount()).isEqualTo(2);
     }
 
@@ -212,7 +212,7 @@ class SceneLoaderTest {
         assertThat(error(folder)).isEqualTo(folder + ": is a directory, not a scene file");
         Path text = dir.resolve("scene.txt");
         Files.writeString(text, SQUARE);
-        assertThat(error(text)).isEqualTo(text + ": unknown scene format (expected .json or .obj)");
+        assertThat(error(text)).isEqualTo(text + ": unknown scene format (expected .json, .obj or .ply)");
         Path noExtension = dir.resolve("scene");
         Files.writeString(noExtension, SQUARE);
         assertThat(error(noExtension)).startsWith(noExtension + ": unknown scene format");

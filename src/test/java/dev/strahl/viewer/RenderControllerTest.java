@@ -310,10 +310,37 @@ class RenderControllerTest {
     @Test
     void aNewSceneStartsFromItsOwnCamera() {
         controller.moveCamera(c -> c.orbit(1, 0));
-        controller.setScene(cornell);
+        controller.setScene(cornell, controller.settings());
         assertThat(timer.tasks).isEmpty();
         assertThat(glance().scene.camera().lookFrom().distance(cornell.camera().lookFrom())).isLessThan(1e-12);
         assertThat(controller.status().preview()).isFalse();
+    }
+
+    @Test
+    void aNewSceneRendersWithItsOwnSettings() {
+        RenderSettings asked = controller.settings().withSize(80, 40).withIntegrator(IntegratorKind.DIRECT).withMaxDepth(7)
+                .withSeed(42).withLightSamples(3).withHemisphere(HemisphereSampling.UNIFORM);
+        controller.setScene(cornell, asked);
+        FakeJob quick = job();
+        assertThat(quick.settings.width()).as("the glance at a quarter of the new film").isEqualTo(20);
+        assertThat(quick.settings.height()).isEqualTo(10);
+        quick.pass(1);
+        RenderSettings s = job().settings;
+        assertThat(s.width()).isEqualTo(80);
+        assertThat(s.height()).isEqualTo(40);
+        assertThat(s.integrator()).isEqualTo(IntegratorKind.DIRECT);
+        assertThat(s.maxDepth()).isEqualTo(7);
+        assertThat(s.seed()).isEqualTo(42);
+        assertThat(s.lightSamples()).isEqualTo(3);
+        assertThat(s.hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
+        assertThat(s.samplesPerPass()).isEqualTo(1);
+        assertThat(s.samplesPerPixel()).isEqualTo(Integer.MAX_VALUE);
+        RenderController.Status status = controller.status();
+        assertThat(status.integrator()).isEqualTo(IntegratorKind.DIRECT);
+        assertThat(status.maxDepth()).isEqualTo(7);
+        assertThat(status.hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
+        assertThat(status.width()).isEqualTo(80);
+        assertThat(controller.settings()).isEqualTo(asked);
     }
 
     @Test

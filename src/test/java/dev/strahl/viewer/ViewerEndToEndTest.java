@@ -5,10 +5,12 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import dev.strahl.integrator.IntegratorKind;
 import dev.strahl.sampling.HemisphereSampling;
+import java.awt.Dimension;
 import java.awt.GraphicsEnvironment;
 import java.awt.Point;
 import java.awt.Rectangle;
 import java.awt.Robot;
+import java.awt.Window;
 import java.awt.event.InputEvent;
 import java.awt.event.WindowEvent;
 import java.awt.image.BufferedImage;
@@ -16,6 +18,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
@@ -23,15 +26,19 @@ import java.util.function.BooleanSupplier;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
+import javax.swing.JDialog;
+import javax.swing.JOptionPane;
 import javax.swing.SwingUtilities;
 import org.joml.Vector3d;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
 
 /**
  * The viewer in a real window: it shows the Cornell Box converging, the status bar counts the
  * samples, a mouse drag orbits the camera and restarts accumulation, and closing the window stops
- * the render threads. Needs a display; CI runs it under {@code xvfb-run}, elsewhere without a
+ * the render threads; a scene file's film and integrator settings are used, at start and when
+ * another scene is opened, unless an option given explicitly overrides them. Needs a display; CI runs it under {@code xvfb-run}, elsewhere without a
  * display it is skipped.
  */
 class ViewerEndToEndTest {
@@ -45,7 +52,7 @@ class ViewerEndToEndTest {
 
         List<RenderController.Frame> shown = new CopyOnWriteArrayList<>();
         ViewerOptions options = new ViewerOptions(Path.of("scenes", "cornell-box.json"), SIZE, SIZE, RenderController.UNLIMITED,
-                -1, HemisphereSampling.COSINE, 0, 1, IntegratorKind.PATH, 1, Theme.LIGHT);
+                -1, HemisphereSampling.COSINE, 0, 1, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of());
         Viewer viewer = Viewer.open(options);
         try {
             viewer.presenter().onShown(() -> shown.add(viewer.presenter().shown().frame()));
@@ -107,6 +114,93 @@ class ViewerEndToEndTest {
         } finally {
             viewer.close();
         }
+    }
+
+    @Test
+    @Timeout(value = 60, unit = TimeUnit.SECONDS)
+    void usesTheSceneFilesSettingsAndThoseOfEachSceneOpened(@TempDir Path dir) throws Exception {
+        assumeTrue(!GraphicsEnvironment.isHeadless(), "no display (headless): run under xvfb-run to include this test");
+        Files.copy(Path.of("scenes", "cornell-box.obj"), dir.resolve("cornell-box.obj"));
+        Files.copy(Path.of("scenes", "cornell-box.mtl"), dir.resolve("cornell-box.mtl"));
+        Path a = scene(dir, "a.json", "\"film\": { \"width\": 96, \"height\": 48 },"
+                + " \"integrator\": { \"type\": \"direct\", \"maxDepth\": 7, \"hemisphere\": \"uniform\" },");
+        Path b = scene(dir, "b.json", "\"film\": { \"width\": 64, \"height\": 64 },"
+                + " \"integrator\": { \"type\": \"whitted\", \"maxDepth\": 2, \"lightSamples\": 2 },");
+        Path bad = scene(dir, "bad.json", "\"integrator\": { \"type\": \"bidir\" },");
+
+        // As 'strahl view a.json --integrator path': the option given wins over both files
+        ViewerOptions options = new ViewerOptions(a, 512, 512, RenderController.UNLIMITED, -1, HemisphereSampling.COSINE, 0, 0,
+                IntegratorKind.PATH, 1, Theme.LIGHT, Set.of(ViewerOptions.Setting.INTEGRATOR));
+        Viewer viewer = Viewer.open(options);
+        try {
+            ViewerFrame ui = viewer.ui();
+            RenderController c = viewer.controller();
+            waitFor("a full-resolution pass of a.json", 20, () -> !c.status().preview() && c.status().samplesPerPixel() >= 1);
+            RenderController.Status s = c.status();
+            assertThat(new Dimension(s.width(), s.height())).as("a.json's film").isEqualTo(new Dimension(96, 48));
+            assertThat(onEdt(ui.image::filmSize)).isEqualTo(new Dimension(96, 48));
+            assertThat(s.integrator()).as("--integrator was given").isEqualTo(IntegratorKind.PATH);
+            assertThat(s.maxDepth()).isEqualTo(7);
+            assertThat(s.hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
+            assertThat(onEdt(ui.actions.maxDepth::value)).as("the toolbar shows the file's depth").isEqualTo(7);
+            assertThat(onEdt(ui.frame::getTitle)).endsWith("a.json");
+
+            // --- another scene opened from the window brings its own settings -----------------------
+            long generation = s.generation();
+            SwingUtilities.invokeAndWait(() -> ui.files.openScene(b));
+            waitFor("b.json rendering at full resolution", 20, () -> c.status().generation() > generation
+                    && !c.status().preview() && c.status().samplesPerPixel() >= 1);
+            s = c.status();
+            assertThat(new Dimension(s.width(), s.height())).as("b.json's film: the window was resized").isEqualTo(new Dimension(64, 64));
+            assertThat(onEdt(ui.image::filmSize)).isEqualTo(new Dimension(64, 64));
+            assertThat(s.integrator()).as("--integrator still wins").isEqualTo(IntegratorKind.PATH);
+            assertThat(s.maxDepth()).isEqualTo(2);
+            assertThat(s.hemisphere()).as("b.json says nothing: the option's value, not a.json's").isEqualTo(HemisphereSampling.COSINE);
+            assertThat(c.settings().lightSamples()).isEqualTo(2);
+            assertThat(onEdt(ui.actions.maxDepth::value)).isEqualTo(2);
+            assertThat(onEdt(ui.actions.hemisphere::value)).isEqualTo(HemisphereSampling.COSINE);
+            assertThat(onEdt(ui.frame::getTitle)).endsWith("b.json");
+
+            // --- settings that cannot be applied: a dialog, and the scene on screen stays -----------
+            var before = c.scene();
+            SwingUtilities.invokeLater(() -> ui.files.openScene(bad));
+            AtomicReference<JDialog> dialog = new AtomicReference<>();
+            waitFor("the error dialog", 10, () -> {
+                for (Window w : Window.getWindows()) {
+                    if (w instanceof JDialog d && d.isShowing()) {
+                        dialog.set(d);
+                    }
+                }
+                return dialog.get() != null;
+            });
+            String message = onEdt(() -> String.valueOf(find(dialog.get(), JOptionPane.class).getMessage()));
+            SwingUtilities.invokeAndWait(dialog.get()::dispose);
+            assertThat(message).isEqualTo(bad + ": unknown integrator 'bidir' (known: "
+                    + String.join(", ", Arrays.stream(IntegratorKind.values()).map(IntegratorKind::id).toList()) + ")");
+            assertThat(c.scene()).isSameAs(before);
+            assertThat(onEdt(ui.frame::getTitle)).endsWith("b.json");
+        } finally {
+            viewer.close();
+        }
+    }
+
+    private static Path scene(Path dir, String name, String settings) throws Exception {
+        return Files.writeString(dir.resolve(name), "{ " + settings + " \"shapes\": [ { \"type\": \"mesh\", \"file\": \"cornell-box.obj\" } ] }");
+    }
+
+    static <T> T find(java.awt.Container root, Class<T> type) {
+        for (java.awt.Component child : root.getComponents()) {
+            if (type.isInstance(child)) {
+                return type.cast(child);
+            }
+            if (child instanceof java.awt.Container inner) {
+                T found = find(inner, type);
+                if (found != null) {
+                    return found;
+                }
+            }
+        }
+        return null;
     }
 
     /** Red wall on the left, green on the right, the light bright at the top centre. */

@@ -4,13 +4,36 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.render.RenderSettings;
 import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.scene.SceneException;
+import dev.strahl.scene.SceneSettings;
+import dev.strahl.viewer.ViewerOptions.Setting;
 import java.awt.Dimension;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Set;
+import javax.swing.JComboBox;
+import javax.swing.JMenu;
+import javax.swing.JRadioButtonMenuItem;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
-/** The small pure pieces of the viewer: letterboxing, status texts, file names, theme names, options. */
+/** The small pure pieces of the viewer: letterboxing, status texts, file names, theme names, options, choices. */
 class ViewerPartsTest {
+    /** A scene file that sets every film and integrator key. */
+    static final SceneSettings FILE = new SceneSettings(320, 160, 8, 3, 42L, "direct", 4, HemisphereSampling.UNIFORM);
+    static final Path SCENE = Path.of("s.json");
+
+    @TempDir
+    Path dir;
+
+    static ViewerOptions options(Set<Setting> given) {
+        return new ViewerOptions(null, 200, 100, 256, 5, HemisphereSampling.COSINE, 2, 9, IntegratorKind.WHITTED, 2, Theme.LIGHT, given);
+    }
 
     @Test
     void letterboxKeepsTheAspectAndFillsOneSide() {
@@ -59,13 +82,115 @@ class ViewerPartsTest {
         assertThat(d.renderSettings().samplesPerPass()).isEqualTo(1);
         assertThat(d.integrator()).isEqualTo(IntegratorKind.PATH);
         assertThat(d.renderSettings().integrator()).isEqualTo(IntegratorKind.PATH);
-        assertThatThrownBy(() -> new ViewerOptions(null, 0, 512, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT))
+        assertThatThrownBy(() -> new ViewerOptions(null, 0, 512, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of()))
                 .hasMessageContaining("image size");
-        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, -1, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT))
+        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, -1, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of()))
                 .hasMessageContaining("stop-at");
-        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, 0, 0, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT))
+        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, 0, 0, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of()))
                 .hasMessageContaining("max depth");
-        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.DIRECT, 0, Theme.LIGHT))
+        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.DIRECT, 0, Theme.LIGHT, Set.of()))
                 .hasMessageContaining("light samples");
+    }
+
+    @Test
+    void aSceneFilesSettingsReplaceTheOptionsNotGiven() throws Exception {
+        RenderSettings s = options(Set.of()).settingsFor(SCENE, FILE);
+        assertThat(s.width()).isEqualTo(320);
+        assertThat(s.height()).isEqualTo(160);
+        assertThat(s.integrator()).isEqualTo(IntegratorKind.DIRECT);
+        assertThat(s.maxDepth()).isEqualTo(3);
+        assertThat(s.seed()).isEqualTo(42);
+        assertThat(s.lightSamples()).isEqualTo(4);
+        assertThat(s.hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
+        assertThat(s.threads()).as("not a scene-file key").isEqualTo(2);
+        assertThat(s.samplesPerPass()).isEqualTo(1);
+        assertThat(s.samplesPerPixel()).as("the file's spp is not the viewer's stop-at count")
+                .isEqualTo(options(Set.of()).renderSettings().samplesPerPixel());
+        assertThat(options(Set.of()).settingsFor(SCENE, SceneSettings.NONE)).as("a file that says nothing")
+                .isEqualTo(options(Set.of()).renderSettings());
+    }
+
+    @Test
+    void optionsGivenExplicitlyWinOverTheSceneFile() throws Exception {
+        RenderSettings all = options(EnumSet.allOf(Setting.class)).settingsFor(SCENE, FILE);
+        assertThat(all).isEqualTo(options(Set.of()).renderSettings());
+
+        RenderSettings widthOnly = options(Set.of(Setting.WIDTH)).settingsFor(SCENE, FILE);
+        assertThat(widthOnly.width()).isEqualTo(200);
+        assertThat(widthOnly.height()).as("the file's height with the given width, as render does").isEqualTo(160);
+        assertThat(widthOnly.integrator()).isEqualTo(IntegratorKind.DIRECT);
+        assertThat(options(Set.of(Setting.HEIGHT)).settingsFor(SCENE, FILE).width()).isEqualTo(320);
+        assertThat(options(Set.of(Setting.HEIGHT)).settingsFor(SCENE, FILE).height()).isEqualTo(100);
+
+        // Each one alone: that setting from the option, every other one from the file
+        RenderSettings fromFile = options(Set.of()).settingsFor(SCENE, FILE);
+        RenderSettings fromOptions = options(Set.of()).renderSettings();
+        assertThat(options(Set.of(Setting.MAX_DEPTH)).settingsFor(SCENE, FILE)).isEqualTo(fromFile.withMaxDepth(fromOptions.maxDepth()));
+        assertThat(options(Set.of(Setting.HEMISPHERE)).settingsFor(SCENE, FILE)).isEqualTo(fromFile.withHemisphere(fromOptions.hemisphere()));
+        assertThat(options(Set.of(Setting.SEED)).settingsFor(SCENE, FILE)).isEqualTo(fromFile.withSeed(fromOptions.seed()));
+        assertThat(options(Set.of(Setting.INTEGRATOR)).settingsFor(SCENE, FILE)).isEqualTo(fromFile.withIntegrator(fromOptions.integrator()));
+        assertThat(options(Set.of(Setting.LIGHT_SAMPLES)).settingsFor(SCENE, FILE))
+                .isEqualTo(fromFile.withLightSamples(fromOptions.lightSamples()));
+    }
+
+    @Test
+    void anUnknownIntegratorInTheFileIsASceneErrorNamingTheFile() {
+        SceneSettings bad = new SceneSettings(null, null, null, null, null, "bidir", null, null);
+        assertThatThrownBy(() -> options(Set.of()).settingsFor(SCENE, bad)).isInstanceOf(SceneException.class)
+                .hasMessage(SCENE + ": unknown integrator 'bidir' (known: "
+                        + String.join(", ", java.util.Arrays.stream(IntegratorKind.values()).map(IntegratorKind::id).toList()) + ")");
+        assertThatThrownBy(() -> options(Set.of(Setting.INTEGRATOR)).settingsFor(SCENE, bad))
+                .as("refused even when --integrator is given, as render refuses it").isInstanceOf(SceneException.class);
+    }
+
+    @Test
+    void openingASceneFileCombinesItsSettingsWithTheOptions() throws Exception {
+        Files.copy(Path.of("scenes", "cornell-box.obj"), dir.resolve("cornell-box.obj"));
+        Files.copy(Path.of("scenes", "cornell-box.mtl"), dir.resolve("cornell-box.mtl"));
+        Path file = Files.writeString(dir.resolve("s.json"), """
+                { "film": { "width": 96, "height": 48 },
+                  "integrator": { "type": "direct", "maxDepth": 7, "spp": 3 },
+                  "shapes": [ { "type": "mesh", "file": "cornell-box.obj" } ] }
+                """);
+        SceneFiles.Opened opened = SceneFiles.open(file, ViewerOptions.defaults());
+        assertThat(opened.file()).isEqualTo(file);
+        assertThat(opened.settings().width()).isEqualTo(96);
+        assertThat(opened.settings().height()).isEqualTo(48);
+        assertThat(opened.settings().integrator()).isEqualTo(IntegratorKind.DIRECT);
+        assertThat(opened.settings().maxDepth()).isEqualTo(7);
+        assertThat(opened.scene().settings().samplesPerPixel()).isEqualTo(3);
+    }
+
+    @Test
+    void aChoiceShowsAValueSetElsewhereWithoutReportingIt() {
+        List<Integer> reported = new ArrayList<>();
+        Choice<Integer> depth = new Choice<>(ViewerActions.DEPTHS, 5, ViewerActions.DEPTH_ORDER, StatusBar::depthText, reported::add);
+        JComboBox<Integer> box = depth.comboBox("depth ", "");
+        JMenu menu = depth.menu("Max depth", 0);
+
+        depth.show(7);
+        assertThat(depth.value()).isEqualTo(7);
+        assertThat(depth.values()).as("joins in order, unbounded first").containsExactly(-1, 1, 2, 3, 4, 5, 7, 8, 16);
+        assertThat(box.getItemCount()).isEqualTo(9);
+        assertThat(box.getSelectedItem()).isEqualTo(7);
+        assertThat(menu.getItemCount()).isEqualTo(9);
+        assertThat(((JRadioButtonMenuItem) menu.getItem(6)).isSelected()).isTrue();
+        assertThat(((JRadioButtonMenuItem) menu.getItem(6)).getText()).isEqualTo("7");
+        assertThat(reported).as("the controller already has it").isEmpty();
+
+        depth.show(-1);
+        assertThat(box.getSelectedItem()).isEqualTo(-1);
+        assertThat(((JRadioButtonMenuItem) menu.getItem(0)).isSelected()).isTrue();
+        assertThat(reported).isEmpty();
+
+        box.setSelectedItem(3);                 // the user's choice is reported
+        assertThat(reported).containsExactly(3);
+        assertThat(((JRadioButtonMenuItem) menu.getItem(3)).isSelected()).isTrue();
+        assertThatThrownBy(() -> depth.set(6)).as("only listed values can be chosen").isInstanceOf(IllegalArgumentException.class);
+
+        Choice<Integer> stopAt = new Choice<>(ViewerActions.STOP_AT, 100, ViewerActions.STOP_AT_ORDER, n -> n + "", n -> { });
+        assertThat(stopAt.values()).as("never (0) last").containsExactly(16, 64, 100, 256, 1024, 4096, RenderController.UNLIMITED);
+        Choice<IntegratorKind> kinds = new Choice<>(List.of(IntegratorKind.PATH), IntegratorKind.PATH, null, IntegratorKind::id, k -> { });
+        assertThatThrownBy(() -> kinds.show(IntegratorKind.DIRECT)).isInstanceOf(IllegalArgumentException.class);
     }
 }

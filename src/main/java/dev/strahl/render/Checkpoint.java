@@ -1,0 +1,325 @@
+package dev.strahl.render;
+
+import dev.strahl.camera.Camera;
+import dev.strahl.film.AtomicFile;
+import dev.strahl.film.Film;
+import dev.strahl.material.Material;
+import dev.strahl.scene.Scene;
+import java.io.BufferedInputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.EOFException;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UTFDataFormatException;
+import java.lang.reflect.RecordComponent;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Set;
+import java.util.zip.CRC32C;
+import java.util.zip.CheckedOutputStream;
+
+/**
+ * The saved state of a render, so that a long render survives an interruption: per pixel the
+ * sample count and the r, g, b sums of the film, with a fingerprint of everything that decides
+ * the image. Resuming ({@link RenderJob#resume}) continues every pixel from the sample index it
+ * reached, so an interrupted and resumed render is bit-identical to an uninterrupted one.
+ *
+ * <p>File format (big-endian), version 1:
+ * <pre>
+ *   8 bytes   magic "STRAHLCK"
+ *   int       format version
+ *   32 bytes  SHA-256 of the scene's content (geometry, materials, camera, environment)
+ *   UTF       the settings that decide the image, "name=value" joined by ';' (DataOutput.writeUTF)
+ *   int, int  width, height
+ *   int       samples per pixel every pixel has reached
+ *   long      samples that were NaN or infinite (counted as black)
+ *   double    seconds of rendering so far
+ *   per pixel, row by row from the top: int sample count, double r, g, b sums
+ *   int       CRC-32C of all bytes before it
+ * </pre>
+ * The settings excluded from the fingerprint are those that do not change the bits of the image:
+ * the target samples per pixel (a render may be resumed to go further), the thread count, the
+ * pass size and the time limit. Every other setting, including any added later, is part of it.
+ */
+public final class Checkpoint {
+    static final int VERSION = 1;
+    private static final byte[] MAGIC = "STRAHLCK".getBytes(StandardCharsets.US_ASCII);
+    private static final int PIXEL_BYTES = 4 + 3 * 8;
+    private static final Set<String> NOT_IN_FINGERPRINT = Set.of("samplesPerPixel", "threads", "samplesPerPass", "timeLimit");
+
+    private final byte[] sceneDigest;
+    private final String settingsKey;
+    private final int width;
+    private final int height;
+
+    private Checkpoint(byte[] sceneDigest, String settingsKey, int width, int height) {
+        this.sceneDigest = sceneDigest;
+        this.settingsKey = settingsKey;
+        this.width = width;
+        this.height = height;
+    }
+
+    /**
+     * The checkpoint identity of a render of {@code scene} with {@code settings}; digests the
+     * scene once (a fraction of a second for a million triangles).
+     *
+     * @param scene    the scene as it is rendered (with any camera override)
+     * @param settings the render settings
+     * @return the identity, to save and restore checkpoints of that render
+     */
+    public static Checkpoint of(Scene scene, RenderSettings settings) {
+        return new Checkpoint(sceneDigest(scene), settingsKey(settings), settings.width(), settings.height());
+    }
+
+    /**
+     * What a checkpoint held: the film to resume into and the figures of the runs before.
+     *
+     * @param film            the film with every pixel's count and sums
+     * @param samplesPerPixel samples per pixel every pixel has reached
+     * @param invalidSamples  samples that were NaN or infinite, counted as black
+     * @param seconds         seconds of rendering before
+     */
+    public record Restored(Film film, int samplesPerPixel, long invalidSamples, double seconds) {
+        /**
+         * Checks the film is there.
+         *
+         * @param film            the film
+         * @param samplesPerPixel samples per pixel reached
+         * @param invalidSamples  invalid samples so far
+         * @param seconds         seconds rendered so far
+         */
+        public Restored {
+            Objects.requireNonNull(film, "film");
+        }
+    }
+
+    /**
+     * The size of a checkpoint of this render.
+     *
+     * @return bytes
+     */
+    public long fileSize() {
+        return headerSize() + (long) width * height * PIXEL_BYTES + 4;
+    }
+
+    /**
+     * Saves the state of {@code film} atomically. Call it only while nothing renders into the
+     * film: between passes (in {@link RenderListener#passCompleted}) or after the render.
+     *
+     * @param file           where to save; replaced atomically
+     * @param film           the render's film, of the settings' size
+     * @param invalidSamples NaN or infinite samples so far, to report after a resume
+     * @param seconds        seconds rendered so far
+     * @throws IOException if the file cannot be written; a previous checkpoint is then kept
+     * @throws IllegalArgumentException if the film is not of the settings' size
+     */
+    public void save(Path file, Film film, long invalidSamples, double seconds) throws IOException {
+        if (film.width() != width || film.height() != height) {
+            throw new IllegalArgumentException("film " + film.width() + "x" + film.height() + " is not " + width + "x" + height);
+        }
+        int reached = film.minSampleCount();
+        AtomicFile.write(file, os -> {
+            var crc = new CRC32C();
+            var out = new DataOutputStream(new CheckedOutputStream(os, crc));
+            out.write(MAGIC);
+            out.writeInt(VERSION);
+            out.write(sceneDigest);
+            out.writeUTF(settingsKey);
+            out.writeInt(width);
+            out.writeInt(height);
+            out.writeInt(reached);
+            out.writeLong(invalidSamples);
+            out.writeDouble(seconds);
+            double[] sums = new double[3];
+            for (int y = 0; y < height; y++) {
+                for (int x = 0; x < width; x++) {
+                    out.writeInt(film.pixelState(x, y, sums));
+                    out.writeDouble(sums[0]);
+                    out.writeDouble(sums[1]);
+                    out.writeDouble(sums[2]);
+                }
+            }
+            out.flush();
+            new DataOutputStream(os).writeInt((int) crc.getValue());
+        });
+    }
+
+    /**
+     * Reads a checkpoint made by {@link #save} for this scene and these settings.
+     *
+     * @param file the checkpoint
+     * @return the film and figures it holds
+     *
+     * @throws CheckpointException if the file is no checkpoint, of another version, truncated,
+     *                             corrupt, or made for another scene or other settings
+     * @throws IOException         if it cannot be read
+     */
+    public Restored restore(Path file) throws CheckpointException, IOException {
+        long size;
+        try {
+            size = Files.size(file);
+        } catch (NoSuchFileException e) {
+            throw new CheckpointException(file, "checkpoint not found");
+        }
+        try (InputStream raw = new BufferedInputStream(Files.newInputStream(file), 1 << 16)) {
+            var in = new DataInputStream(raw);
+            byte[] magic = in.readNBytes(MAGIC.length);
+            if (!Arrays.equals(magic, MAGIC)) {
+                throw new CheckpointException(file, "not a strahl checkpoint");
+            }
+            int version = in.readInt();
+            if (version != VERSION) {
+                throw new CheckpointException(file, "checkpoint format version " + version + "; this strahl reads version " + VERSION);
+            }
+            byte[] digest = in.readNBytes(32);
+            String settings = in.readUTF();
+            int w = in.readInt();
+            int h = in.readInt();
+            // The size the header announces, checked before anything is allocated
+            long expected = MAGIC.length + 4 + 32 + 2 + settings.getBytes(StandardCharsets.UTF_8).length + 4 + 4 + 4 + 8 + 8
+                    + (long) Math.max(w, 0) * Math.max(h, 0) * PIXEL_BYTES + 4;
+            if (w <= 0 || h <= 0 || size > expected) {
+                throw new CheckpointException(file, "corrupt checkpoint (" + size + " bytes for a " + w + "x" + h + " film)");
+            }
+            if (size < expected) {
+                throw new CheckpointException(file, "truncated checkpoint (" + size + " of " + expected + " bytes)");
+            }
+            if (!checksumMatches(file, size)) {
+                throw new CheckpointException(file, "corrupt checkpoint (checksum mismatch)");
+            }
+            String mismatch = settingsMismatch(settings);
+            if (mismatch != null) {
+                throw new CheckpointException(file, "checkpoint was made with other settings (" + mismatch + ")");
+            }
+            if (!Arrays.equals(digest, sceneDigest)) {
+                throw new CheckpointException(file,
+                        "checkpoint was made for another scene (its geometry, materials, camera or environment differ)");
+            }
+            int reached = in.readInt();
+            long invalid = in.readLong();
+            double seconds = in.readDouble();
+            Film film = new Film(width, height);
+            int min = Integer.MAX_VALUE;
+            for (int y = 0; y < height; y++) {
+                for (int x = 0; x < width; x++) {
+                    int n = in.readInt();
+                    double r = in.readDouble(), g = in.readDouble(), b = in.readDouble();
+                    if (n < 0 || !Double.isFinite(r) || !Double.isFinite(g) || !Double.isFinite(b)) {
+                        throw new CheckpointException(file, "corrupt checkpoint (pixel " + x + "," + y + ")");
+                    }
+                    film.restorePixel(x, y, n, r, g, b);
+                    min = Math.min(min, n);
+                }
+            }
+            if (reached != min || invalid < 0 || !(seconds >= 0)) {
+                throw new CheckpointException(file, "corrupt checkpoint (inconsistent header)");
+            }
+            return new Restored(film, reached, invalid, seconds);
+        } catch (EOFException e) {
+            throw new CheckpointException(file, "truncated checkpoint");
+        } catch (UTFDataFormatException e) {
+            throw new CheckpointException(file, "corrupt checkpoint (settings)");
+        }
+    }
+
+    /** Whether the CRC-32C of the first {@code size - 4} bytes equals the last 4. */
+    private static boolean checksumMatches(Path file, long size) throws IOException {
+        var crc = new CRC32C();
+        try (var in = new DataInputStream(new BufferedInputStream(Files.newInputStream(file), 1 << 16))) {
+            byte[] buf = new byte[1 << 16];
+            for (long left = size - 4; left > 0; ) {
+                int n = in.read(buf, 0, (int) Math.min(buf.length, left));
+                if (n < 0) {
+                    return false;
+                }
+                crc.update(buf, 0, n);
+                left -= n;
+            }
+            return in.readInt() == (int) crc.getValue();
+        }
+    }
+
+    private int headerSize() {
+        int utf = 2 + settingsKey.getBytes(StandardCharsets.UTF_8).length;   // ASCII in practice, so modified UTF-8 = UTF-8
+        return MAGIC.length + 4 + 32 + utf + 4 + 4 + 4 + 8 + 8;
+    }
+
+    /** Which setting differs, as "seed 5 in the checkpoint, 6 now", or null if none does. */
+    private String settingsMismatch(String saved) {
+        if (saved.equals(settingsKey)) {
+            return null;
+        }
+        Map<String, String> then = parse(saved);
+        Map<String, String> now = parse(settingsKey);
+        StringBuilder sb = new StringBuilder();
+        for (var e : now.entrySet()) {
+            String old = then.get(e.getKey());
+            if (!e.getValue().equals(old)) {
+                sb.append(sb.length() == 0 ? "" : ", ").append(e.getKey()).append(' ')
+                        .append(old == null ? "unset" : old).append(" in the checkpoint, ").append(e.getValue()).append(" now");
+            }
+        }
+        return sb.length() == 0 ? "unknown settings " + saved : sb.toString();
+    }
+
+    private static Map<String, String> parse(String key) {
+        Map<String, String> m = new LinkedHashMap<>();
+        for (String part : key.split(";")) {
+            int eq = part.indexOf('=');
+            if (eq > 0) {
+                m.put(part.substring(0, eq), part.substring(eq + 1));
+            }
+        }
+        return m;
+    }
+
+    /** "width=512;height=512;maxDepth=-1;..." over every record component that decides the image. */
+    static String settingsKey(RenderSettings settings) {
+        StringBuilder sb = new StringBuilder();
+        for (RecordComponent c : RenderSettings.class.getRecordComponents()) {
+            if (NOT_IN_FINGERPRINT.contains(c.getName())) {
+                continue;
+            }
+            Object value;
+            try {
+                value = c.getAccessor().invoke(settings);
+            } catch (ReflectiveOperationException e) {
+                throw new IllegalStateException("cannot read setting " + c.getName(), e);
+            }
+            sb.append(sb.length() == 0 ? "" : ";").append(c.getName()).append('=').append(value);
+        }
+        return sb.toString();
+    }
+
+    /** SHA-256 of the geometry arrays, the materials (exact parameters), the camera and the environment. */
+    static byte[] sceneDigest(Scene scene) {
+        MessageDigest md;
+        try {
+            md = MessageDigest.getInstance("SHA-256");
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("SHA-256 is part of every Java platform", e);
+        }
+        scene.geometry().digest(md);
+        StringBuilder sb = new StringBuilder();
+        for (Material m : scene.materials()) {
+            sb.append(m).append('\n');              // records: every parameter, doubles in full precision
+        }
+        Camera c = scene.camera();
+        sb.append("camera ").append(c.lookFrom().x()).append(' ').append(c.lookFrom().y()).append(' ').append(c.lookFrom().z())
+                .append(' ').append(c.lookAt().x()).append(' ').append(c.lookAt().y()).append(' ').append(c.lookAt().z())
+                .append(' ').append(c.up().x()).append(' ').append(c.up().y()).append(' ').append(c.up().z())
+                .append(' ').append(c.fovDegrees()).append('\n');
+        sb.append("environment ").append(scene.environment()).append('\n');
+        md.update(sb.toString().getBytes(StandardCharsets.UTF_8));
+        return md.digest();
+    }
+}

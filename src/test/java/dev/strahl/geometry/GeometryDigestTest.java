@@ -1,0 +1,33 @@
+package dev.strahl.geometry;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.security.MessageDigest;
+import org.joml.Vector3d;
+import org.junit.jupiter.api.Test;
+
+/** The digest that ties a checkpoint to its geometry changes with any primitive's data. */
+class GeometryDigestTest {
+    private static Geometry geometry(float z, float normalZ, int material, double radius) {
+        TriangleMesh mesh = new TriangleMesh(new float[] {0, 0, 0, 1, 0, 0, 0, 1, z}, new int[] {0, 1, 2},
+                new float[] {0, 0, 1, 0, 0, 1, 0, 0, normalZ});
+        return new Geometry.Builder().addMesh(mesh, new int[] {material}, false)
+                .addSphere(new Sphere(new Vector3d(0, 0, 2), radius), 0).build();
+    }
+
+    private static byte[] digest(Geometry g) throws Exception {
+        MessageDigest md = MessageDigest.getInstance("SHA-256");
+        g.digest(md);
+        return md.digest();
+    }
+
+    @Test
+    void equalContentGivesEqualDigestsAndEveryChangeAnother() throws Exception {
+        byte[] base = digest(geometry(0, 1, 0, 1));
+        assertThat(digest(geometry(0, 1, 0, 1))).isEqualTo(base);
+        assertThat(digest(geometry(Math.ulp(0f), 1, 0, 1))).as("a vertex").isNotEqualTo(base);
+        assertThat(digest(geometry(0, -1, 0, 1))).as("a normal").isNotEqualTo(base);
+        assertThat(digest(geometry(0, 1, 1, 1))).as("a material").isNotEqualTo(base);
+        assertThat(digest(geometry(0, 1, 0, Math.nextUp(1.0)))).as("a sphere").isNotEqualTo(base);
+    }
+}

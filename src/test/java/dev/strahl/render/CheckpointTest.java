@@ -1,0 +1,238 @@
+package dev.strahl.render;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import dev.strahl.camera.Camera;
+import dev.strahl.film.Film;
+import dev.strahl.scene.Scene;
+import dev.strahl.scene.SceneLoader;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.SplittableRandom;
+import java.util.concurrent.TimeUnit;
+import org.joml.Vector3d;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/**
+ * Interrupt and resume: a render saved at any moment and resumed gives the very bits of one that
+ * ran through; a checkpoint of another scene, other settings, or a damaged file is refused.
+ */
+class CheckpointTest {
+    private static final RenderSettings SETTINGS = RenderSettings.defaults().withSize(40, 30).withSamplesPerPixel(24).withSeed(9);
+    private static Scene cornell;
+    private static Film uninterrupted;
+
+    @TempDir
+    Path dir;
+
+    @BeforeAll
+    static void renderOnceThrough() throws Exception {
+        cornell = SceneLoader.load(Path.of("scenes/cornell-box.json"));
+        try (RenderJob job = RenderJob.start(cornell, SETTINGS)) {
+            uninterrupted = job.awaitCompletion();
+        }
+    }
+
+    @ParameterizedTest
+    @ValueSource(ints = {1, 2, 4, 8, 23})
+    void resumingAtAPassBoundaryIsBitIdentical(int savedSpp) throws Exception {
+        Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
+        Path file = dir.resolve("a.ck");
+        try (RenderJob first = RenderJob.start(cornell, SETTINGS.withSamplesPerPixel(savedSpp))) {
+            cp.save(file, first.awaitCompletion(), 0, first.awaitStats().seconds());
+        }
+        Checkpoint.Restored restored = cp.restore(file);
+        assertThat(restored.samplesPerPixel()).isEqualTo(savedSpp);
+        try (RenderJob second = RenderJob.resume(cornell, SETTINGS, restored.film(), new RenderListener() {})) {
+            assertSameBits(second.awaitCompletion(), uninterrupted);
+            assertThat(second.awaitStats().samplesPerPixel()).isEqualTo(24);
+            assertThat(second.awaitStats().samples()).isEqualTo((24L - savedSpp) * 40 * 30);
+        }
+    }
+
+    /** Cancelled at an arbitrary moment, mid-pass, some pixels ahead of others: still the same bits. */
+    @ParameterizedTest
+    @ValueSource(ints = {0, 3, 20, 60})
+    void resumingAfterACancelAtAnyMomentIsBitIdentical(int delayMillis) throws Exception {
+        Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
+        Path file = dir.resolve("b.ck");
+        try (RenderJob first = RenderJob.start(cornell, SETTINGS.withThreads(2))) {
+            Thread.sleep(delayMillis);
+            first.cancel();
+            cp.save(file, first.awaitCompletion(), first.invalidSamples(), first.elapsedSeconds());
+        }
+        Film restored = cp.restore(file).film();
+        try (RenderJob second = RenderJob.resume(cornell, SETTINGS.withThreads(1), restored, new RenderListener() {})) {
+            assertSameBits(second.awaitCompletion(), uninterrupted);
+        }
+    }
+
+    @Test
+    void resumingTwiceAndGoingFurtherIsBitIdenticalToo() throws Exception {
+        Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
+        Path file = dir.resolve("c.ck");
+        Film film = new Film(40, 30);
+        for (int spp : new int[] {3, 11, 24}) {
+            try (RenderJob job = RenderJob.resume(cornell, SETTINGS.withSamplesPerPixel(spp), film, new RenderListener() {})) {
+                cp.save(file, job.awaitCompletion(), 0, 0);
+            }
+            film = cp.restore(file).film();
+        }
+        assertSameBits(film, uninterrupted);
+    }
+
+    @Test
+    void theListenerSeesAQuiescentFilmBetweenPasses() throws Exception {
+        Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
+        Path file = dir.resolve("d.ck");
+        Film film = new Film(40, 30);
+        int[] saves = {0};
+        RenderListener saver = new RenderListener() {
+            @Override
+            public void passCompleted(int spp, dev.strahl.film.Image image) {
+                if (spp == 8) {
+                    try {
+                        cp.save(file, film, 0, 0);
+                        saves[0]++;
+                    } catch (IOException e) {
+                        throw new AssertionError(e);
+                    }
+                }
+            }
+        };
+        try (RenderJob job = RenderJob.resume(cornell, SETTINGS, film, saver)) {
+            job.awaitCompletion();
+        }
+        assertThat(saves[0]).isEqualTo(1);
+        Checkpoint.Restored at8 = cp.restore(file);
+        assertThat(at8.samplesPerPixel()).isEqualTo(8);
+        try (RenderJob job = RenderJob.resume(cornell, SETTINGS, at8.film(), new RenderListener() {})) {
+            assertSameBits(job.awaitCompletion(), uninterrupted);
+        }
+    }
+
+    @Test
+    void aCheckpointThatReachedTheTargetRendersNothingMore() throws Exception {
+        Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
+        Path file = dir.resolve("e.ck");
+        cp.save(file, uninterrupted, 5, 1.5);
+        Checkpoint.Restored r = cp.restore(file);
+        assertThat(r.invalidSamples()).isEqualTo(5);
+        assertThat(r.seconds()).isEqualTo(1.5);
+        try (RenderJob job = RenderJob.resume(cornell, SETTINGS.withSamplesPerPixel(10), r.film(), new RenderListener() {})) {
+            assertThat(job.await(30, TimeUnit.SECONDS)).isTrue();
+            assertThat(job.awaitStats().samples()).isZero();
+            assertSameBits(job.film(), uninterrupted);
+        }
+    }
+
+    // ---- refusals ------------------------------------------------------------------------------
+
+    @Test
+    void otherSettingsAreRefusedNamingTheSetting() throws Exception {
+        Path file = dir.resolve("s.ck");
+        Checkpoint.of(cornell, SETTINGS).save(file, uninterrupted, 0, 0);
+        assertRefused(Checkpoint.of(cornell, SETTINGS.withSeed(10)), file, "other settings", "seed 9 in the checkpoint, 10 now");
+        assertRefused(Checkpoint.of(cornell, SETTINGS.withMaxDepth(5)), file, "maxDepth -1 in the checkpoint, 5 now");
+        assertRefused(Checkpoint.of(cornell, SETTINGS.withSize(41, 30)), file, "width 40 in the checkpoint, 41 now");
+        assertRefused(Checkpoint.of(cornell, SETTINGS.withIntegrator(dev.strahl.integrator.IntegratorKind.DIRECT)), file, "integrator");
+        // what does not change the bits may differ
+        Checkpoint.of(cornell, SETTINGS.withSamplesPerPixel(1000).withThreads(1).withSamplesPerPass(3)
+                .withTimeLimit(java.time.Duration.ofSeconds(5))).restore(file);
+    }
+
+    @Test
+    void anotherSceneOrCameraIsRefused() throws Exception {
+        Path file = dir.resolve("t.ck");
+        Checkpoint.of(cornell, SETTINGS).save(file, uninterrupted, 0, 0);
+        Scene mirror = SceneLoader.load(Path.of("scenes/cornell-mirror.json"));
+        assertRefused(Checkpoint.of(mirror, SETTINGS), file, "another scene");
+        Camera c = cornell.camera();
+        Scene moved = cornell.withCamera(new Camera(new Vector3d(c.lookFrom()).add(0, 0, 1e-9), c.lookAt(), c.up(), c.fovDegrees()));
+        assertRefused(Checkpoint.of(moved, SETTINGS), file, "another scene");
+        // the same content loaded again is the same scene
+        Checkpoint.of(SceneLoader.load(Path.of("scenes/cornell-box.json")), SETTINGS).restore(file);
+    }
+
+    @Test
+    void everyTruncationIsRefusedAsTruncated() throws Exception {
+        Path file = dir.resolve("u.ck");
+        Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
+        cp.save(file, uninterrupted, 0, 0);
+        byte[] bytes = Files.readAllBytes(file);
+        assertThat((long) bytes.length).isEqualTo(cp.fileSize());
+        Path cut = dir.resolve("cut.ck");
+        for (int length : new int[] {0, 3, 8, 12, 44, 60, 100, 200, bytes.length / 2, bytes.length - 5, bytes.length - 1}) {
+            Files.write(cut, java.util.Arrays.copyOf(bytes, length));
+            assertThatThrownBy(() -> cp.restore(cut)).as("cut at %d", length).isInstanceOf(CheckpointException.class)
+                    .hasMessageStartingWith(cut + ": ")
+                    .satisfies(e -> assertThat(e.getMessage()).containsAnyOf("truncated checkpoint", "not a strahl checkpoint"));
+        }
+    }
+
+    @Test
+    void everyFlippedByteIsRefused() throws Exception {
+        Path file = dir.resolve("v.ck");
+        Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
+        cp.save(file, uninterrupted, 0, 0);
+        byte[] bytes = Files.readAllBytes(file);
+        Path bad = dir.resolve("bad.ck");
+        SplittableRandom random = new SplittableRandom(4);
+        for (int trial = 0; trial < 300; trial++) {
+            byte[] copy = bytes.clone();
+            int at = trial < 100 ? trial : random.nextInt(copy.length);      // the whole header, then anywhere
+            copy[at] ^= (byte) (1 << random.nextInt(8));
+            Files.write(bad, copy);
+            assertThatThrownBy(() -> cp.restore(bad)).as("byte %d flipped", at).isInstanceOf(CheckpointException.class)
+                    .hasMessageStartingWith(bad + ": ");
+        }
+    }
+
+    @Test
+    void missingAndForeignFilesAreRefused() throws Exception {
+        Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
+        assertRefused(cp, dir.resolve("none.ck"), "checkpoint not found");
+        Path png = Files.write(dir.resolve("x.ck"), new byte[] {(byte) 0x89, 'P', 'N', 'G', 13, 10, 26, 10, 0, 0, 0, 0});
+        assertRefused(cp, png, "not a strahl checkpoint");
+        Path future = dir.resolve("y.ck");
+        cp.save(future, uninterrupted, 0, 0);
+        byte[] b = Files.readAllBytes(future);
+        b[11] = 2;                                      // format version 2
+        Files.write(future, b);
+        assertRefused(cp, future, "version 2");
+    }
+
+    private static void assertRefused(Checkpoint cp, Path file, String... fragments) {
+        assertThatThrownBy(() -> cp.restore(file)).isInstanceOf(CheckpointException.class)
+                .hasMessageStartingWith(file + ": ")
+                .satisfies(e -> {
+                    for (String f : fragments) {
+                        assertThat(e.getMessage()).contains(f);
+                    }
+                });
+    }
+
+    private static void assertSameBits(Film actual, Film expected) {
+        assertThat(actual.width()).isEqualTo(expected.width());
+        double[] a = new double[3];
+        double[] e = new double[3];
+        for (int y = 0; y < expected.height(); y++) {
+            for (int x = 0; x < expected.width(); x++) {
+                int na = actual.pixelState(x, y, a);
+                int ne = expected.pixelState(x, y, e);
+                assertThat(na).as("samples of pixel %d,%d", x, y).isEqualTo(ne);
+                for (int c = 0; c < 3; c++) {
+                    assertThat(Double.doubleToRawLongBits(a[c])).as("pixel %d,%d channel %d", x, y, c)
+                            .isEqualTo(Double.doubleToRawLongBits(e[c]));
+                }
+            }
+        }
+        assertThat(actual.toImage().rgb()).isEqualTo(expected.toImage().rgb());
+    }
+}

@@ -1,0 +1,245 @@
+package dev.strahl.scene;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.catchThrowableOfType;
+import static org.assertj.core.api.Assertions.within;
+
+import dev.strahl.geometry.Aabb;
+import dev.strahl.geometry.Geometry;
+import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.material.Dielectric;
+import dev.strahl.material.Material;
+import dev.strahl.math.Rgb;
+import dev.strahl.render.RenderSettings;
+import dev.strahl.sampling.HemisphereSampling;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/** The keys the scene file gained with the API (film, integrator, mesh, triangles, transform), the writer and the round trip. */
+class SceneFileFormatTest {
+    /** A scene that uses every key of the format. */
+    static final String EVERY_KEY = """
+            {
+              "camera": { "lookFrom": [0, 1, 5], "lookAt": [0, 1, 0], "up": [0, 1, 0], "fov": 35 },
+              "film": { "width": 320, "height": 200 },
+              "integrator": { "type": "direct", "spp": 12, "maxDepth": 3, "seed": 9007199254740993, "lightSamples": 4,
+                              "hemisphere": "uniform" },
+              "materials": {
+                "lamp":  { "type": "diffuse", "albedo": [0.5, 0.5, 0.5], "emission": [8, 7, 6] },
+                "white": { "type": "diffuse", "albedo": [0.7, 0.7, 0.7] },
+                "chrome": { "type": "mirror", "reflectance": [0.9, 0.9, 0.9] },
+                "glass": { "type": "dielectric", "ior": 1.33 },
+                "paint": { "type": "glossy", "diffuse": [0.4, 0.1, 0.1], "specular": [0.2, 0.2, 0.2], "exponent": 50,
+                           "emission": [0.5, 0, 0] }
+              },
+              "shapes": [
+                { "type": "mesh", "file": "tri.obj", "material": "white",
+                  "transform": [ { "scale": 2 }, { "rotate": { "axis": [0, 1, 0], "degrees": 90 } }, { "translate": [1, 0, 0] } ] },
+                { "type": "mesh", "file": "tri.ply" },
+                { "type": "mesh", "file": "tri.obj" },
+                { "type": "triangles", "positions": [0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0], "indices": [0, 1, 2, 1, 3, 2],
+                  "normals": [0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1], "material": "paint",
+                  "transform": [ { "scale": [1, 2, 3] }, { "translate": [0, 0, -2] } ] },
+                { "type": "sphere", "center": [0, 0, 0], "radius": 0.5, "material": "lamp", "transform": [ { "translate": [0, 3, 0] } ] },
+                { "type": "sphere", "center": [1, 0, 0], "radius": 1, "material": "glass" },
+                { "type": "sphere", "center": [-1, 0, 0], "radius": 1, "material": "chrome" }
+              ],
+              "environment": [0.1, 0.2, 0.3]
+            }
+            """;
+
+    @TempDir
+    Path dir;
+
+    private Path write(String name, String text) throws IOException {
+        Path p = dir.resolve(name);
+        Files.writeString(p, text);
+        return p;
+    }
+
+    private Path everyKey() throws IOException {
+        write("tri.obj", "mtllib tri.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        write("tri.mtl", "newmtl red\nKd 0.5 0.1 0.1\n");
+        write("tri.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                + "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 5\n1 0 5\n0 1 5\n3 0 1 2\n");
+        return write("every.json", EVERY_KEY);
+    }
+
+    @Test
+    void everyKeyIsRead() throws Exception {
+        Scene scene = SceneLoader.load(everyKey());
+        assertThat(scene.settings()).isEqualTo(new SceneSettings(320, 200, 12, 3, 9007199254740993L, "direct", 4, HemisphereSampling.UNIFORM));
+        assertThat(scene.camera().fovDegrees()).isEqualTo(35);
+        assertThat(scene.environment()).isEqualTo(new Rgb(0.1, 0.2, 0.3));
+        Geometry g = scene.geometry();
+        assertThat(g.triangleCount()).isEqualTo(1 + 1 + 1 + 2);
+        assertThat(g.sphereCount()).isEqualTo(3);
+        // the first OBJ: scaled by 2, turned 90° about +y (x -> -z), moved by +1 in x, all of "white"
+        Aabb first = bounds(g, 0);
+        assertThat(new double[] {first.minX, first.maxX, first.minY, first.maxY, first.minZ, first.maxZ})
+                .containsExactly(new double[] {1, 1, 0, 2, -2, 0}, within(1e-6));
+        assertThat(name(scene, 0)).isEqualTo("white");
+        assertThat(name(scene, 1)).isEqualTo("default");                 // the PLY without a material
+        assertThat(name(scene, 2)).isEqualTo("red");                     // the OBJ with its MTL
+        Aabb quad = bounds(g, 3);
+        quad.include(bounds(g, 4));
+        assertThat(new double[] {quad.maxX, quad.maxY, quad.minZ}).containsExactly(new double[] {1, 2, -2}, within(1e-6));
+        assertThat(name(scene, 3)).isEqualTo("paint");
+        Material paint = scene.materials().get(g.material(3));
+        assertThat(paint.emission()).isEqualTo(new Rgb(0.5, 0, 0));
+        // the lamp sphere moved up by 3
+        Aabb lamp = bounds(g, g.triangleCount());
+        assertThat((lamp.minY + lamp.maxY) / 2).isCloseTo(3, within(1e-9));
+        assertThat(scene.materials()).extracting(Material::bsdf).contains(new Dielectric(1.33));
+    }
+
+    @Test
+    void theSettingsApplyToRenderSettingsAndOnlyWhereGiven() throws Exception {
+        Scene scene = SceneLoader.load(everyKey());
+        RenderSettings s = RenderSettings.defaults().withThreads(3).withScene(scene.settings());
+        assertThat(s).isEqualTo(RenderSettings.defaults().withThreads(3).withSize(320, 200).withSamplesPerPixel(12).withMaxDepth(3)
+                .withSeed(9007199254740993L).withIntegrator(IntegratorKind.DIRECT).withLightSamples(4)
+                .withHemisphere(HemisphereSampling.UNIFORM));
+        assertThat(RenderSettings.defaults().withScene(SceneSettings.NONE)).isEqualTo(RenderSettings.defaults());
+        RenderSettings halfGiven = RenderSettings.defaults().withScene(new SceneSettings(100, null, null, null, null, null, null, null));
+        assertThat(halfGiven.width()).isEqualTo(100);
+        assertThat(halfGiven.height()).isEqualTo(512);
+        var e = catchThrowableOfType(() -> RenderSettings.defaults().withScene(
+                new SceneSettings(null, null, null, null, null, "bidir", null, null)), IllegalArgumentException.class);
+        assertThat(e).hasMessage("unknown integrator 'bidir' (known: path, direct, whitted)");
+    }
+
+    @Test
+    void everyKeyRoundTripsThroughTheWriter() throws Exception {
+        SceneDescription original = JsonSceneReader.parse(everyKey());
+        String written = SceneFileWriter.write(original);
+        SceneDescription again = JsonSceneReader.parse(write("again.json", written));
+        assertThat(again).isEqualTo(original);
+        for (String key : List.of("camera", "lookFrom", "lookAt", "up", "fov", "film", "width", "height", "integrator", "type", "spp",
+                "maxDepth", "seed", "lightSamples", "hemisphere", "materials", "albedo", "emission", "reflectance", "ior",
+                "diffuse", "specular", "exponent", "shapes", "file", "material", "transform", "scale", "rotate", "axis", "degrees",
+                "translate", "positions", "indices", "normals", "center", "radius", "environment")) {
+            assertThat(written).as("key %s", key).contains("\"" + key + "\"");
+        }
+        assertThat(SceneFileWriter.write(again)).isEqualTo(written);
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"cornell-box", "cornell-empty-rg", "cornell-mirror", "cornell-sphere", "cornell-glossy"})
+    void theShippedScenesRoundTrip(String name) throws Exception {
+        SceneDescription shipped = JsonSceneReader.parse(Path.of("scenes", name + ".json"));
+        Files.copy(Path.of("scenes", name + ".obj"), dir.resolve(name + ".obj"));
+        Files.copy(Path.of("scenes", name + ".mtl"), dir.resolve(name + ".mtl"));
+        assertThat(JsonSceneReader.parse(write(name + ".json", SceneFileWriter.write(shipped)))).isEqualTo(shipped);
+    }
+
+    @Test
+    void defaultsAreWrittenOutSoThatTheFileSaysWhatItMeans() throws Exception {
+        write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        SceneDescription d = JsonSceneReader.parse(write("min.json", """
+                { "materials": { "m": { "type": "mirror" }, "d": { "type": "diffuse" } },
+                  "camera": { "lookFrom": [0, 0, 3], "lookAt": [0, 0, 0] },
+                  "shapes": [ { "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m" } ] }
+                """));
+        String written = SceneFileWriter.write(d);
+        assertThat(written).contains("\"reflectance\" : [ 1.0, 1.0, 1.0 ]").contains("\"albedo\" : [ 0.8, 0.8, 0.8 ]")
+                .contains("\"up\" : [ 0.0, 1.0, 0.0 ]").contains("\"fov\" : 40.0")
+                .doesNotContain("film").doesNotContain("integrator").doesNotContain("environment").doesNotContain("transform");
+    }
+
+    // ---- errors of the new keys -----------------------------------------------------------------
+
+    private static final String M = "\"materials\": { \"m\": { \"type\": \"diffuse\" } },\n";
+    private static final String SPHERE = "{ \"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1, \"material\": \"m\" }";
+
+    static Stream<Arguments> badScenes() {
+        return Stream.of(
+            bad(3, "\"film\": { \"width\": 64, \"depth\": 3 },", "unknown key 'depth' in film (known: height, width)"),
+            bad(3, "\"film\": [64, 64],", "'film' must be an object, got an array"),
+            bad(3, "\"film\": { \"width\": 64.5 },", "'film.width' must be a whole number, got 64.5"),
+            bad(3, "\"film\": { \"height\": 0 },", "'film.height' must be in [1, 32768], got 0"),
+            bad(3, "\"film\": { \"width\": \"wide\" },", "'film.width' must be a number, got a string"),
+            bad(3, "\"integrator\": { \"samples\": 4 },", "unknown key 'samples' in integrator (known: hemisphere, lightSamples, maxDepth, seed, spp, type)"),
+            bad(3, "\"integrator\": { \"spp\": 0 },", "'integrator.spp' must be >= 1, got 0"),
+            bad(3, "\"integrator\": { \"maxDepth\": 0 },", "'integrator.maxDepth' must be -1 (unbounded) or >= 1, got 0"),
+            bad(3, "\"integrator\": { \"maxDepth\": -2 },", "'integrator.maxDepth' must be >= -1, got -2"),
+            bad(3, "\"integrator\": { \"seed\": 1.5 },", "'integrator.seed' must be a whole number, got 1.5"),
+            bad(3, "\"integrator\": { \"lightSamples\": 0 },", "'integrator.lightSamples' must be >= 1, got 0"),
+            bad(3, "\"integrator\": { \"hemisphere\": \"stratified\" },", "'integrator.hemisphere' must be \"cosine\" or \"uniform\", got 'stratified'"),
+            bad(3, "\"integrator\": { \"type\": 3 },", "'integrator.type' must be a string, got a number"),
+            shape("{ \"type\": \"triangles\", \"positions\": [0, 0, 0, 1, 0], \"indices\": [0, 1, 2], \"material\": \"m\" }",
+                    "'shapes[].positions' must hold x, y, z triples, got 5 numbers"),
+            shape("{ \"type\": \"triangles\", \"positions\": [0, 0, 0, 1, 0, 0, 0, 1, 0], \"indices\": [0, 1, 3], \"material\": \"m\" }",
+                    "'shapes[].indices[2]' = 3 is out of range (there are 3 vertices)"),
+            shape("{ \"type\": \"triangles\", \"positions\": [0, 0, 0, 1, 0, 0, 0, 1, 0], \"indices\": [0, 1], \"material\": \"m\" }",
+                    "'shapes[].indices' must hold three vertex indices per triangle, got 2"),
+            shape("{ \"type\": \"triangles\", \"positions\": [0, 0, 0, 1, 0, 0, 0, 1, 0], \"indices\": [0, 1, 2.5], \"material\": \"m\" }",
+                    "'shapes[].indices[2]' must be a whole number, got 2.5"),
+            shape("{ \"type\": \"triangles\", \"positions\": [0, 0, 0, 1, 0, 0, 0, 1, 0], \"indices\": [0, 1, 2], \"normals\": [0, 0, 1],"
+                    + " \"material\": \"m\" }", "'shapes[].normals' must have one x, y, z triple per vertex: 3 numbers for 3 vertices"),
+            shape("{ \"type\": \"triangles\", \"positions\": [0, 0, 0, 1, 0, 0, 0, 1, 0], \"indices\": [0, 1, 2] }", "missing required key 'material'"),
+            shape("{ \"type\": \"triangles\", \"positions\": [0, 0, 0, 1e39, 0, 0, 0, 1, 0], \"indices\": [0, 1, 2], \"material\": \"m\" }",
+                    "'shapes[].positions' must fit into floats, got Infinity"),
+            shape("{ \"type\": \"triangles\", \"positions\": [0, 0, 0, 1, 0, 0, 0, 1, 0], \"indices\": [0, 1, 2], \"material\": \"n\" }",
+                    "unknown material 'n' (define it under 'materials')"),
+            shape("{ \"type\": \"mesh\", \"file\": \"tri.stl\" }", "'shapes[].file' must name an .obj or .ply file, got 'tri.stl'"),
+            shape("{ \"type\": \"mesh\", \"file\": \"none.ply\" }", "mesh file not found: "),
+            shape("{ \"type\": \"cube\" }", "unknown shape type 'cube' (known: mesh, sphere, triangles)"),
+            transform("{ \"translate\": [1, 2, 3] }", "'shapes[].transform' must be an array, got an object"),
+            transform("[ { \"translate\": [1, 2, 3], \"scale\": 2 } ]",
+                    "each step of 'shapes[].transform' must have exactly one key of rotate, scale, translate, got scale, translate"),
+            transform("[ {} ]", "each step of 'shapes[].transform' must have exactly one key of rotate, scale, translate, got none"),
+            transform("[ { \"shear\": 2 } ]", "unknown key 'shear' in shapes[].transform[] (known: rotate, scale, translate)"),
+            transform("[ { \"translate\": [1, 2] } ]", "'shapes[].transform[].translate' must have 3 numbers, got 2"),
+            transform("[ { \"scale\": 0 } ]", "bad 'shapes[].transform[].scale': scale factors must not be zero, got (0.0, 0.0, 0.0)"),
+            transform("[ { \"rotate\": { \"axis\": [0, 0, 0], \"degrees\": 30 } } ]", "bad 'shapes[].transform[].rotate': the rotation axis must not be zero"),
+            transform("[ { \"rotate\": { \"axis\": [0, 1, 0] } } ]", "missing required key 'degrees'"),
+            transform("[ { \"rotate\": { \"axis\": [0, 1, 0], \"degrees\": 30, \"about\": [0, 0, 0] } } ]",
+                    "unknown key 'about' in shapes[].transform[].rotate (known: axis, degrees)"),
+            transform("[ { \"scale\": [1, 2, 1] } ]",
+                    "'shapes[].transform': a sphere can only be translated, rotated and scaled uniformly; this transform scales its axes by 1.0, 2.0 and 1.0"));
+    }
+
+    private static Arguments bad(int line, String topLevel, String fragment) {
+        return Arguments.of("{\n" + M + topLevel + "\n\"shapes\": [ " + SPHERE + " ]\n}\n", line, fragment);
+    }
+
+    private static Arguments shape(String shape, String fragment) {
+        return Arguments.of("{\n" + M + "\"shapes\": [\n" + shape + "\n] }\n", 4, fragment);
+    }
+
+    private static Arguments transform(String transform, String fragment) {
+        return Arguments.of("{\n" + M + "\"shapes\": [\n" + SPHERE.replace(" }", ", \"transform\": " + transform + " }") + "\n] }\n", 4, fragment);
+    }
+
+    @ParameterizedTest(name = "{2}")
+    @MethodSource("badScenes")
+    void badNewKeysAreOneErrorWithFileLineAndKey(String json, int line, String fragment) throws Exception {
+        Path file = write("bad.json", json);
+        SceneException e = catchThrowableOfType(() -> SceneLoader.load(file), SceneException.class);
+        assertThat(e).as(json).isNotNull();
+        assertThat(e.getMessage()).startsWith(file + ":" + line + ": ").contains(fragment);
+        assertThat(e.line()).isEqualTo(line);
+    }
+
+    // ---- helpers --------------------------------------------------------------------------------
+
+    private static Aabb bounds(Geometry g, int prim) {
+        Aabb box = new Aabb();
+        g.includeBounds(prim, box);
+        return box;
+    }
+
+    private static String name(Scene scene, int prim) {
+        return scene.materials().get(scene.geometry().material(prim)).name();
+    }
+}
