@@ -313,7 +313,6 @@ public final class Bvh {
         final int[] tri = this.tri;
         final float[] box = nodes;
         final int[] refs = stack.refs;
-        final int[] dist = stack.dist;
         final int[] lanes = stack.lanes;
         int sp = 0;
         int ref = 0;
@@ -328,16 +327,10 @@ public final class Bvh {
                         lanes[k] = entry(box, o + k, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax);
                     }
                 }
-                int base = sp;
+                // Unordered: sorting cost more than it found blockers sooner (docs/performance.md).
                 for (int k = 0; k < 4; k++) {
-                    int t = lanes[k];
                     refs[sp] = Float.floatToRawIntBits(box[c + k]);
-                    dist[sp] = t;
-                    sp += ~t >>> 31;
-                }
-                // Nearest child first here too: a blocker near the origin (the common case) is found sooner.
-                for (int i = base; i < sp - 1; i++) {
-                    orderPair(refs, dist, i);
+                    sp += ~lanes[k] >>> 31;
                 }
             } else {
                 int first = leafFirst(ref), end = first + leafCount(ref);
