@@ -14,6 +14,7 @@ module dev.strahl {
     requires info.picocli;
     requires com.formdev.flatlaf;
     requires jdk.unsupported;                  // sun.misc.Signal: Ctrl-C stops a render and keeps its image
+    requires static jdk.incubator.vector;      // the optional SIMD box test of the BVH (accel/SimdNodes), used when present
 
     exports dev.strahl.scene;
     exports dev.strahl.render;

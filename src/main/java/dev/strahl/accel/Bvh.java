@@ -5,37 +5,81 @@ import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 
 /**
- * A bounding volume hierarchy over the primitives of a {@link Geometry}, flattened to arrays in
- * depth-first order: the left child of interior node i is i + 1. Built by {@link BvhBuilder}.
- * Immutable and shared by all render threads; each thread passes its own traversal stack.
+ * A four-wide bounding volume hierarchy over the primitives of a {@link Geometry}, in two flat
+ * arrays. Built by {@link BvhBuilder}, which also reorders the primitives so that every leaf is a
+ * contiguous range of {@link #geometry()}: hits name primitives of that geometry, not of the one
+ * the hierarchy was built from. Immutable and shared by all render threads; each thread passes
+ * its own {@link TraversalStack}.
  *
- * <p>Node i: {@code bounds[6i .. 6i+5]} = min x, y, z, max x, y, z; {@code info[2i]} = first
- * index into {@code primRef} for a leaf, index of the right child for an interior node;
- * {@code info[2i+1]} = (primitive count &lt;&lt; 2) | split axis, the count being 0 for interior nodes.
+ * <p>Node i is {@value #NODE} floats at {@code nodes[28i ..]}, its four children's boxes and then the
+ * children themselves (as float bits), so that a visit touches two cache lines: the boxes
+ * coordinate by coordinate ({@code nodes[28i + 4k + c]} is coordinate k of child c, k = min x,
+ * min y, min z, max x, max y, max z), so that the four slab tests read neighbouring values; then
+ * the children at {@code nodes[28i + 24 + c]}: an interior node's index (≥ 0), a leaf as
+ * {@link #leaf(int, int)} (sign bit set, first primitive, count), or {@link #EMPTY} (with an
+ * empty box, which no ray enters). That is 112 bytes per node and about a third as many nodes
+ * as leaves.
  */
 public final class Bvh {
-    /** Traversal stack size: deeper than any tree the builder makes from float coordinates (its depth is asserted at build time). */
-    public static final int STACK_SIZE = 128;
+    /** Depth limit of the four-wide tree; the builder's median fallback keeps real trees far below. */
+    static final int MAX_DEPTH = 80;
+    /** Traversal stack entries: an interior node pushes at most three siblings per level. */
+    public static final int STACK_SIZE = 3 * MAX_DEPTH + 4;
+    /** A child slot without a child. */
+    static final int EMPTY = Integer.MIN_VALUE;
+    /** Largest error of a float slab distance in ulps, with room to spare (see {@link #intersect}). */
+    private static final int MARGIN_ULPS = 8;
 
     private final Geometry geometry;
-    private final float[] bounds;
-    private final int[] info;
-    private final int[] primRef;
+    private final int triangleCount;
+    private final float[] pos;
+    private final int[] tri;
+    private final byte[] flags;
+    /** Floats per node: 24 box coordinates, 4 children (their int bits). */
+    static final int NODE = 28;
+    private final float[] nodes;
     private final int nodeCount;
+    /** Whether box tests take the Vector API path ({@link SimdNodes}). */
+    private final boolean simd;
 
-    Bvh(Geometry geometry, float[] bounds, int[] info, int[] primRef, int nodeCount) {
-        this.geometry = geometry;
-        this.bounds = bounds;
-        this.info = info;
-        this.primRef = primRef;
-        this.nodeCount = nodeCount;
+    Bvh(Geometry geometry, float[] nodes, int nodeCount) {
+        this(geometry, nodes, nodeCount, SimdNodes.AVAILABLE);
     }
 
-    /** Builds the hierarchy with a binned surface-area heuristic. */
+    private Bvh(Geometry geometry, float[] nodes, int nodeCount, boolean simd) {
+        this.geometry = geometry;
+        this.triangleCount = geometry.triangleCount();
+        this.pos = geometry.positionArray();
+        this.tri = geometry.indexArray();
+        this.flags = geometry.flagArray();
+        this.nodes = nodes;
+        this.nodeCount = nodeCount;
+        this.simd = simd;
+    }
+
+    /** The same tree with box tests on the Vector API path or not (for tests and benchmarks comparing the two). */
+    Bvh withSimd(boolean on) {
+        if (on && !SimdNodes.AVAILABLE) {
+            throw new IllegalStateException("the Vector API path needs --add-modules jdk.incubator.vector");
+        }
+        return new Bvh(geometry, nodes, nodeCount, on);
+    }
+
+    /** Whether box tests use the Vector API (the JVM runs with {@code --add-modules jdk.incubator.vector}). */
+    public boolean usesSimd() {
+        return simd;
+    }
+
+    /**
+     * Builds the hierarchy with a binned surface-area heuristic. The returned tree's
+     * {@link #geometry()} holds the same primitives as {@code geometry} in leaf order; use it,
+     * not the argument, to look up hits.
+     */
     public static Bvh build(Geometry geometry) {
         return new BvhBuilder(geometry).build();
     }
 
+    /** The primitives, in the order of the leaves; the primitive ids of hits refer to it. */
     public Geometry geometry() {
         return geometry;
     }
@@ -44,16 +88,60 @@ public final class Bvh {
         return nodeCount;
     }
 
-    /** Bytes held by the node and reference arrays. */
+    /** Bytes held by the node arrays. */
     public long byteSize() {
-        return 4L * bounds.length + 4L * info.length + 4L * primRef.length;
+        return 4L * nodes.length;
+    }
+
+    /** A leaf child reference: {@code count} primitives from {@code first} on. */
+    static int leaf(int first, int count) {
+        if (first < 0 || first >= 1 << 28 || count < 1 || count > 7) {
+            throw new IllegalArgumentException("leaf out of range: first " + first + ", count " + count);
+        }
+        return Integer.MIN_VALUE | first << 3 | count;
+    }
+
+    static int leafFirst(int ref) {
+        return (ref & Integer.MAX_VALUE) >>> 3;
+    }
+
+    static int leafCount(int ref) {
+        return ref & 7;
     }
 
     /** The node arrays themselves (not copies), for structural checks by tests in this package. */
-    record Layout(float[] bounds, int[] info, int[] primRef) {}
+    record Layout(float[] nodes) {
+        /** Coordinate k (min x, y, z, max x, y, z) of child c's box in node i. */
+        float box(int i, int k, int c) {
+            return nodes[NODE * i + 4 * k + c];
+        }
+
+        int child(int i, int c) {
+            return Float.floatToRawIntBits(nodes[NODE * i + 24 + c]);
+        }
+    }
 
     Layout layout() {
-        return new Layout(bounds, info, primRef);
+        return new Layout(nodes);
+    }
+
+    /**
+     * The slab test of node {@code node}'s four children for a ray, as the traversal runs it:
+     * entry distances (float bits) or -1 into {@code stack.lanes}. For micro-benchmarks and tests.
+     */
+    void testNode(int node, Ray ray, TraversalStack stack) {
+        stack.prepare(ray);
+        int o = NODE * node;
+        int tMax = bits(BvhBuilder.roundUp(ray.tMax));
+        if (simd) {
+            SimdNodes.entries(nodes, o, stack.nx, stack.ny, stack.nz, stack.onx, stack.ony, stack.onz, stack.ofx, stack.ofy, stack.ofz,
+                    stack.ix, stack.iy, stack.iz, tMax, MARGIN_ULPS, stack.lanes);
+        } else {
+            for (int k = 0; k < 4; k++) {
+                stack.lanes[k] = entry(nodes, o + k, stack.nx, stack.ny, stack.nz, stack.onx, stack.ony, stack.onz, stack.ofx, stack.ofy,
+                        stack.ofz, stack.ix, stack.iy, stack.iz, tMax);
+            }
+        }
     }
 
     /** Allocates a traversal stack for one thread. */
@@ -63,9 +151,17 @@ public final class Bvh {
 
     /**
      * Finds the closest hit in (0, ray.tMax): on success fills {@code hit} and shortens
-     * {@code ray.tMax}. At an interior node both children's boxes are tested; the nearer one is
-     * visited first and the farther one pushed with its entry distance, so that it is skipped if
-     * a closer hit turns up meanwhile.
+     * {@code ray.tMax}. At an interior node the four children's boxes are tested; those the ray
+     * enters are visited nearest first, the others pushed with their entry distance, so that a
+     * node farther than a hit found meanwhile is dropped without another look. Triangles are
+     * tested in this loop with the arithmetic of {@link Geometry#intersect(int, int, Ray, Hit, boolean)}
+     * (the watertight test of Woop et al. 2013), its per-ray set-up done once per ray.
+     *
+     * <p>The slab tests run in float, kept conservative (never losing a box the exact ray
+     * touches): the origin is bounded by the floats just below and above it and each slab uses
+     * the bound that makes its distance err outwards; the remaining rounding of one subtraction,
+     * one product and the float inverse (under 2 ulp on each end) is covered by
+     * {@link #MARGIN_ULPS}. Distances are compared as float bits (see {@link #entry}).
      *
      * @param cullBackFaces ignore back faces of closed meshes (camera and continuation rays only)
      */
@@ -73,57 +169,131 @@ public final class Bvh {
         if (nodeCount == 0) {
             return false;
         }
-        double ix = 1 / ray.d.x, iy = 1 / ray.d.y, iz = 1 / ray.d.z;
-        double ox = ray.o.x * ix, oy = ray.o.y * iy, oz = ray.o.z * iz;
-        int nearX = ix < 0 ? 3 : 0, nearY = iy < 0 ? 4 : 1, nearZ = iz < 0 ? 5 : 2;
-        if (entry(0, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, ray.tMax) == MISS) {
-            return false;
-        }
-        int[] nodes = stack.nodes;
-        double[] entry = stack.entry;
-        boolean found = false;
+        stack.prepare(ray);
+        final float ix = stack.ix, iy = stack.iy, iz = stack.iz;
+        final int nx = stack.nx, ny = stack.ny, nz = stack.nz;
+        final float onx = stack.onx, ony = stack.ony, onz = stack.onz, ofx = stack.ofx, ofy = stack.ofy, ofz = stack.ofz;
+        final int kx = stack.kx, ky = stack.ky, kz = stack.kz;
+        final double sx = stack.sx, sy = stack.sy, sz = stack.sz, okx = stack.okx, oky = stack.oky, okz = stack.okz;
+        final float[] pos = this.pos;
+        final int[] tri = this.tri;
+        final float[] box = nodes;
+        final int[] refs = stack.refs;
+        final int[] dist = stack.dist;
+        final int[] lanes = stack.lanes;
+        double tHit = ray.tMax;
+        int tMax = bits(BvhBuilder.roundUp(tHit));
+        int found = -1;
+        double foundV = 0, foundW = 0, foundDet = 1;
         int sp = 0;
-        int node = 0;
+        int ref = 0;
         while (true) {
-            int first = info[2 * node];
-            int count = info[2 * node + 1] >>> 2;
-            if (count > 0) {
-                for (int k = first, end = first + count; k < end; k++) {
-                    found |= geometry.intersect(primRef[k], ray, hit, cullBackFaces);
+            if (ref >= 0) {
+                int o = NODE * ref;
+                int c = o + 24;
+                int base = sp;
+                if (simd) {
+                    SimdNodes.entries(box, o, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax, MARGIN_ULPS, lanes);
+                } else {
+                    for (int k = 0; k < 4; k++) {
+                        lanes[k] = entry(box, o + k, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax);
+                    }
+                }
+                for (int k = 0; k < 4; k++) {
+                    // Written always, kept only on a hit: no branch to mispredict.
+                    int t = lanes[k];
+                    refs[sp] = Float.floatToRawIntBits(box[c + k]);
+                    dist[sp] = t;
+                    sp += ~t >>> 31;
+                }
+                int pushed = sp - base;
+                if (pushed > 0) {
+                    // One bubble pass brings the nearest entry to the top; the rest stay pushed
+                    // (and are skipped on pop if a hit comes closer).
+                    for (int i = base; i < sp - 1; i++) {
+                        orderPair(refs, dist, i);
+                    }
+                    ref = refs[--sp];
+                    continue;
                 }
             } else {
-                int left = node + 1;
-                double tLeft = entry(left, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, ray.tMax);
-                double tRight = entry(first, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, ray.tMax);
-                if (tLeft != MISS && tRight != MISS) {
-                    if (tLeft <= tRight) {
-                        nodes[sp] = first;
-                        entry[sp++] = tRight;
-                        node = left;
-                    } else {
-                        nodes[sp] = left;
-                        entry[sp++] = tLeft;
-                        node = first;
+                int first = leafFirst(ref), end = first + leafCount(ref);
+                if (first < triangleCount) {
+                    boolean closer = false;
+                    for (int prim = first; prim < end; prim++) {
+                        int va = 3 * tri[3 * prim], vb = 3 * tri[3 * prim + 1], vc = 3 * tri[3 * prim + 2];
+                        double az0 = pos[va + kz] - okz, bz0 = pos[vb + kz] - okz, cz0 = pos[vc + kz] - okz;
+                        double axs = pos[va + kx] - okx - sx * az0, ays = pos[va + ky] - oky - sy * az0;
+                        double bxs = pos[vb + kx] - okx - sx * bz0, bys = pos[vb + ky] - oky - sy * bz0;
+                        double cxs = pos[vc + kx] - okx - sx * cz0, cys = pos[vc + ky] - oky - sy * cz0;
+                        double u = cxs * bys - cys * bxs;
+                        double v = axs * cys - ays * cxs;
+                        double w = bxs * ays - bys * axs;
+                        if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) {
+                            continue;
+                        }
+                        if (u == 0 || v == 0 || w == 0) {
+                            // On an edge's line: the geometry decides exactly.
+                            ray.tMax = tHit;
+                            if (geometry.intersect(prim, 1, ray, hit, cullBackFaces)) {
+                                tHit = hit.t;
+                                found = prim;
+                                foundV = hit.b1;
+                                foundW = hit.b2;
+                                foundDet = 1;
+                                closer = true;
+                            }
+                            continue;
+                        }
+                        double det = u + v + w;
+                        if (det < 0 && cullBackFaces && (flags[prim] & Geometry.CLOSED) != 0) {
+                            continue;
+                        }
+                        double t = (u * az0 + v * bz0 + w * cz0) * sz / det;
+                        if (t > 0 && t < tHit) {
+                            tHit = t;
+                            found = prim;
+                            foundV = v;
+                            foundW = w;
+                            foundDet = det;
+                            closer = true;
+                        }
                     }
-                    continue;
-                }
-                if (tLeft != MISS) {
-                    node = left;
-                    continue;
-                }
-                if (tRight != MISS) {
-                    node = first;
-                    continue;
+                    if (closer) {
+                        tMax = bits(BvhBuilder.roundUp(tHit));
+                    }
+                } else {
+                    ray.tMax = tHit;
+                    if (geometry.intersect(first, end - first, ray, hit, cullBackFaces)) {
+                        tHit = hit.t;
+                        found = hit.prim;
+                        tMax = bits(BvhBuilder.roundUp(tHit));
+                    }
                 }
             }
-            // Pop the next node the ray still enters before the closest hit.
+            // Pop the next node the ray enters before the closest hit so far.
+            int cut = tMax + MARGIN_ULPS;
             do {
                 if (sp == 0) {
-                    return found;
+                    return finish(ray, hit, found, tHit, foundV / foundDet, foundW / foundDet);
                 }
-                node = nodes[--sp];
-            } while (entry[sp] > ray.tMax);
+                ref = refs[--sp];
+            } while (dist[sp] > cut);
         }
+    }
+
+    private boolean finish(Ray ray, Hit hit, int found, double t, double b1, double b2) {
+        if (found < 0) {
+            return false;
+        }
+        ray.tMax = t;
+        hit.t = t;
+        hit.prim = found;
+        if (found < triangleCount) {
+            hit.b1 = b1;
+            hit.b2 = b2;
+        }
+        return true;
     }
 
     /** Whether anything blocks the ray in (0, ray.tMax); stops at the first blocker found. */
@@ -131,64 +301,110 @@ public final class Bvh {
         if (nodeCount == 0) {
             return false;
         }
-        double ix = 1 / ray.d.x, iy = 1 / ray.d.y, iz = 1 / ray.d.z;
-        double ox = ray.o.x * ix, oy = ray.o.y * iy, oz = ray.o.z * iz;
-        int nearX = ix < 0 ? 3 : 0, nearY = iy < 0 ? 4 : 1, nearZ = iz < 0 ? 5 : 2;
-        int[] nodes = stack.nodes;
+        stack.prepare(ray);
+        final float ix = stack.ix, iy = stack.iy, iz = stack.iz;
+        final int nx = stack.nx, ny = stack.ny, nz = stack.nz;
+        final float onx = stack.onx, ony = stack.ony, onz = stack.onz, ofx = stack.ofx, ofy = stack.ofy, ofz = stack.ofz;
+        final int kx = stack.kx, ky = stack.ky, kz = stack.kz;
+        final double sx = stack.sx, sy = stack.sy, sz = stack.sz, okx = stack.okx, oky = stack.oky, okz = stack.okz;
+        final double tHit = ray.tMax;
+        final int tMax = bits(BvhBuilder.roundUp(tHit));
+        final float[] pos = this.pos;
+        final int[] tri = this.tri;
+        final float[] box = nodes;
+        final int[] refs = stack.refs;
+        final int[] lanes = stack.lanes;
         int sp = 0;
-        int node = 0;
+        int ref = 0;
         while (true) {
-            if (entry(node, ox, oy, oz, ix, iy, iz, nearX, nearY, nearZ, ray.tMax) != MISS) {
-                int first = info[2 * node];
-                int count = info[2 * node + 1] >>> 2;
-                if (count > 0) {
-                    for (int k = first, end = first + count; k < end; k++) {
-                        if (geometry.occludes(primRef[k], ray)) {
+            if (ref >= 0) {
+                int o = NODE * ref;
+                int c = o + 24;
+                if (simd) {
+                    SimdNodes.entries(box, o, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax, MARGIN_ULPS, lanes);
+                } else {
+                    for (int k = 0; k < 4; k++) {
+                        lanes[k] = entry(box, o + k, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax);
+                    }
+                }
+                // Unordered: sorting cost more than it found blockers sooner (docs/performance.md).
+                for (int k = 0; k < 4; k++) {
+                    refs[sp] = Float.floatToRawIntBits(box[c + k]);
+                    sp += ~lanes[k] >>> 31;
+                }
+            } else {
+                int first = leafFirst(ref), end = first + leafCount(ref);
+                if (first >= triangleCount) {
+                    if (geometry.occludes(first, end - first, ray)) {
+                        return true;
+                    }
+                } else {
+                    for (int prim = first; prim < end; prim++) {
+                        int va = 3 * tri[3 * prim], vb = 3 * tri[3 * prim + 1], vc = 3 * tri[3 * prim + 2];
+                        double az0 = pos[va + kz] - okz, bz0 = pos[vb + kz] - okz, cz0 = pos[vc + kz] - okz;
+                        double axs = pos[va + kx] - okx - sx * az0, ays = pos[va + ky] - oky - sy * az0;
+                        double bxs = pos[vb + kx] - okx - sx * bz0, bys = pos[vb + ky] - oky - sy * bz0;
+                        double cxs = pos[vc + kx] - okx - sx * cz0, cys = pos[vc + ky] - oky - sy * cz0;
+                        double u = cxs * bys - cys * bxs;
+                        double v = axs * cys - ays * cxs;
+                        double w = bxs * ays - bys * axs;
+                        if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) {
+                            continue;
+                        }
+                        if (u == 0 || v == 0 || w == 0) {
+                            if (geometry.occludes(prim, 1, ray)) {
+                                return true;
+                            }
+                            continue;
+                        }
+                        double t = (u * az0 + v * bz0 + w * cz0) * sz / (u + v + w);
+                        if (t > 0 && t < tHit) {
                             return true;
                         }
                     }
-                } else {
-                    nodes[sp++] = first;
-                    node = node + 1;
-                    continue;
                 }
             }
             if (sp == 0) {
                 return false;
             }
-            node = nodes[--sp];
+            ref = refs[--sp];
         }
     }
 
-    private static final double MISS = Double.POSITIVE_INFINITY;
-    /** Widens the far slab distance by a few ulps so that round-off never loses a box the ray touches. */
-    private static final double ROUNDING_MARGIN = 1 + 0x1p-50;
-
     /**
-     * Slab test (Kay &amp; Kajiya 1986) of node {@code node}'s box for t in (0, tMax): the distance at
-     * which the ray enters the box, or {@link #MISS}. The ray is given as its inverse direction
-     * and origin·inverse direction, so that each slab costs one multiply and one subtract; near*
-     * index the box corner the ray meets first on each axis. A NaN slab distance (origin on a slab
-     * plane, direction parallel to it) fails every comparison and so does not cut the interval,
-     * which keeps the test conservative.
+     * Slab test (Kay &amp; Kajiya 1986) of one child box for t in [0, tMax]: the distance at
+     * which the ray enters it as float bits, or -1 if it misses. {@code o} is the node's box
+     * offset plus the child slot; n* are the offsets of the near planes on each axis (the far
+     * ones are the other half of the node).
+     *
+     * <p>Maximum and minimum are taken on the float bits as ints, which is exact for
+     * non-negative floats and one conditional move each, where {@link Math#max(float, float)}
+     * costs several instructions for its NaN and −0 rules. A negative slab distance then counts
+     * as below every non-negative one, which is all the test needs: entry distances are clamped
+     * at 0, and any negative exit distance means a miss.
      */
-    private double entry(int node, double ox, double oy, double oz, double ix, double iy, double iz,
-                         int nearX, int nearY, int nearZ, double tMax) {
-        int b = 6 * node;
-        double tx0 = bounds[b + nearX] * ix - ox;
-        double tx1 = bounds[b + 3 - nearX] * ix - ox;
-        double ty0 = bounds[b + nearY] * iy - oy;
-        double ty1 = bounds[b + 5 - nearY] * iy - oy;
-        double tz0 = bounds[b + nearZ] * iz - oz;
-        double tz1 = bounds[b + 7 - nearZ] * iz - oz;
-        double tNear = 0;
-        double tFar = tMax;
-        tNear = tx0 > tNear ? tx0 : tNear;
-        tNear = ty0 > tNear ? ty0 : tNear;
-        tNear = tz0 > tNear ? tz0 : tNear;
-        tFar = tx1 < tFar ? tx1 : tFar;
-        tFar = ty1 < tFar ? ty1 : tFar;
-        tFar = tz1 < tFar ? tz1 : tFar;
-        return tNear <= tFar * ROUNDING_MARGIN ? tNear : MISS;
+    private static int entry(float[] box, int o, int nx, int ny, int nz, float onx, float ony, float onz,
+                             float ofx, float ofy, float ofz, float ix, float iy, float iz, int tMaxBits) {
+        int tn = Math.max(Math.max(bits((box[o + nx] - onx) * ix), bits((box[o + ny] - ony) * iy)),
+                Math.max(bits((box[o + nz] - onz) * iz), 0));
+        int tf = Math.min(Math.min(bits((box[o + (nx ^ 12)] - ofx) * ix), bits((box[o + (ny ^ 20)] - ofy) * iy)),
+                Math.min(bits((box[o + (nz ^ 28)] - ofz) * iz), tMaxBits));
+        return tn <= tf + MARGIN_ULPS ? tn : -1;
     }
+
+    private static int bits(float f) {
+        return Float.floatToRawIntBits(f);
+    }
+
+
+    /** Puts the nearer of entries i and i + 1 on top (at i + 1), without a branch. */
+    private static void orderPair(int[] refs, int[] dist, int i) {
+        int d0 = dist[i], d1 = dist[i + 1], r0 = refs[i], r1 = refs[i + 1];
+        int m = (d0 - d1) >> 31;                     // -1 if d0 < d1 (both are non-negative)
+        dist[i] = Math.max(d0, d1);
+        dist[i + 1] = Math.min(d0, d1);
+        refs[i] = (r0 & ~m) | (r1 & m);
+        refs[i + 1] = (r1 & ~m) | (r0 & m);
+    }
+
 }

@@ -2,254 +2,450 @@ package dev.strahl.accel;
 
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
-import java.util.Arrays;
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.ForkJoinTask;
+import java.util.concurrent.RecursiveAction;
+import java.util.concurrent.atomic.AtomicInteger;
 
 /**
- * Top-down BVH construction with the binned surface-area heuristic (Wald, "On fast Construction
- * of SAH-based Bounding Volume Hierarchies", 2007): centroids are sorted into {@value #BINS} bins
- * per axis and the cheapest of the bin boundaries is taken. Leaves hold at most
- * {@value #MAX_LEAF} primitives. Nodes are written depth-first into flat arrays.
+ * Top-down construction of a binary BVH with the binned surface-area heuristic (Wald, "On fast
+ * Construction of SAH-based Bounding Volume Hierarchies", 2007: centroids sorted into
+ * {@value #BINS} bins on all three axes in one pass, the cheapest bin boundary taken), then
+ * collapsed into the four-wide tree of {@link Bvh} by repeatedly opening the child of largest
+ * surface area (as Embree and pbrt's wide BVHs do). Large ranges are built in parallel on a
+ * fork/join pool; the result does not depend on the thread count, because the final tree is
+ * written in one depth-first pass over the binary one.
+ *
+ * <p>Leaves hold at most {@value #MAX_LEAF} primitives, all triangles or all spheres, so that
+ * they are one contiguous range of the reordered {@link Geometry} (no index indirection).
+ * Below depth {@value #MAX_SAH_DEPTH} splits fall back to the object median, which bounds the
+ * depth (and so the traversal stack) whatever the input.
  */
 final class BvhBuilder {
-    static final int BINS = 16;
-    static final int MAX_LEAF = 4;
-    /** Cost of visiting a node relative to one primitive test, in the SAH. */
-    private static final double TRAVERSAL_COST = 1.0;
+    static final int BINS = 32;
+    static final int MAX_LEAF = 6;
+    /** Cost of one box test relative to one primitive test, in the SAH. */
+    static final double TRAVERSAL_COST = 2.0;
+    private static final int MAX_SAH_DEPTH = 40;
+    private static final int PARALLEL_MIN = 1 << 14;
 
     private final Geometry geometry;
     private final int n;
-    private final double[] boxes;      // per primitive: min x, y, z, max x, y, z
-    private final double[] centroids;  // per primitive: x, y, z
-    private final int[] primRef;
-
-    private float[] bounds;
-    private int[] info;
-    private int nodeCount;
-
-    // Per-bin scratch, reused at every split.
-    private final int[] binCount = new int[BINS];
-    private final double[] binBox = new double[6 * BINS];
-    private final double[] rightArea = new double[BINS];
-    private final int[] rightCount = new int[BINS];
+    private final int triangleCount;
+    // Per reference position k (not primitive: partitioning moves them along with ref, so that
+    // binning reads them in order): the box, rounded outwards, as ordered keys (see key()), and the centroid.
+    private final int[] primKey;
+    private final float[] centroid;
+    private final int[] ref;           // primitive ids, partitioned in place into leaf ranges
+    // Binary nodes: box (6 floats), and a = left child, b = right child (interior) or a = start, b = ~count (leaf).
+    private final float[] nodeBox;
+    private final int[] nodeA, nodeB;
+    private final AtomicInteger nodes = new AtomicInteger(1);
 
     BvhBuilder(Geometry geometry) {
         this.geometry = geometry;
         this.n = geometry.primitiveCount();
-        this.boxes = new double[6 * n];
-        this.centroids = new double[3 * n];
-        this.primRef = new int[n];
+        this.triangleCount = geometry.triangleCount();
+        this.primKey = new int[6 * n];
+        this.centroid = new float[3 * n];
+        this.ref = new int[n];
         Aabb box = new Aabb();
         for (int i = 0; i < n; i++) {
             box.reset();
             geometry.includeBounds(i, box);
-            boxes[6 * i] = box.minX;
-            boxes[6 * i + 1] = box.minY;
-            boxes[6 * i + 2] = box.minZ;
-            boxes[6 * i + 3] = box.maxX;
-            boxes[6 * i + 4] = box.maxY;
-            boxes[6 * i + 5] = box.maxZ;
-            centroids[3 * i] = 0.5 * (box.minX + box.maxX);
-            centroids[3 * i + 1] = 0.5 * (box.minY + box.maxY);
-            centroids[3 * i + 2] = 0.5 * (box.minZ + box.maxZ);
-            primRef[i] = i;
+            int o = 6 * i;
+            float[] b = {roundDown(box.minX), roundDown(box.minY), roundDown(box.minZ), roundUp(box.maxX), roundUp(box.maxY), roundUp(box.maxZ)};
+            for (int c = 0; c < 6; c++) {
+                primKey[o + c] = key(b[c]);
+            }
+            for (int c = 0; c < 3; c++) {
+                centroid[3 * i + c] = 0.5f * b[c] + 0.5f * b[3 + c];
+            }
+            ref[i] = i;
         }
         int capacity = Math.max(1, 2 * n);
-        this.bounds = new float[6 * capacity];
-        this.info = new int[2 * capacity];
+        this.nodeBox = new float[6 * capacity];
+        this.nodeA = new int[capacity];
+        this.nodeB = new int[capacity];
     }
 
     Bvh build() {
-        if (n > 0) {
-            buildNode(0, n, 0);
+        if (n == 0) {
+            return new Bvh(geometry, new float[0], 0);
         }
-        return new Bvh(geometry, Arrays.copyOf(bounds, 6 * nodeCount), Arrays.copyOf(info, 2 * nodeCount), primRef, nodeCount);
+        rangeBox(0, n, 0);
+        if (n >= PARALLEL_MIN && Runtime.getRuntime().availableProcessors() > 1) {
+            ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+            try {
+                pool.invoke(new Split(0, 0, n, 0));
+            } finally {
+                pool.shutdown();
+            }
+        } else {
+            new Split(0, 0, n, 0).compute();
+        }
+        return new BvhWriter(geometry, ref, nodeA, nodeB, nodeBox).write();
     }
 
-    private void buildNode(int start, int end, int depth) {
-        int node = nodeCount++;
-        double[] nb = rangeBounds(start, end);
-        writeBounds(node, nb);
+    /** Per-thread binning memory, reused at every split a thread makes. */
+    private static final class Bins {
+        final int[] count = new int[3 * BINS];
+        final int[] box = new int[3 * BINS * 6];           // bin (axis, b) at 6 * (axis * BINS + b), as ordered keys
+        final double[] rightArea = new double[BINS];
+        final int[] rightCount = new int[BINS];
+        final float[] centroidBounds = new float[6];
+        int bins;                                           // bins in use at this split
+        int lastBin;
+    }
+
+    private static final ThreadLocal<Bins> BINS_SCRATCH = ThreadLocal.withInitial(Bins::new);
+
+    /** Builds the subtree of one binary node over ref[start, end); forks halves of large ranges. */
+    private final class Split extends RecursiveAction {
+        private final int node, start, end, depth;
+
+        Split(int node, int start, int end, int depth) {
+            this.node = node;
+            this.start = start;
+            this.end = end;
+            this.depth = depth;
+        }
+
+        @Override
+        protected void compute() {
+            split(node, start, end, depth);
+        }
+    }
+
+    private void split(int node, int start, int end, int depth) {
         int count = end - start;
-
-        // Centroid bounds decide the binning range.
-        double cminX = Double.POSITIVE_INFINITY, cminY = cminX, cminZ = cminX;
-        double cmaxX = Double.NEGATIVE_INFINITY, cmaxY = cmaxX, cmaxZ = cmaxX;
-        for (int k = start; k < end; k++) {
-            int p = 3 * primRef[k];
-            cminX = Math.min(cminX, centroids[p]);
-            cmaxX = Math.max(cmaxX, centroids[p]);
-            cminY = Math.min(cminY, centroids[p + 1]);
-            cmaxY = Math.max(cmaxY, centroids[p + 1]);
-            cminZ = Math.min(cminZ, centroids[p + 2]);
-            cmaxZ = Math.max(cmaxZ, centroids[p + 2]);
-        }
-        double[] cmin = {cminX, cminY, cminZ};
-        double[] cext = {cmaxX - cminX, cmaxY - cminY, cmaxZ - cminZ};
-
-        int bestAxis = -1;
-        int bestBin = -1;
-        double bestCost = Double.POSITIVE_INFINITY;
-        if (count > 1) {
-            for (int axis = 0; axis < 3; axis++) {
-                if (!(cext[axis] > 0)) {
-                    continue;
-                }
-                double cost = bestSplit(start, end, axis, cmin[axis], cext[axis]);
-                if (cost < bestCost) {
-                    bestCost = cost;
-                    bestAxis = axis;
-                    bestBin = lastBestBin;
-                }
-            }
-        }
-        double leafCost = count;
-        double parentArea = area(nb);
-        double splitCost = parentArea > 0 ? TRAVERSAL_COST + bestCost / parentArea : Double.POSITIVE_INFINITY;
-        boolean mustSplit = count > MAX_LEAF;
-        if (count == 1 || (!mustSplit && leafCost <= splitCost)) {
+        if (count == 1) {
             makeLeaf(node, start, count);
             return;
         }
+        Bins s = BINS_SCRATCH.get();
+        // Centroid bounds decide the binning range.
+        float[] cb = s.centroidBounds;
+        setEmpty(cb);
+        for (int k = start; k < end; k++) {
+            int p = 3 * k;
+            for (int c = 0; c < 3; c++) {
+                float v = centroid[p + c];
+                cb[c] = Math.min(cb[c], v);
+                cb[3 + c] = Math.max(cb[3 + c], v);
+            }
+        }
+        // Fewer bins for few primitives: the sweep costs as much per bin as the binning per primitive.
+        s.bins = Math.min(BINS, Math.max(2, count));
+        int bestAxis = -1, bestBin = -1;
+        double bestCost = Double.POSITIVE_INFINITY;
+        if (depth < MAX_SAH_DEPTH) {
+            binAll(s, start, end, cb);
+            for (int axis = 0; axis < 3; axis++) {
+                if (!(cb[3 + axis] > cb[axis])) {
+                    continue;
+                }
+                double cost = sweep(s, axis, bestCost);
+                if (cost < bestCost) {
+                    bestCost = cost;
+                    bestAxis = axis;
+                    bestBin = s.lastBin;
+                }
+            }
+        }
+        double parentArea = area(nodeBox, 6 * node);
+        double splitCost = parentArea > 0 ? TRAVERSAL_COST + bestCost / parentArea : Double.POSITIVE_INFINITY;
+        if (count <= MAX_LEAF && (bestAxis < 0 || count <= splitCost)) {
+            if (isHomogeneous(start, end)) {
+                makeLeaf(node, start, count);
+                return;
+            }
+            bestAxis = -1;            // mixed triangles and spheres: split by type below
+        }
 
         int mid;
+        int left = nodes.getAndAdd(2), right = left + 1;
         if (bestAxis >= 0) {
-            mid = partition(start, end, bestAxis, cmin[bestAxis], cext[bestAxis], bestBin);
+            mid = partition(start, end, bestAxis, cb[bestAxis], binScale(cb, bestAxis, s.bins), s.bins, bestBin);
+            binsBox(s, bestAxis, 0, bestBin + 1, 6 * left);
+            binsBox(s, bestAxis, bestBin + 1, s.bins, 6 * right);
         } else {
-            mid = start + count / 2;   // all centroids coincide: any split is as good as another
+            mid = isHomogeneous(start, end) ? medianSplit(start, end, cb) : typeSplit(start, end);
+            rangeBox(start, mid, 6 * left);
+            rangeBox(mid, end, 6 * right);
         }
-        if (mid == start || mid == end) {
-            mid = start + count / 2;
+        assert mid > start && mid < end;
+        nodeA[node] = left;
+        nodeB[node] = right;
+        if (count >= PARALLEL_MIN && ForkJoinTask.inForkJoinPool()) {
+            Split l = new Split(left, start, mid, depth + 1);
+            l.fork();
+            split(right, mid, end, depth + 1);
+            l.join();
+        } else {
+            split(left, start, mid, depth + 1);
+            split(right, mid, end, depth + 1);
         }
-        int axis = Math.max(bestAxis, 0);
-        buildNode(start, mid, depth + 1);
-        int right = nodeCount;
-        buildNode(mid, end, depth + 1);
-        info[2 * node] = right;
-        info[2 * node + 1] = axis;
-        assert depth < Bvh.STACK_SIZE - 1 : "BVH deeper than the traversal stack";
     }
 
-    private int lastBestBin;
-
-    /** SAH cost (unnormalised: sum of area × count) of the best bin boundary on one axis. */
-    private double bestSplit(int start, int end, int axis, double cmin, double cext) {
-        Arrays.fill(binCount, 0);
-        for (int b = 0; b < BINS; b++) {
-            binBox[6 * b] = binBox[6 * b + 1] = binBox[6 * b + 2] = Double.POSITIVE_INFINITY;
-            binBox[6 * b + 3] = binBox[6 * b + 4] = binBox[6 * b + 5] = Double.NEGATIVE_INFINITY;
-        }
-        double scale = BINS / cext;
-        for (int k = start; k < end; k++) {
-            int p = primRef[k];
-            int b = bin(centroids[3 * p + axis], cmin, scale);
-            binCount[b]++;
-            for (int c = 0; c < 3; c++) {
-                binBox[6 * b + c] = Math.min(binBox[6 * b + c], boxes[6 * p + c]);
-                binBox[6 * b + 3 + c] = Math.max(binBox[6 * b + 3 + c], boxes[6 * p + 3 + c]);
+    /** Sorts every primitive of the range into its bin on each axis, growing the bins' boxes. */
+    private void binAll(Bins s, int start, int end, float[] cb) {
+        int nb = s.bins;
+        int[] count = s.count;
+        int[] box = s.box;
+        for (int axis = 0; axis < 3; axis++) {
+            for (int b = 0; b < nb; b++) {
+                count[axis * BINS + b] = 0;
+                int o = 6 * (axis * BINS + b);
+                box[o] = box[o + 1] = box[o + 2] = Integer.MAX_VALUE;
+                box[o + 3] = box[o + 4] = box[o + 5] = Integer.MIN_VALUE;
             }
         }
-        // Sweep from the right, then from the left; split after bin i puts bins 0..i on the left.
-        double[] acc = newEmptyBox();
-        int accCount = 0;
-        for (int b = BINS - 1; b > 0; b--) {
-            grow(acc, binBox, b);
-            accCount += binCount[b];
-            rightArea[b] = area(acc);
-            rightCount[b] = accCount;
+        float sx = binScale(cb, 0, nb), sy = binScale(cb, 1, nb), sz = binScale(cb, 2, nb);
+        for (int k = start; k < end; k++) {
+            int p = k;
+            int bx = bin(centroid[3 * p], cb[0], sx, nb);
+            int by = BINS + bin(centroid[3 * p + 1], cb[1], sy, nb);
+            int bz = 2 * BINS + bin(centroid[3 * p + 2], cb[2], sz, nb);
+            count[bx]++;
+            count[by]++;
+            count[bz]++;
+            int q = 6 * p;
+            int x0 = primKey[q], y0 = primKey[q + 1], z0 = primKey[q + 2], x1 = primKey[q + 3], y1 = primKey[q + 4], z1 = primKey[q + 5];
+            grow(box, 6 * bx, x0, y0, z0, x1, y1, z1);
+            grow(box, 6 * by, x0, y0, z0, x1, y1, z1);
+            grow(box, 6 * bz, x0, y0, z0, x1, y1, z1);
         }
-        acc = newEmptyBox();
-        accCount = 0;
-        double best = Double.POSITIVE_INFINITY;
-        lastBestBin = -1;
-        for (int b = 0; b < BINS - 1; b++) {
-            grow(acc, binBox, b);
-            accCount += binCount[b];
-            if (accCount == 0 || rightCount[b + 1] == 0) {
+    }
+
+    /** Grows the key box at {@code o}: integer minima and maxima of ordered keys are those of the floats. */
+    private static void grow(int[] b, int o, int x0, int y0, int z0, int x1, int y1, int z1) {
+        b[o] = Math.min(b[o], x0);
+        b[o + 1] = Math.min(b[o + 1], y0);
+        b[o + 2] = Math.min(b[o + 2], z0);
+        b[o + 3] = Math.max(b[o + 3], x1);
+        b[o + 4] = Math.max(b[o + 4], y1);
+        b[o + 5] = Math.max(b[o + 5], z1);
+    }
+
+    /**
+     * A float as an int that orders like the float (for all but NaN): the bits of a non-negative
+     * float, the bits with the magnitude bits flipped for a negative one. Binning then takes
+     * box bounds with integer minima and maxima, one conditional move each.
+     */
+    static int key(float f) {
+        int b = Float.floatToRawIntBits(f);
+        return b ^ ((b >> 31) >>> 1);
+    }
+
+    /** The float of a {@link #key}. */
+    static float unkey(int k) {
+        return Float.intBitsToFloat(k ^ ((k >> 31) >>> 1));
+    }
+
+    private static float binScale(float[] cb, int axis, int bins) {
+        float ext = cb[3 + axis] - cb[axis];
+        return ext > 0 ? bins / ext : 0;
+    }
+
+    /**
+     * SAH cost (unnormalised: Σ area × count) of the best bin boundary on one axis, if below
+     * {@code bound}, else +∞; records the bin in {@code s.lastBin}.
+     */
+    private static double sweep(Bins s, int axis, double bound) {
+        int nb = s.bins, base = axis * BINS;
+        int[] box = s.box;
+        int x0 = Integer.MAX_VALUE, y0 = x0, z0 = x0, x1 = Integer.MIN_VALUE, y1 = x1, z1 = x1;
+        int acc = 0;
+        for (int b = nb - 1; b > 0; b--) {
+            int o = 6 * (base + b);
+            x0 = Math.min(x0, box[o]);
+            y0 = Math.min(y0, box[o + 1]);
+            z0 = Math.min(z0, box[o + 2]);
+            x1 = Math.max(x1, box[o + 3]);
+            y1 = Math.max(y1, box[o + 4]);
+            z1 = Math.max(z1, box[o + 5]);
+            acc += s.count[base + b];
+            s.rightArea[b] = acc == 0 ? 0 : keyArea(x0, y0, z0, x1, y1, z1);
+            s.rightCount[b] = acc;
+        }
+        x0 = y0 = z0 = Integer.MAX_VALUE;
+        x1 = y1 = z1 = Integer.MIN_VALUE;
+        acc = 0;
+        double best = bound;
+        s.lastBin = -1;
+        for (int b = 0; b < nb - 1; b++) {
+            int o = 6 * (base + b);
+            x0 = Math.min(x0, box[o]);
+            y0 = Math.min(y0, box[o + 1]);
+            z0 = Math.min(z0, box[o + 2]);
+            x1 = Math.max(x1, box[o + 3]);
+            y1 = Math.max(y1, box[o + 4]);
+            z1 = Math.max(z1, box[o + 5]);
+            acc += s.count[base + b];
+            int right = s.rightCount[b + 1];
+            if (acc == 0 || right == 0) {
                 continue;
             }
-            double cost = area(acc) * accCount + rightArea[b + 1] * rightCount[b + 1];
+            double cost = keyArea(x0, y0, z0, x1, y1, z1) * acc + s.rightArea[b + 1] * right;
             if (cost < best) {
                 best = cost;
-                lastBestBin = b;
+                s.lastBin = b;
             }
         }
-        return best;
+        return s.lastBin >= 0 ? best : Double.POSITIVE_INFINITY;
+    }
+
+    private static double keyArea(int x0, int y0, int z0, int x1, int y1, int z1) {
+        return area(unkey(x0), unkey(y0), unkey(z0), unkey(x1), unkey(y1), unkey(z1));
+    }
+
+    /** The union of bins [from, to) on one axis, written to nodeBox at {@code dest}. */
+    private void binsBox(Bins s, int axis, int from, int to, int dest) {
+        int[] b = {Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE};
+        for (int k = from; k < to; k++) {
+            int o = 6 * (axis * BINS + k);
+            grow(b, 0, s.box[o], s.box[o + 1], s.box[o + 2], s.box[o + 3], s.box[o + 4], s.box[o + 5]);
+        }
+        for (int c = 0; c < 6; c++) {
+            nodeBox[dest + c] = unkey(b[c]);
+        }
     }
 
     /** Moves primitives whose centroid falls in bins 0..splitBin to the front; returns the split index. */
-    private int partition(int start, int end, int axis, double cmin, double cext, int splitBin) {
-        double scale = BINS / cext;
+    private int partition(int start, int end, int axis, float cmin, float scale, int bins, int splitBin) {
         int i = start;
         int j = end - 1;
         while (i <= j) {
-            if (bin(centroids[3 * primRef[i] + axis], cmin, scale) <= splitBin) {
+            if (bin(centroid[3 * i + axis], cmin, scale, bins) <= splitBin) {
                 i++;
             } else {
-                int tmp = primRef[i];
-                primRef[i] = primRef[j];
-                primRef[j] = tmp;
-                j--;
+                swap(i, j--);
             }
         }
         return i;
     }
 
-    private static int bin(double c, double cmin, double scale) {
-        int b = (int) ((c - cmin) * scale);
-        return b < 0 ? 0 : (b >= BINS ? BINS - 1 : b);
+    /** The bin of a centroid: c ≥ cmin, so only the upper end needs clamping (a centroid on the upper bound). */
+    private static int bin(float c, float cmin, float scale, int bins) {
+        return Math.min((int) ((c - cmin) * scale), bins - 1);
+    }
+
+    /** Splits at the median centroid of the longest centroid axis (quickselect); bounds the depth. */
+    private int medianSplit(int start, int end, float[] cb) {
+        int axis = 0;
+        for (int c = 1; c < 3; c++) {
+            if (cb[3 + c] - cb[c] > cb[3 + axis] - cb[axis]) {
+                axis = c;
+            }
+        }
+        int mid = (start + end) >>> 1;
+        int lo = start, hi = end - 1;
+        while (lo < hi) {
+            float pivot = centroid[3 * ((lo + hi) >>> 1) + axis];
+            int i = lo, j = hi;
+            while (i <= j) {
+                while (centroid[3 * i + axis] < pivot) {
+                    i++;
+                }
+                while (centroid[3 * j + axis] > pivot) {
+                    j--;
+                }
+                if (i <= j) {
+                    swap(i++, j--);
+                }
+            }
+            if (mid <= j) {
+                hi = j;
+            } else if (mid >= i) {
+                lo = i;
+            } else {
+                break;
+            }
+        }
+        return mid;
+    }
+
+    /** Moves triangles before spheres; returns the index of the first sphere. */
+    private int typeSplit(int start, int end) {
+        int i = start;
+        for (int k = start; k < end; k++) {
+            if (ref[k] < triangleCount) {
+                swap(i++, k);
+            }
+        }
+        return i;
+    }
+
+    /** Swaps the references at positions i and j with their boxes and centroids. */
+    private void swap(int i, int j) {
+        int r = ref[i];
+        ref[i] = ref[j];
+        ref[j] = r;
+        for (int c = 0; c < 6; c++) {
+            int t = primKey[6 * i + c];
+            primKey[6 * i + c] = primKey[6 * j + c];
+            primKey[6 * j + c] = t;
+        }
+        for (int c = 0; c < 3; c++) {
+            float t = centroid[3 * i + c];
+            centroid[3 * i + c] = centroid[3 * j + c];
+            centroid[3 * j + c] = t;
+        }
+    }
+
+    private boolean isHomogeneous(int start, int end) {
+        boolean first = ref[start] < triangleCount;
+        for (int k = start + 1; k < end; k++) {
+            if ((ref[k] < triangleCount) != first) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private void makeLeaf(int node, int start, int count) {
-        info[2 * node] = start;
-        info[2 * node + 1] = count << 2;
+        nodeA[node] = start;
+        nodeB[node] = ~count;
     }
 
-    private double[] rangeBounds(int start, int end) {
-        double[] b = newEmptyBox();
+    private void rangeBox(int start, int end, int dest) {
+        int[] b = {Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE};
         for (int k = start; k < end; k++) {
-            grow(b, boxes, primRef[k]);
+            int q = 6 * k;
+            grow(b, 0, primKey[q], primKey[q + 1], primKey[q + 2], primKey[q + 3], primKey[q + 4], primKey[q + 5]);
         }
-        return b;
-    }
-
-    /** Stores the box rounded outwards to float, so that it still encloses its primitives. */
-    private void writeBounds(int node, double[] b) {
-        int o = 6 * node;
-        for (int c = 0; c < 3; c++) {
-            bounds[o + c] = roundDown(b[c]);
-            bounds[o + 3 + c] = roundUp(b[3 + c]);
+        for (int c = 0; c < 6; c++) {
+            nodeBox[dest + c] = unkey(b[c]);
         }
     }
 
-    private static float roundDown(double v) {
+    // ---- small box helpers on float[6] slices ----------------------------------------------------
+
+    private static void setEmpty(float[] b) {
+        b[0] = b[1] = b[2] = Float.POSITIVE_INFINITY;
+        b[3] = b[4] = b[5] = Float.NEGATIVE_INFINITY;
+    }
+
+    static double area(float[] b, int o) {
+        return area(b[o], b[o + 1], b[o + 2], b[o + 3], b[o + 4], b[o + 5]);
+    }
+
+    private static double area(float x0, float y0, float z0, float x1, float y1, float z1) {
+        double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
+        if (!(dx >= 0 && dy >= 0 && dz >= 0)) {
+            return 0;
+        }
+        return 2 * (dx * dy + dy * dz + dz * dx);
+    }
+
+    static float roundDown(double v) {
         float f = (float) v;
         return f > v ? Math.nextDown(f) : f;
     }
 
-    private static float roundUp(double v) {
+    static float roundUp(double v) {
         float f = (float) v;
         return f < v ? Math.nextUp(f) : f;
-    }
-
-    private static double[] newEmptyBox() {
-        return new double[] {
-            Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
-            Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-    }
-
-    private static void grow(double[] acc, double[] src, int index) {
-        int o = 6 * index;
-        for (int c = 0; c < 3; c++) {
-            acc[c] = Math.min(acc[c], src[o + c]);
-            acc[3 + c] = Math.max(acc[3 + c], src[o + 3 + c]);
-        }
-    }
-
-    private static double area(double[] b) {
-        double dx = b[3] - b[0], dy = b[4] - b[1], dz = b[5] - b[2];
-        if (dx < 0 || dy < 0 || dz < 0) {
-            return 0;
-        }
-        return 2 * (dx * dy + dy * dz + dz * dx);
     }
 }

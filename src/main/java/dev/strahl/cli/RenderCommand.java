@@ -111,6 +111,11 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     DebugOption debug;
 
+    @Option(names = "--stats", paramLabel = "FILE.json", description = "Also write the render's figures (time, samples/s, rays/s, load and BVH build time) as JSON.")
+    Path statsFile;
+
+    private double loadSeconds;
+
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
@@ -146,12 +151,17 @@ final class RenderCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--fov: the field of view must be in (0, 180) degrees, got " + fov);
         }
         checkOutput(output, "output");
+        if (statsFile != null) {
+            checkWritable(statsFile, "--stats");
+        }
         Path checkpointFile = checkpoint != null ? checkpoint : resume;
         if (checkpointFile != null) {
             checkCheckpointFile(checkpointFile);
         }
         HeapCheck.checkFilm(width, height);
+        long loadStart = System.nanoTime();
         Scene loaded = load();
+        loadSeconds = (System.nanoTime() - loadStart) * 1e-9 - loaded.bvhBuildSeconds();
         Scene s = loaded.withCamera(camera(loaded.camera()));
         settings = withSceneFile(loaded.settings());
         if (settings.width() != width || settings.height() != height) {
@@ -272,6 +282,13 @@ final class RenderCommand implements Callable<Integer> {
             ImageWriters.write(film, output);
         } catch (IOException | UncheckedIOException e) {
             throw new RenderFailure("cannot write " + output + ": " + e.getMessage(), e);
+        }
+        if (statsFile != null) {
+            try {
+                StatsFile.write(statsFile, stats, settings, loadSeconds, s.bvhBuildSeconds());
+            } catch (IOException e) {
+                throw new RenderFailure("cannot write " + statsFile + ": " + e.getMessage(), e);
+            }
         }
         boolean savedCheckpoint = saver != null && saver.saveFinal(stats);
         irq.written();

@@ -38,6 +38,70 @@ public final class Geometry {
         this.sphereCount = b.sphereCount;
     }
 
+    private Geometry(Geometry g, int[] order) {
+        this.triangleCount = g.triangleCount;
+        this.sphereCount = g.sphereCount;
+        this.tri = new int[g.tri.length];
+        this.triMaterial = new int[g.triMaterial.length];
+        this.triFlags = new byte[g.triFlags.length];
+        this.sph = new double[g.sph.length];
+        this.sphMaterial = new int[g.sphMaterial.length];
+        // Vertices are renumbered in the order the reordered triangles first use them, so that
+        // neighbouring triangles (of one leaf) find their vertices close together in memory;
+        // vertices no triangle uses are dropped.
+        int vertexCount = g.pos.length / 3;
+        int[] newVertex = new int[vertexCount];
+        java.util.Arrays.fill(newVertex, -1);
+        int used = 0;
+        boolean[] seen = new boolean[order.length];
+        for (int i = 0; i < order.length; i++) {
+            int old = order[i];
+            if (old < 0 || old >= order.length || seen[old] || (i < triangleCount) != (old < triangleCount)) {
+                throw new IllegalArgumentException("not a permutation keeping triangles before spheres: position " + i + " holds " + old);
+            }
+            seen[old] = true;
+            if (i < triangleCount) {
+                for (int k = 0; k < 3; k++) {
+                    int v = g.tri[3 * old + k];
+                    if (newVertex[v] < 0) {
+                        newVertex[v] = used++;
+                    }
+                    tri[3 * i + k] = newVertex[v];
+                }
+                triMaterial[i] = g.triMaterial[old];
+                triFlags[i] = g.triFlags[old];
+            } else {
+                int s = i - triangleCount, so = old - triangleCount;
+                System.arraycopy(g.sph, 4 * so, sph, 4 * s, 4);
+                sphMaterial[s] = g.sphMaterial[so];
+            }
+        }
+        this.pos = new float[3 * used];
+        this.nrm = g.nrm == null ? null : new float[3 * used];
+        for (int v = 0; v < vertexCount; v++) {
+            int n = newVertex[v];
+            if (n >= 0) {
+                System.arraycopy(g.pos, 3 * v, pos, 3 * n, 3);
+                if (nrm != null) {
+                    System.arraycopy(g.nrm, 3 * v, nrm, 3 * n, 3);
+                }
+            }
+        }
+    }
+
+    /**
+     * The same primitives in another order: primitive i of the result is primitive
+     * {@code order[i]} of this one. Triangles must stay before spheres. Vertices are renumbered in
+     * the order of first use (unused ones dropped). Acceleration structures use it to store
+     * primitives in the order of their leaves.
+     */
+    public Geometry permute(int[] order) {
+        if (order.length != primitiveCount()) {
+            throw new IllegalArgumentException("order has " + order.length + " entries for " + primitiveCount() + " primitives");
+        }
+        return new Geometry(this, order);
+    }
+
     public int triangleCount() {
         return triangleCount;
     }
@@ -66,6 +130,26 @@ public final class Geometry {
     public long byteSize() {
         return 4L * pos.length + 4L * tri.length + (nrm == null ? 0 : 4L * nrm.length)
                 + 4L * triMaterial.length + triFlags.length + 8L * sph.length + 4L * sphMaterial.length;
+    }
+
+    /**
+     * The arrays behind the triangles, not copies, for acceleration structures that test
+     * triangles in their own inner loops (with the arithmetic of {@link #intersect}): vertex
+     * positions (x, y, z per vertex), vertex indices (three per triangle) and per-triangle flags
+     * ({@link #CLOSED}). Never modify them.
+     */
+    public float[] positionArray() {
+        return pos;
+    }
+
+    /** See {@link #positionArray()}. */
+    public int[] indexArray() {
+        return tri;
+    }
+
+    /** See {@link #positionArray()}. */
+    public byte[] flagArray() {
+        return triFlags;
     }
 
     /**
@@ -137,113 +221,54 @@ public final class Geometry {
      * {@link #CLOSED} are ignored.
      */
     public boolean intersect(int prim, Ray ray, Hit hit, boolean cullBackFaces) {
-        return prim < triangleCount
-                ? intersectTriangle(prim, ray, hit, cullBackFaces && (triFlags[prim] & CLOSED) != 0)
-                : intersectSphere(prim, ray, hit);
+        return intersect(prim, 1, ray, hit, cullBackFaces);
+    }
+
+    /**
+     * The closest hit among the primitives {@code first .. first + count - 1}, which are either
+     * all triangles or all spheres (as in a BVH leaf); on a hit closer than {@code ray.tMax},
+     * records it in {@code hit} and shortens {@code ray.tMax}. The same arithmetic as the
+     * one-primitive test, so that a leaf and a loop over all primitives agree bit for bit.
+     */
+    public boolean intersect(int first, int count, Ray ray, Hit hit, boolean cullBackFaces) {
+        if (first < triangleCount) {
+            assert first + count <= triangleCount : "range mixes triangles and spheres";
+            return Intersections.triangles(pos, tri, triFlags, first, first + count, ray, hit, cullBackFaces);
+        }
+        boolean found = false;
+        for (int prim = first, end = first + count; prim < end; prim++) {
+            double t = Intersections.sphere(sph, prim - triangleCount, ray);
+            if (t > 0) {
+                ray.tMax = t;
+                hit.t = t;
+                hit.prim = prim;
+                hit.b1 = 0;
+                hit.b2 = 0;
+                found = true;
+            }
+        }
+        return found;
     }
 
     /** Whether the primitive blocks the ray somewhere in (0, tMax). Never culls. */
     public boolean occludes(int prim, Ray ray) {
-        return prim < triangleCount ? triangleT(prim, ray, false, null) > 0 : sphereT(prim - triangleCount, ray) > 0;
-    }
-
-    private boolean intersectTriangle(int prim, Ray ray, Hit hit, boolean cull) {
-        double t = triangleT(prim, ray, cull, hit);
-        if (t <= 0) {
-            return false;
-        }
-        ray.tMax = t;
-        hit.t = t;
-        hit.prim = prim;
-        return true;
+        return occludes(prim, 1, ray);
     }
 
     /**
-     * Distance to the triangle along the ray if in (0, tMax), else -1; on a hit, the barycentrics
-     * go to {@code bary} unless it is null. Möller &amp; Trumbore, "Fast, Minimum Storage
-     * Ray/Triangle Intersection", JGT 1997.
+     * Whether any of the primitives {@code first .. first + count - 1} (all triangles or all
+     * spheres) blocks the ray in (0, tMax), with the arithmetic of the closest-hit test. Never culls.
      */
-    private double triangleT(int prim, Ray ray, boolean cull, Hit bary) {
-        int i0 = 3 * tri[3 * prim], i1 = 3 * tri[3 * prim + 1], i2 = 3 * tri[3 * prim + 2];
-        double v0x = pos[i0], v0y = pos[i0 + 1], v0z = pos[i0 + 2];
-        double e1x = pos[i1] - v0x, e1y = pos[i1 + 1] - v0y, e1z = pos[i1 + 2] - v0z;
-        double e2x = pos[i2] - v0x, e2y = pos[i2 + 1] - v0y, e2z = pos[i2 + 2] - v0z;
-        double dx = ray.d.x, dy = ray.d.y, dz = ray.d.z;
-        double px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
-        double det = e1x * px + e1y * py + e1z * pz;
-        // det = -d·(e1×e2): positive when the ray meets the front face.
-        if (cull ? det <= 0 : det == 0) {
-            return -1;
+    public boolean occludes(int first, int count, Ray ray) {
+        if (first < triangleCount) {
+            return Intersections.trianglesOcclude(pos, tri, first, first + count, ray);
         }
-        double inv = 1 / det;
-        double tx = ray.o.x - v0x, ty = ray.o.y - v0y, tz = ray.o.z - v0z;
-        double b1 = (tx * px + ty * py + tz * pz) * inv;
-        if (b1 < 0 || b1 > 1) {
-            return -1;
+        for (int prim = first, end = first + count; prim < end; prim++) {
+            if (Intersections.sphere(sph, prim - triangleCount, ray) > 0) {
+                return true;
+            }
         }
-        double qx = ty * e1z - tz * e1y, qy = tz * e1x - tx * e1z, qz = tx * e1y - ty * e1x;
-        double b2 = (dx * qx + dy * qy + dz * qz) * inv;
-        if (b2 < 0 || b1 + b2 > 1) {
-            return -1;
-        }
-        double t = (e2x * qx + e2y * qy + e2z * qz) * inv;
-        if (!(t > 0 && t < ray.tMax)) {
-            return -1;
-        }
-        if (bary != null) {
-            bary.b1 = b1;
-            bary.b2 = b2;
-        }
-        return t;
-    }
-
-    private boolean intersectSphere(int prim, Ray ray, Hit hit) {
-        double t = sphereT(prim - triangleCount, ray);
-        if (t <= 0) {
-            return false;
-        }
-        ray.tMax = t;
-        hit.t = t;
-        hit.prim = prim;
-        hit.b1 = 0;
-        hit.b2 = 0;
-        return true;
-    }
-
-    /**
-     * Nearest sphere distance in (0, tMax), else -1. Uses the numerically stable form of the
-     * quadratic (Haines et al., "Precision Improvements for Ray/Sphere Intersection", Ray Tracing
-     * Gems, 2019, ch. 7): the discriminant from the distance of the centre to the ray line.
-     */
-    private double sphereT(int s, Ray ray) {
-        int k = 4 * s;
-        double r = sph[k + 3];
-        double fx = ray.o.x - sph[k], fy = ray.o.y - sph[k + 1], fz = ray.o.z - sph[k + 2];
-        double dx = ray.d.x, dy = ray.d.y, dz = ray.d.z;
-        double b = -(fx * dx + fy * dy + fz * dz);                  // d is unit length
-        double lx = fx + b * dx, ly = fy + b * dy, lz = fz + b * dz;
-        double discr = r * r - (lx * lx + ly * ly + lz * lz);
-        if (discr < 0) {
-            return -1;
-        }
-        double c = fx * fx + fy * fy + fz * fz - r * r;
-        double q = b + Math.copySign(Math.sqrt(discr), b);
-        double t0, t1;
-        if (q == 0) {
-            t0 = t1 = 0;
-        } else {
-            t0 = c / q;
-            t1 = q;
-        }
-        if (t0 > t1) {
-            double tmp = t0;
-            t0 = t1;
-            t1 = tmp;
-        }
-        if (t0 > 0 && t0 < ray.tMax) {
-            return t0;
-        }
-        return t1 > 0 && t1 < ray.tMax ? t1 : -1;
+        return false;
     }
 
     /** Fills {@code sp} with the surface data of the hit (position, normals, material). */

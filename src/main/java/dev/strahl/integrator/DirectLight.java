@@ -49,7 +49,8 @@ final class DirectLight {
              Rgb.Mutable beta, Rgb.Mutable out) {
         double scale = 1.0 / n;
         for (int i = 0; i < n; i++) {
-            double uLight = rng.nextDouble(), u1 = rng.nextDouble(), u2 = rng.nextDouble();
+            // The point on the light first: a pair of dimensions of a stratified sampler.
+            double u1 = rng.nextDouble(), u2 = rng.nextDouble(), uLight = rng.nextDouble();
             if (!lights.sample(sp.p, uLight, u1, u2, lightPoint, ls)) {
                 continue;
             }

@@ -23,6 +23,8 @@ import org.joml.Vector3d;
  */
 public final class PathTracer implements Integrator {
     static final int RR_DEPTH = 5;
+    /** Random numbers one light sample takes (point on the light, then the light's choice). */
+    private static final int LIGHT_DIMENSIONS = 3;
 
     /** How light reaching a surface directly from an emitter is estimated. */
     public enum Strategy {
@@ -98,6 +100,8 @@ public final class PathTracer implements Integrator {
                 Bsdf bsdf = s.bsdf;
                 if (!bsdf.isDelta() && !lights.isEmpty() && strategy != Strategy.BSDF) {
                     tracer.direct.add(bsdf, s.sp, s.frame, s.woLocal, rng, 1, strategy == Strategy.MIS ? 1 : 0, beta, out);
+                } else {
+                    rng.skip(LIGHT_DIMENSIONS);        // keeps the BSDF sample on its pair of dimensions
                 }
 
                 // Continue the path by sampling the BSDF.

@@ -58,6 +58,8 @@ public final class RenderJob implements AutoCloseable {
     /** The mean image at the end of the last completed pass: what {@link #snapshot()} returns. */
     private volatile Image lastPass;
     private final long startNanos;
+    /** Stratified sample mode of {@link Rng} (the default), or plain streams with {@code -Dstrahl.sampler=independent}. */
+    private final boolean stratified = !"independent".equals(System.getProperty("strahl.sampler"));
 
     private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener, Film film) {
         this.settings = settings;
@@ -440,7 +442,11 @@ public final class RenderJob implements AutoCloseable {
                     int s0 = Math.max(firstSample, film.sampleCountAt(pixel));
                     rowSamples += Math.max(0, endSample - s0);
                     for (int s = s0; s < endSample; s++) {
-                        w.rng.seed(Rng.streamSeed(seed, x, y, s));
+                        if (stratified) {
+                            w.rng.startSample(seed, x, y, s);
+                        } else {
+                            w.rng.seed(Rng.streamSeed(seed, x, y, s));
+                        }
                         cameraRays.generate(x + w.rng.nextDouble(), y + w.rng.nextDouble(), w.ray);
                         w.integrator.radiance(w.ray, w.rng, w.radiance);
                         if (w.radiance.isFinite()) {

@@ -367,6 +367,7 @@ public final class Scene {
             long start = System.nanoTime();
             Bvh bvh = Bvh.build(g);
             double buildSeconds = (System.nanoTime() - start) * 1e-9;
+            g = bvh.geometry();                 // the same primitives, reordered into the BVH's leaves
             Rgb[] emission = new Rgb[materials.size()];
             for (int i = 0; i < emission.length; i++) {
                 emission[i] = materials.get(i).emission();

@@ -250,8 +250,14 @@ class BvhTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void closestHitEqualsBruteForce(Scene scene) {
-        Geometry g = scene.geometry();
-        Bvh bvh = Bvh.build(g);
+        closestHitEqualsBruteForce(scene, false);
+        assertThat(SimdNodes.AVAILABLE).as("the tests run with the Vector API module, to cover its path too").isTrue();
+        closestHitEqualsBruteForce(scene, true);
+    }
+
+    private void closestHitEqualsBruteForce(Scene scene, boolean simd) {
+        Bvh bvh = Bvh.build(scene.geometry()).withSimd(simd);
+        Geometry g = bvh.geometry();
         TraversalStack stack = Bvh.newStack();
         SplittableRandom random = new SplittableRandom(scene.name().hashCode() + g.primitiveCount());
         Aabb box = g.bounds();
@@ -264,8 +270,8 @@ class BvhTest {
                 Hit hb = new Hit().reset(), hf = new Hit().reset();
                 boolean expected = bruteIntersect(g, rf, hf, cull);
                 boolean actual = bvh.intersect(rb, hb, stack, cull);
-                String what = "%s, cull %s, ray %d %s";        // formatted only on failure
-                Object[] args = {scene, cull, i, r};
+                String what = "%s, simd %s, cull %s, ray %d %s";        // formatted only on failure
+                Object[] args = {scene, simd, cull, i, r};
                 assertThat(actual).as(what, args).isEqualTo(expected);
                 assertThat(rb.o).isEqualTo(r.o);
                 assertThat(rb.d).isEqualTo(r.d);
@@ -283,7 +289,7 @@ class BvhTest {
                     // A tie: the BVH's primitive alone must be hit at the same distance.
                     Hit alone = new Hit().reset();
                     assertThat(g.intersect(hb.prim, copy(r, r.tMax), alone, cull)).as(what, args).isTrue();
-                    assertThat(alone.t).as(what + ": prim %d vs brute force prim %d", scene, cull, i, r, hb.prim, hf.prim).isCloseTo(hf.t, within(1e-12 * hf.t));
+                    assertThat(alone.t).as(what + ": prim %d vs brute force prim %d", scene, simd, cull, i, r, hb.prim, hf.prim).isCloseTo(hf.t, within(1e-12 * hf.t));
                 } else {
                     assertThat(hb.b1).as(what, args).isEqualTo(hf.b1);
                     assertThat(hb.b2).as(what, args).isEqualTo(hf.b2);
@@ -296,8 +302,13 @@ class BvhTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void anyHitEqualsBruteForceForFiniteTMax(Scene scene) {
-        Geometry g = scene.geometry();
-        Bvh bvh = Bvh.build(g);
+        anyHitEqualsBruteForceForFiniteTMax(scene, false);
+        anyHitEqualsBruteForceForFiniteTMax(scene, true);
+    }
+
+    private void anyHitEqualsBruteForceForFiniteTMax(Scene scene, boolean simd) {
+        Bvh bvh = Bvh.build(scene.geometry()).withSimd(simd);
+        Geometry g = bvh.geometry();
         TraversalStack stack = Bvh.newStack();
         SplittableRandom random = new SplittableRandom(~scene.name().hashCode() + g.primitiveCount());
         Aabb box = g.bounds();
@@ -308,7 +319,7 @@ class BvhTest {
             double tMax = random.nextInt(8) == 0 ? Double.POSITIVE_INFINITY : random.nextDouble(0, 2 * Math.max(box.diagonal(), 0.1));
             boolean expected = bruteOccluded(g, copy(r, tMax));
             Ray rb = copy(r, tMax);
-            assertThat(bvh.occluded(rb, stack)).as("%s, ray %d %s, tMax %s", scene, i, r, tMax).isEqualTo(expected);
+            assertThat(bvh.occluded(rb, stack)).as("%s, simd %s, ray %d %s, tMax %s", scene, simd, i, r, tMax).isEqualTo(expected);
             assertThat(rb.tMax).as("occlusion queries leave the ray alone").isEqualTo(tMax);
             occluded += expected ? 1 : 0;
         }
@@ -321,15 +332,17 @@ class BvhTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void nodesBoundTheirPrimitivesAndLeavesAreSmall(Scene scene) {
-        Geometry g = scene.geometry();
-        Bvh bvh = Bvh.build(g);
+        Bvh bvh = Bvh.build(scene.geometry());
+        Geometry g = bvh.geometry();
         Bvh.Layout layout = bvh.layout();
         int n = g.primitiveCount();
-        assertThat(bvh.nodeCount()).isBetween(1, 2 * n - 1);
+        assertThat(bvh.nodeCount()).isBetween(1, Math.max(1, n - 1));
+        assertThat(layout.nodes()).hasSize(Bvh.NODE * bvh.nodeCount());
         boolean[] visited = new boolean[bvh.nodeCount()];
         int[] primSeen = new int[n];
-        int maxDepth = checkNode(g, layout, 0, 0, visited, primSeen);
-        assertThat(maxDepth).as("depth within the traversal stack").isLessThan(Bvh.STACK_SIZE);
+        Aabb all = new Aabb();
+        int maxDepth = checkNode(g, layout, 0, 1, visited, primSeen, all);
+        assertThat(maxDepth).as("depth within the limit the traversal stack is sized for").isLessThanOrEqualTo(Bvh.MAX_DEPTH);
         for (int i = 0; i < visited.length; i++) {
             assertThat(visited[i]).as("node %d reachable", i).isTrue();
         }
@@ -338,51 +351,68 @@ class BvhTest {
         }
     }
 
-    /** Checks the subtree at {@code node}; returns its depth. Fills in which nodes and primitives it saw. */
-    private static int checkNode(Geometry g, Bvh.Layout layout, int node, int depth, boolean[] visited, int[] primSeen) {
-        assertThat(visited[node]).as("node %d visited twice", node).isFalse();
-        visited[node] = true;
-        float[] b = layout.bounds();
-        int first = layout.info()[2 * node], count = layout.info()[2 * node + 1] >>> 2;
-        Aabb subtree = new Aabb();
-        int deepest;
-        if (count > 0) {
-            assertThat(count).as("leaf size").isLessThanOrEqualTo(BvhBuilder.MAX_LEAF);
-            for (int k = first; k < first + count; k++) {
-                int prim = layout.primRef()[k];
-                primSeen[prim]++;
-                g.includeBounds(prim, subtree);
-            }
-            deepest = depth;
-        } else {
-            assertThat(first).as("right child of %d", node).isGreaterThan(node + 1).isLessThan(visited.length);
-            deepest = Math.max(checkNode(g, layout, node + 1, depth + 1, visited, primSeen),
-                    checkNode(g, layout, first, depth + 1, visited, primSeen));
-            for (int child : new int[] {node + 1, first}) {
-                for (int c = 0; c < 3; c++) {
-                    assertThat(b[6 * child + c]).as("child min inside parent").isGreaterThanOrEqualTo(b[6 * node + c]);
-                    assertThat(b[6 * child + 3 + c]).as("child max inside parent").isLessThanOrEqualTo(b[6 * node + 3 + c]);
-                }
-            }
-            subtreeBounds(g, layout, node, subtree);
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("scenes")
+    void reorderedGeometryHoldsTheSamePrimitives(Scene scene) {
+        Geometry original = scene.geometry();
+        Geometry g = Bvh.build(original).geometry();
+        assertThat(g.triangleCount()).isEqualTo(original.triangleCount());
+        assertThat(g.sphereCount()).isEqualTo(original.sphereCount());
+        List<String> before = new ArrayList<>(), after = new ArrayList<>();
+        for (int p = 0; p < original.primitiveCount(); p++) {
+            before.add(describe(original, p));
+            after.add(describe(g, p));
         }
-        for (int c = 0; c < 3; c++) {
-            assertThat((double) b[6 * node + c]).as("node %d min[%d]", node, c).isLessThanOrEqualTo(subtree.min(c));
-            assertThat((double) b[6 * node + 3 + c]).as("node %d max[%d]", node, c).isGreaterThanOrEqualTo(subtree.max(c));
-        }
-        return deepest;
+        assertThat(after).containsExactlyInAnyOrderElementsOf(before);
     }
 
-    private static void subtreeBounds(Geometry g, Bvh.Layout layout, int node, Aabb dest) {
-        int first = layout.info()[2 * node], count = layout.info()[2 * node + 1] >>> 2;
-        if (count > 0) {
-            for (int k = first; k < first + count; k++) {
-                g.includeBounds(layout.primRef()[k], dest);
+    private static String describe(Geometry g, int prim) {
+        Aabb b = new Aabb();
+        g.includeBounds(prim, b);
+        return g.isTriangle(prim) + " " + b + " " + g.area(prim) + " " + g.material(prim) + " " + g.isClosed(prim);
+    }
+
+    /**
+     * Checks the subtree of node {@code node}: every child box encloses its subtree (the
+     * primitives of leaves), leaves are small, homogeneous ranges; returns the subtree's depth and
+     * grows {@code dest} by its primitives.
+     */
+    private static int checkNode(Geometry g, Bvh.Layout layout, int node, int depth, boolean[] visited, int[] primSeen, Aabb dest) {
+        assertThat(visited[node]).as("node %d visited twice", node).isFalse();
+        visited[node] = true;
+        int deepest = depth;
+        int used = 0;
+        for (int c = 0; c < 4; c++) {
+            int child = layout.child(node, c);
+            Aabb subtree = new Aabb();
+            if (child == Bvh.EMPTY) {
+                for (int k = 0; k < 3; k++) {
+                    assertThat(layout.box(node, k, c)).as("empty slot min").isEqualTo(Float.POSITIVE_INFINITY);
+                    assertThat(layout.box(node, 3 + k, c)).as("empty slot max").isEqualTo(Float.NEGATIVE_INFINITY);
+                }
+                continue;
             }
-        } else {
-            subtreeBounds(g, layout, node + 1, dest);
-            subtreeBounds(g, layout, first, dest);
+            used++;
+            if (child < 0) {
+                int first = Bvh.leafFirst(child), count = Bvh.leafCount(child);
+                assertThat(count).as("leaf size").isBetween(1, BvhBuilder.MAX_LEAF);
+                for (int p = first; p < first + count; p++) {
+                    assertThat(g.isTriangle(p)).as("leaf of one primitive kind").isEqualTo(g.isTriangle(first));
+                    primSeen[p]++;
+                    g.includeBounds(p, subtree);
+                }
+            } else {
+                assertThat(child).as("children follow their parent").isGreaterThan(node).isLessThan(visited.length);
+                deepest = Math.max(deepest, checkNode(g, layout, child, depth + 1, visited, primSeen, subtree));
+            }
+            for (int k = 0; k < 3; k++) {
+                assertThat((double) layout.box(node, k, c)).as("node %d child %d min[%d]", node, c, k).isLessThanOrEqualTo(subtree.min(k));
+                assertThat((double) layout.box(node, 3 + k, c)).as("node %d child %d max[%d]", node, c, k).isGreaterThanOrEqualTo(subtree.max(k));
+            }
+            dest.include(subtree);
         }
+        assertThat(used).as("children of node %d", node).isGreaterThanOrEqualTo(node == 0 ? 1 : 2);
+        return deepest;
     }
 
     @Test

@@ -26,8 +26,25 @@ import org.junit.jupiter.params.provider.ValueSource;
  * standard error of the block's mean luminance, and the two estimators' block means must differ
  * by less than {@value #Z_MAX} combined standard errors (a false alarm over all blocks has a
  * probability below 10⁻⁴; the seeds are fixed, so the test is deterministic).
+ *
+ * <p>The renders use independent random streams ({@code strahl.sampler=independent}), for which
+ * the spread of the runs is an honest standard error. The default stratified sampler shrinks the
+ * first bounce's error so much that what remains of BSDF-only paths, rare hits of the small light
+ * after later bounces, is heavy-tailed: eight runs then understate the error (at 64 spp a run the
+ * BSDF-only block means came out 7 standard errors below MIS, at 1024 spp they agreed, as they
+ * do with independent streams). The golden tests check the stratified sampler's image.
  */
 class EstimatorAgreementTest {
+    @org.junit.jupiter.api.BeforeAll
+    static void independentStreams() {
+        System.setProperty("strahl.sampler", "independent");
+    }
+
+    @org.junit.jupiter.api.AfterAll
+    static void defaultSampler() {
+        System.clearProperty("strahl.sampler");
+    }
+
     private static final int SIZE = 64;
     private static final int BLOCK = 8;
     private static final int RUNS = 8;

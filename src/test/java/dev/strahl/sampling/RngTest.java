@@ -170,6 +170,141 @@ class RngTest {
         return sab / Math.sqrt(saa * sbb);
     }
 
+    // ---------------------------------------------------------------------------------------------
+    // Sample mode: stratified dimensions, then the stream
+
+    private static double[] sampleDims(long seed, int px, int py, int sample, int count) {
+        Rng rng = new Rng().startSample(seed, px, py, sample);
+        double[] u = new double[count];
+        for (int i = 0; i < count; i++) {
+            u[i] = rng.nextDouble();
+        }
+        return u;
+    }
+
+    @Test
+    void sampleModeIsAFunctionOfSeedPixelAndSampleAlone() {
+        Rng reused = new Rng(99);
+        reused.nextDouble();
+        reused.startSample(7, 3, 4, 5).nextDouble();
+        reused.startSample(7, 13, 21, 5);
+        double[] again = new double[40];
+        for (int i = 0; i < again.length; i++) {
+            again[i] = reused.nextDouble();
+        }
+        assertThat(again).containsExactly(sampleDims(7, 13, 21, 5, 40));
+        double[] base = sampleDims(7, 13, 21, 5, Rng.STRATIFIED_DIMENSIONS);
+        for (double[] other : new double[][] {sampleDims(8, 13, 21, 5, base.length), sampleDims(7, 14, 21, 5, base.length),
+            sampleDims(7, 13, 22, 5, base.length), sampleDims(7, 13, 21, 6, base.length), sampleDims(7, 21, 13, 5, base.length)}) {
+            for (int d = 0; d < base.length; d++) {
+                assertThat(other[d]).as("dimension %d", d).isNotEqualTo(base[d]);
+            }
+        }
+    }
+
+    @Test
+    void eachPairOfDimensionsOfAPixelsSamplesIsAZeroMTwoNet() {
+        int m = 8, n = 1 << m;
+        for (int pixel = 0; pixel < 20; pixel++) {
+            double[][] u = new double[n][];
+            for (int s = 0; s < n; s++) {
+                u[s] = sampleDims(5, pixel, 2 * pixel, s, Rng.STRATIFIED_DIMENSIONS);
+            }
+            for (int pair = 0; pair < Rng.STRATIFIED_DIMENSIONS / 2; pair++) {
+                for (int k = 0; k <= m; k++) {
+                    boolean[] seen = new boolean[n];
+                    for (int s = 0; s < n; s++) {
+                        int cell = (int) (u[s][2 * pair] * (1 << k)) * (1 << (m - k)) + (int) (u[s][2 * pair + 1] * (1 << (m - k)));
+                        assertThat(seen[cell]).as("pixel %d, dimensions %d and %d, %d x %d grid", pixel, 2 * pair, 2 * pair + 1, 1 << k, 1 << (m - k)).isFalse();
+                        seen[cell] = true;
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
+    void stratifiedDimensionsAreUniformAndUncorrelatedAcrossPixelsAndPairs() {
+        // For one sample index, over many pixels: every dimension uniform (chi-square), and the first
+        // coordinates of different pairs uncorrelated, as are neighbouring pixels.
+        int width = 128, height = 128, n = width * height, dims = Rng.STRATIFIED_DIMENSIONS, bins = 32;
+        double[][] u = new double[dims][n], right = new double[dims][n];
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                double[] here = sampleDims(3, x, y, 7, dims), next = sampleDims(3, x + 1, y, 7, dims);
+                for (int d = 0; d < dims; d++) {
+                    u[d][y * width + x] = here[d];
+                    right[d][y * width + x] = next[d];
+                }
+            }
+        }
+        double bound = 5 / Math.sqrt(n);
+        double[] expected = new double[bins];
+        java.util.Arrays.fill(expected, (double) n / bins);
+        for (int d = 0; d < dims; d++) {
+            long[] count = new long[bins];
+            for (double v : u[d]) {
+                assertThat(v).isGreaterThanOrEqualTo(0).isLessThan(1);
+                count[(int) (v * bins)]++;
+            }
+            assertThat(dev.strahl.testing.ChiSquare.fromCounts(expected, count).pValue()).as("dimension %d", d).isGreaterThan(1e-5);
+            assertThat(correlation(u[d], right[d])).as("right neighbour, dimension %d", d).isCloseTo(0, within(bound));
+            if (d >= 2) {
+                assertThat(correlation(u[d], u[d - 2])).as("dimensions %d and %d", d - 2, d).isCloseTo(0, within(bound));
+            }
+        }
+    }
+
+    @Test
+    void afterTheStratifiedDimensionsTheSampleStreamContinues() {
+        double[] u = sampleDims(7, 13, 21, 5, Rng.STRATIFIED_DIMENSIONS + 3);
+        Rng stream = new Rng(Rng.streamSeed(7, 13, 21, 5));
+        for (int i = 0; i < 3; i++) {
+            assertThat(u[Rng.STRATIFIED_DIMENSIONS + i]).isEqualTo(stream.nextDouble());
+        }
+        Rng rng = new Rng().startSample(7, 13, 21, 5);
+        assertThat(rng.nextLong()).as("nextLong always draws from the stream").isEqualTo(new Rng(Rng.streamSeed(7, 13, 21, 5)).nextLong());
+        rng.seed(Rng.streamSeed(7, 13, 21, 5));
+        assertThat(rng.nextDouble()).as("seed() leaves sample mode").isEqualTo(new Rng(Rng.streamSeed(7, 13, 21, 5)).nextDouble());
+    }
+
+    @Test
+    void skippedDimensionsKeepTheLaterOnesInPlace() {
+        double[] all = sampleDims(2, 5, 6, 3, 12);
+        for (int skip = 0; skip < 6; skip++) {
+            Rng rng = new Rng().startSample(2, 5, 6, 3);
+            rng.nextDouble();
+            rng.skip(skip);
+            assertThat(rng.dimension()).isEqualTo(1 + skip);
+            for (int d = 1 + skip; d < 12; d++) {
+                assertThat(rng.nextDouble()).as("dimension %d after skipping %d", d, skip).isEqualTo(all[d]);
+            }
+        }
+    }
+
+    @Test
+    void stratificationLowersTheErrorOfAPixelEstimate() {
+        // The mean of f(u0, u1) = (u0 + u1)² over 64 samples of a pixel, over 500 pixels: the
+        // stratified dimensions' mean squared error is far below the stream's (whose MSE is Var(f)/64).
+        int pixels = 500, spp = 64;
+        double exact = 7 / 6.0;
+        double mseStratified = 0, mseStream = 0;
+        for (int p = 0; p < pixels; p++) {
+            double a = 0, b = 0;
+            for (int s = 0; s < spp; s++) {
+                Rng rng = new Rng().startSample(1, p, 0, s);
+                double u0 = rng.nextDouble(), u1 = rng.nextDouble();
+                a += (u0 + u1) * (u0 + u1);
+                Rng plain = new Rng(Rng.streamSeed(1, p, 0, s));
+                double v0 = plain.nextDouble(), v1 = plain.nextDouble();
+                b += (v0 + v1) * (v0 + v1);
+            }
+            mseStratified += Math.pow(a / spp - exact, 2) / pixels;
+            mseStream += Math.pow(b / spp - exact, 2) / pixels;
+        }
+        assertThat(mseStratified).isLessThan(mseStream / 20);
+    }
+
     /** The state from which {@link Rng#nextLong()} returns {@code output}: the inverse of one SplitMix64 step. */
     private static long stateBefore(long output) {
         long z = output;

@@ -84,21 +84,20 @@ class SceneFileFormatTest {
         Geometry g = scene.geometry();
         assertThat(g.triangleCount()).isEqualTo(1 + 1 + 1 + 2);
         assertThat(g.sphereCount()).isEqualTo(3);
+        // Primitives are found by material: the BVH stores them in its own order.
         // the first OBJ: scaled by 2, turned 90° about +y (x -> -z), moved by +1 in x, all of "white"
-        Aabb first = bounds(g, 0);
+        Aabb first = bounds(scene, "white", 1);
         assertThat(new double[] {first.minX, first.maxX, first.minY, first.maxY, first.minZ, first.maxZ})
                 .containsExactly(new double[] {1, 1, 0, 2, -2, 0}, within(1e-6));
-        assertThat(name(scene, 0)).isEqualTo("white");
-        assertThat(name(scene, 1)).isEqualTo("default");                 // the PLY without a material
-        assertThat(name(scene, 2)).isEqualTo("red");                     // the OBJ with its MTL
-        Aabb quad = bounds(g, 3);
-        quad.include(bounds(g, 4));
+        bounds(scene, "default", 1);                                      // the PLY without a material
+        bounds(scene, "red", 1);                                          // the OBJ with its MTL
+        Aabb quad = bounds(scene, "paint", 2);
         assertThat(new double[] {quad.maxX, quad.maxY, quad.minZ}).containsExactly(new double[] {1, 2, -2}, within(1e-6));
-        assertThat(name(scene, 3)).isEqualTo("paint");
-        Material paint = scene.materials().get(g.material(3));
+        Material paint = scene.materials().stream().filter(m -> m.name().equals("paint")).findFirst().orElseThrow();
         assertThat(paint.emission()).isEqualTo(new Rgb(0.5, 0, 0));
         // the lamp sphere moved up by 3
-        Aabb lamp = bounds(g, g.triangleCount());
+        Aabb lamp = bounds(scene, "lamp", 1);
+        assertThat(g.isTriangle(prims(scene, "lamp").get(0))).isFalse();
         assertThat((lamp.minY + lamp.maxY) / 2).isCloseTo(3, within(1e-9));
         assertThat(scene.materials()).extracting(Material::bsdf).contains(new Dielectric(1.33));
     }
@@ -273,5 +272,27 @@ class SceneFileFormatTest {
 
     private static String name(Scene scene, int prim) {
         return scene.materials().get(scene.geometry().material(prim)).name();
+    }
+
+    /** The primitives made of the named material. */
+    private static java.util.List<Integer> prims(Scene scene, String material) {
+        java.util.List<Integer> out = new java.util.ArrayList<>();
+        for (int p = 0; p < scene.geometry().primitiveCount(); p++) {
+            if (name(scene, p).equals(material)) {
+                out.add(p);
+            }
+        }
+        return out;
+    }
+
+    /** The bounds of the {@code count} primitives made of the named material (there must be exactly that many). */
+    private static Aabb bounds(Scene scene, String material, int count) {
+        java.util.List<Integer> list = prims(scene, material);
+        assertThat(list).as("primitives of %s", material).hasSize(count);
+        Aabb box = new Aabb();
+        for (int p : list) {
+            scene.geometry().includeBounds(p, box);
+        }
+        return box;
     }
 }

@@ -1,0 +1,293 @@
+package dev.strahl.cli;
+
+import dev.strahl.accel.Bvh;
+import dev.strahl.camera.Camera;
+import dev.strahl.film.Image;
+import dev.strahl.geometry.Geometry;
+import dev.strahl.render.RenderJob;
+import dev.strahl.render.RenderSettings;
+import dev.strahl.render.RenderStats;
+import dev.strahl.scene.Scene;
+import dev.strahl.scene.SceneException;
+import dev.strahl.scene.SceneLoader;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.time.LocalDate;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.TreeSet;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code strahl bench}: the figures every performance claim of the project cites. After a
+ * warm-up, the median (and min/max) of several runs of: the Cornell Box (512², unbounded depth,
+ * path tracer) in samples/s and rays/s; per mesh the BVH build, its bytes per triangle and
+ * closest-hit (camera and incoherent rays) and any-hit (shadow rays) rates; on 1 and all
+ * threads. Each benchmark checks its own result (the Cornell image's mean against the
+ * reference's, rays against a brute-force loop on a subset, equal checksums on every run), so
+ * that a broken fast path cannot win. A table on stdout, JSON with {@code --json}.
+ */
+@Command(name = "bench",
+        mixinStandardHelpOptions = true,
+        versionProvider = Main.Version.class,
+        description = {"Measures render and ray tracing speed: the Cornell Box in samples/s, and per mesh the BVH build,",
+            "bytes per triangle and ray rates, on 1 and all threads; checks every result; prints a table."},
+        sortOptions = false)
+final class BenchCommand implements Callable<Integer> {
+    /** Whole-image mean (R, G, B) of the Mitsuba reference of the Cornell Box, 512², unbounded depth (../shared/refs/README.md). */
+    static final double[] CORNELL_REFERENCE_MEAN = {0.18660, 0.12082, 0.03439};
+    /** How far the Cornell image's mean may stray from the reference's: far above the noise of a few spp over 512² pixels. */
+    static final double CORNELL_MEAN_TOLERANCE = 0.02;
+
+    /** Loads a mesh file as a scene; a seam for tests and for formats added later. */
+    @FunctionalInterface
+    interface MeshLoader {
+        Scene load(Path file) throws SceneException;
+    }
+
+    static MeshLoader loader = SceneLoader::load;
+
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--json", paramLabel = "FILE", description = "Also write the results as JSON.")
+    Path json;
+
+    @Option(names = "--quick", description = "One run of each, with fewer rays: a quick check, not for citing.")
+    boolean quick;
+
+    @Option(names = "--runs", defaultValue = "5", description = "Timed runs of each benchmark after the warm-up (default: ${DEFAULT-VALUE}; --quick: 1).")
+    int runs;
+
+    @Option(names = "--threads", split = ",", paramLabel = "N[,N...]", description = "Thread counts to measure (default: 1 and all processors).")
+    List<Integer> threads;
+
+    @Option(names = "--cornell", defaultValue = "scenes/cornell-box.json", paramLabel = "FILE", description = "The Cornell Box scene (default: ${DEFAULT-VALUE}).")
+    Path cornell;
+
+    @Option(names = "--data", defaultValue = "../shared/data", paramLabel = "DIR", description = "Directory with meshes/ of the benchmark meshes (default: ${DEFAULT-VALUE}).")
+    Path data;
+
+    @Option(names = "--mesh", paramLabel = "FILE", description = "Benchmark these meshes instead of the default three (repeatable).")
+    List<Path> meshes;
+
+    @Option(names = "--no-cornell", description = "Skip the Cornell Box render.")
+    boolean noCornell;
+
+    @Option(names = "--rays", paramLabel = "N", description = "Rays per ray set (default: 2^20; --quick: 2^17).")
+    Integer raysPerSet;
+
+    private BenchProgress progress;
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        PrintWriter out = spec.commandLine().getOut();
+        long start = System.nanoTime();
+        int timedRuns = quick ? 1 : runs;
+        if (timedRuns < 1) {
+            err.println("strahl: --runs must be at least 1, got " + runs);
+            return 2;
+        }
+        TreeSet<Integer> counts = new TreeSet<>(threads != null ? threads : List.of(1, Runtime.getRuntime().availableProcessors()));
+        if (counts.first() < 1) {
+            err.println("strahl: --threads must be positive, got " + counts.first());
+            return 2;
+        }
+        List<Path> meshFiles = meshes != null ? meshes : List.of(data.resolve("meshes/bunny/bun_zipper.ply"),
+                data.resolve("meshes/dragon/dragon_100k.ply"), data.resolve("meshes/bunny/bunny_midpoint-sub2_1.1M.ply"));
+        BenchResults r = BenchReport.machine(quick, timedRuns);
+        r.raysPerSet = raysPerSet != null ? raysPerSet : quick ? 1 << 17 : 1 << 20;
+        if (r.raysPerSet < 1) {
+            err.println("strahl: --rays must be positive, got " + r.raysPerSet);
+            return 2;
+        }
+        progress = new BenchProgress(System.err, Terminal.isStderrTerminal());
+        ExecutorService pool = Executors.newFixedThreadPool(counts.last(), t -> {
+            Thread thread = new Thread(t, "strahl-bench");
+            thread.setDaemon(true);
+            return thread;
+        });
+        List<String> failures = new ArrayList<>();
+        try {
+            Scene box = null;
+            if (!noCornell || meshes == null) {
+                box = SceneLoader.load(cornell);
+            }
+            if (!noCornell) {
+                cornell(box, counts, timedRuns, r, failures);
+            }
+            List<Object[]> sets = new ArrayList<>();
+            if (meshes == null && box != null) {
+                sets.add(new Object[] {"cornell-box", cornell, box, 0.0});
+            }
+            for (Path file : meshFiles) {
+                progress.step("loading " + file.getFileName());
+                try {
+                    long t0 = System.nanoTime();
+                    Scene s = loader.load(file);
+                    sets.add(new Object[] {name(file), file, s, (System.nanoTime() - t0) * 1e-9 - s.bvhBuildSeconds()});
+                } catch (SceneException e) {
+                    r.skipped.add(name(file) + ": " + e.getMessage());
+                }
+            }
+            for (Object[] set : sets) {
+                mesh((String) set[0], (Path) set[1], (Scene) set[2], (Double) set[3], counts, timedRuns, pool, r, failures);
+            }
+        } catch (SceneException e) {
+            progress.done();
+            err.println("strahl: " + e.getMessage());
+            return 2;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            err.println("strahl: interrupted");
+            return 1;
+        } finally {
+            pool.shutdownNow();
+        }
+        progress.done();
+        r.seconds = (System.nanoTime() - start) * 1e-9;
+        BenchReport.targets(r, counts.first(), counts.last());
+        BenchReport.printTable(out, r);
+        out.flush();
+        if (json != null) {
+            try {
+                BenchReport.writeJson(json, r);
+            } catch (IOException e) {
+                err.println("strahl: cannot write " + json + ": " + e.getMessage());
+                return 1;
+            }
+        }
+        for (String f : failures) {
+            err.println("strahl: check failed: " + f);
+        }
+        return failures.isEmpty() ? 0 : 1;
+    }
+
+    private static String name(Path file) {
+        String n = file.getFileName().toString();
+        int dot = n.lastIndexOf('.');
+        return dot > 0 ? n.substring(0, dot) : n;
+    }
+
+    /** The Cornell Box at 512², unbounded depth: samples/s and rays/s per thread count; the image mean checked. */
+    private void cornell(Scene box, TreeSet<Integer> counts, int timedRuns, BenchResults r, List<String> failures)
+            throws InterruptedException {
+        int spp = quick ? 1 : 8;
+        r.cornellScene = cornell.toString();
+        r.cornellSpp = spp;
+        RenderSettings base = RenderSettings.defaults().withSize(512, 512).withSamplesPerPixel(spp).withSamplesPerPass(spp);
+        progress.step("Cornell Box: warm-up");
+        render(box, base.withThreads(counts.last()).withSamplesPerPixel(quick ? 1 : 4));
+        for (int t : counts) {
+            double[] sps = new double[timedRuns], rps = new double[timedRuns];
+            long rays = 0, samples = 0;
+            for (int run = 0; run < timedRuns; run++) {
+                progress.step(String.format("Cornell Box: %d thread%s, run %d/%d", t, t == 1 ? "" : "s", run + 1, timedRuns));
+                RenderJob job = RenderJob.start(box, base.withThreads(t).withSeed(run));
+                RenderStats stats;
+                try (job) {
+                    stats = job.awaitStats();
+                }
+                sps[run] = stats.samplesPerSecond();
+                rps[run] = stats.raysPerSecond();
+                rays += stats.rays();
+                samples += stats.samples();
+                if (r.cornellMean == null) {
+                    r.cornellMean = job.snapshot().mean();
+                }
+            }
+            r.cornell.add(new BenchResults.Render(t, BenchResults.Stat.of(sps), BenchResults.Stat.of(rps), (double) rays / samples));
+        }
+        // The viewer's preview while the camera moves: 128×128 at 1 spp per frame, one render job each.
+        RenderSettings preview = base.withSize(128, 128).withSamplesPerPixel(1).withSamplesPerPass(1).withThreads(counts.last());
+        int frames = quick ? 10 : 60;
+        double[] fps = new double[timedRuns];
+        for (int run = 0; run < timedRuns; run++) {
+            progress.step(String.format("Cornell Box: viewer preview frames, run %d/%d", run + 1, timedRuns));
+            long t0 = System.nanoTime();
+            for (int f = 0; f < frames; f++) {
+                render(box, preview.withSeed(f));
+            }
+            fps[run] = frames / ((System.nanoTime() - t0) * 1e-9);
+        }
+        r.previewFps = BenchResults.Stat.of(fps);
+        r.cornellReferenceMean = CORNELL_REFERENCE_MEAN.clone();
+        for (int c = 0; c < 3; c++) {
+            double rel = Math.abs(r.cornellMean[c] / CORNELL_REFERENCE_MEAN[c] - 1);
+            if (!(rel <= CORNELL_MEAN_TOLERANCE)) {
+                r.cornellCheck = String.format(java.util.Locale.ROOT, "image mean %s is %.1f %% off the reference's %s in channel %d",
+                        java.util.Arrays.toString(r.cornellMean), 100 * rel, java.util.Arrays.toString(CORNELL_REFERENCE_MEAN), c);
+                failures.add("Cornell Box: " + r.cornellCheck);
+                return;
+            }
+        }
+        r.cornellCheck = "passed";
+    }
+
+    private static Image render(Scene scene, RenderSettings settings) throws InterruptedException {
+        try (RenderJob job = RenderJob.start(scene, settings)) {
+            job.awaitStats();
+            return job.snapshot();
+        }
+    }
+
+    /** One mesh: BVH builds, memory, then each ray set checked against brute force and timed per thread count. */
+    private void mesh(String name, Path file, Scene scene, double loadSeconds, TreeSet<Integer> counts, int timedRuns,
+                      ExecutorService pool, BenchResults r, List<String> failures) throws InterruptedException {
+        Geometry g = scene.geometry();
+        double[] build = new double[timedRuns];
+        Bvh bvh = null;
+        progress.step(name + ": BVH build, warm-up");
+        Bvh.build(g);
+        for (int run = 0; run < timedRuns; run++) {
+            progress.step(String.format("%s: BVH build, run %d/%d", name, run + 1, timedRuns));
+            long t0 = System.nanoTime();
+            bvh = Bvh.build(g);
+            build[run] = (System.nanoTime() - t0) * 1e-9;
+        }
+        double bytes = (double) (bvh.geometry().byteSize() + bvh.byteSize()) / g.primitiveCount();
+
+        progress.step(name + ": making rays");
+        Camera camera = name.equals("cornell-box") ? scene.camera() : Camera.framing(g.bounds(), 40);
+        int side = (int) Math.max(1, Math.min(512, Math.sqrt(r.raysPerSet / 4.0)));
+        List<BenchRays.RaySet> sets = List.of(BenchRays.primary(camera, side, side, 4, 1),
+                BenchRays.incoherent(g.bounds(), r.raysPerSet, 2), BenchRays.shadow(g, r.raysPerSet, 3));
+        String check = "passed";
+        int samples = (int) Math.max(16, Math.min(512, (1L << 24) / g.primitiveCount()));
+        List<BenchResults.Rays> rays = new ArrayList<>();
+        for (BenchRays.RaySet set : sets) {
+            progress.step(name + ": " + set.name() + " rays, brute-force check of " + samples);
+            String problem = BenchRays.check(bvh, set, samples);
+            if (problem != null) {
+                check = problem;
+                failures.add(name + ": " + problem);
+            }
+            BenchRays.trace(bvh, set, counts.last(), pool);                          // warm-up
+            BenchRays.Result reference = null;
+            for (int t : counts) {
+                double[] rate = new double[timedRuns];
+                for (int run = 0; run < timedRuns; run++) {
+                    progress.step(String.format("%s: %s rays, %d thread%s, run %d/%d", name, set.name(), t, t == 1 ? "" : "s", run + 1, timedRuns));
+                    BenchRays.Result res = BenchRays.trace(bvh, set, t, pool);
+                    rate[run] = set.count() / res.seconds();
+                    if (reference == null) {
+                        reference = res;
+                    } else if (res.hits() != reference.hits() || res.checksum() != reference.checksum()) {
+                        check = set.name() + " rays: checksum differs between runs or thread counts";
+                        failures.add(name + ": " + check);
+                    }
+                }
+                rays.add(new BenchResults.Rays(set.name(), t, BenchResults.Stat.of(rate), reference.hits(), set.count()));
+            }
+        }
+        r.meshes.add(new BenchResults.Mesh(name, file.toString(), g.triangleCount(), loadSeconds, BenchResults.Stat.of(build), bytes, rays, check));
+    }
+}

@@ -1,0 +1,33 @@
+package dev.strahl.cli;
+
+import dev.strahl.render.RenderSettings;
+import dev.strahl.render.RenderStats;
+import java.io.IOException;
+import java.nio.file.Path;
+
+/**
+ * The figures of one render for tools ({@code render --stats FILE.json}). Render time excludes
+ * loading and the BVH build, which are reported separately: {@code load_seconds} is reading and
+ * building the scene without the BVH, {@code bvh_build_seconds} the BVH build.
+ */
+final class StatsFile {
+    private StatsFile() {}
+
+    static void write(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhBuildSeconds) throws IOException {
+        JsonFile.write(file, json -> {
+            json.writeStartObject();
+            json.writeNumberField("seconds", stats.seconds());
+            json.writeNumberField("samples", stats.samples());
+            json.writeNumberField("samples_per_second", stats.samplesPerSecond());
+            json.writeNumberField("rays", stats.rays());
+            json.writeNumberField("rays_per_second", stats.raysPerSecond());
+            json.writeNumberField("threads", stats.threads());
+            json.writeNumberField("width", settings.width());
+            json.writeNumberField("height", settings.height());
+            json.writeNumberField("spp", stats.samplesPerPixel());
+            json.writeNumberField("bvh_build_seconds", bvhBuildSeconds);
+            json.writeNumberField("load_seconds", loadSeconds);
+            json.writeEndObject();
+        });
+    }
+}

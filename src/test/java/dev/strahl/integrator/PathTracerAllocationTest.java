@@ -1,0 +1,50 @@
+package dev.strahl.integrator;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import dev.strahl.camera.PinholeRays;
+import dev.strahl.geometry.Ray;
+import dev.strahl.math.Rgb;
+import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.sampling.Rng;
+import dev.strahl.scene.Scene;
+import dev.strahl.scene.SceneLoader;
+import java.lang.management.ManagementFactory;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The per-sample loop allocates nothing (STYLE.md habit 4): once compiled, tracing paths through
+ * the Cornell Box (BVH traversal, shading, light sampling, the stratified sampler) leaves the
+ * thread's allocated-bytes counter where it was.
+ */
+class PathTracerAllocationTest {
+
+    @Test
+    void radianceAllocatesNothingPerSample() throws Exception {
+        Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
+        Integrator.Worker worker = new PathTracer(scene, -1, HemisphereSampling.COSINE, false, PathTracer.Strategy.MIS).newWorker();
+        PinholeRays camera = scene.camera().rays(64, 64);
+        Ray ray = new Ray();
+        Rng rng = new Rng();
+        Rgb.Mutable out = new Rgb.Mutable();
+        var threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        long allocated = Long.MAX_VALUE;
+        double sum = 0;
+        // Rounds until the hot code is compiled (the interpreter and C1 may box Vector API values);
+        // the best round must be clean.
+        for (int round = 0; round < 30 && allocated > 0; round++) {
+            long before = threads.getCurrentThreadAllocatedBytes();
+            for (int i = 0; i < 20_000; i++) {
+                int x = i % 64, y = (i / 64) % 64;
+                rng.startSample(round, x, y, i / 4096);
+                camera.generate(x + rng.nextDouble(), y + rng.nextDouble(), ray);
+                worker.radiance(ray, rng, out);
+                sum += out.g;
+            }
+            allocated = Math.min(allocated, threads.getCurrentThreadAllocatedBytes() - before);
+        }
+        assertThat(sum).isPositive();
+        assertThat(allocated).as("bytes allocated by 20 000 samples").isLessThan(1024);
+    }
+}
