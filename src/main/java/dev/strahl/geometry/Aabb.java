@@ -2,6 +2,9 @@ package dev.strahl.geometry;
 
 /** An axis-aligned box, mutable, used while building acceleration structures and framing cameras. */
 public final class Aabb {
+    /** Creates an empty box (min +∞, max −∞), which any point or box extends. */
+    public Aabb() {}
+
     public double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY, minZ = Double.POSITIVE_INFINITY;
     public double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY, maxZ = Double.NEGATIVE_INFINITY;
 

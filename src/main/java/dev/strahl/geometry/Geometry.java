@@ -360,6 +360,9 @@ public final class Geometry {
 
     /** Collects meshes and spheres with their material indices. */
     public static final class Builder {
+        /** Creates an empty builder. */
+        public Builder() {}
+
         private float[] pos = new float[48];
         private int[] tri = new int[48];
         private float[] nrm = new float[48];

@@ -5,6 +5,9 @@ package dev.strahl.geometry;
  * (barycentrics b1, b2 of vertices 1 and 2 for triangles). Mutable, reused per thread.
  */
 public final class Hit {
+    /** Creates an empty record; {@link #reset} before each query. */
+    public Hit() {}
+
     public double t;
     /** Primitive index in {@link Geometry}, or -1 for no hit. */
     public int prim = -1;

@@ -8,6 +8,9 @@ import org.joml.Vector3dc;
  * {@code tMax} to the closest hit found so far.
  */
 public final class Ray {
+    /** Creates a ray to be {@link #set} before use. */
+    public Ray() {}
+
     public final Vector3d o = new Vector3d();
     /** Unit direction. */
     public final Vector3d d = new Vector3d();

@@ -9,6 +9,9 @@ import org.joml.Vector3dc;
  * primitive's material. Mutable, reused per thread.
  */
 public final class SurfacePoint {
+    /** Creates a point for {@link Geometry} to fill in. */
+    public SurfacePoint() {}
+
     /** Relative size of the offset that moves new ray origins off the surface. */
     private static final double OFFSET_SCALE = 1e-6;
 

@@ -5,6 +5,9 @@ import org.joml.Vector3d;
 
 /** The result of sampling a BSDF; mutable, reused per thread. */
 public final class BsdfSample {
+    /** Creates a sample for a BSDF to fill in. */
+    public BsdfSample() {}
+
     /** Sampled direction in the local frame. */
     public final Vector3d wi = new Vector3d();
     /** f(wo, wi)·|cosθi| / pdf. */

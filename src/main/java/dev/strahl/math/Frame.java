@@ -8,6 +8,9 @@ import org.joml.Vector3dc;
  * one instance per thread can be reset at every hit.
  */
 public final class Frame {
+    /** Creates a frame to be {@link #set} before use. */
+    public Frame() {}
+
     private double sx, sy, sz, tx, ty, tz, nx, ny, nz;
 
     /**

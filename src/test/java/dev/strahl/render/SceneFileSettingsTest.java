@@ -102,7 +102,7 @@ class SceneFileSettingsTest {
     void anUnknownIntegratorIsASceneErrorNamingTheFileEvenWhenTheIntegratorIsGiven() {
         SceneSettings bad = new SceneSettings(null, null, null, null, null, "bidir", null, null);
         for (Set<Setting> given : java.util.List.of(Set.<Setting>of(), Set.of(Setting.INTEGRATOR))) {
-            SceneException e = catchThrowableOfType(() -> COMMAND_LINE.withSceneFile(FILE, bad, given), SceneException.class);
+            SceneException e = catchThrowableOfType(SceneException.class, () -> COMMAND_LINE.withSceneFile(FILE, bad, given));
             assertThat(e).as("given %s", given).isNotNull();
             assertThat(e.getMessage()).isEqualTo("s.json: unknown integrator 'bidir' (known: path, direct, whitted, photon)");
             assertThat(e.file()).isEqualTo(FILE);

@@ -324,7 +324,7 @@ class JsonSceneReaderTest {
         Path sub = Files.createDirectories(dir.resolve("sub"));
         Path file = sub.resolve("scene.json");
         Files.writeString(file, "{ \"shapes\": [ { \"type\": \"mesh\", \"file\": \"nope.obj\" } ] }");
-        SceneException e = catchThrowableOfType(() -> JsonSceneReader.read(file), SceneException.class);
+        SceneException e = catchThrowableOfType(SceneException.class, () -> JsonSceneReader.read(file));
         assertThat(e).isNotNull();
         assertThat(e.getMessage()).contains(sub.resolve("nope.obj").toAbsolutePath().toString()).contains("file not found");
     }
@@ -877,7 +877,7 @@ class JsonSceneReaderTest {
         Path file = dir.resolve("scene.json");
         byte[] text = "{\n  \"shapes\": [],\n  \"x\": \"caf\u00e9\"\n}\n".getBytes(StandardCharsets.ISO_8859_1);
         Files.write(file, text);
-        SceneException e = catchThrowableOfType(() -> JsonSceneReader.read(file), SceneException.class);
+        SceneException e = catchThrowableOfType(SceneException.class, () -> JsonSceneReader.read(file));
         assertThat(e).isNotNull();
         assertThat(e.getMessage()).startsWith(file + ":3: ").contains("UTF-8");
     }
@@ -893,7 +893,7 @@ class JsonSceneReaderTest {
     private SceneException error(String json) throws IOException {
         Path file = dir.resolve("scene.json");
         Files.writeString(file, json);
-        SceneException e = catchThrowableOfType(() -> JsonSceneReader.read(file), SceneException.class);
+        SceneException e = catchThrowableOfType(SceneException.class, () -> JsonSceneReader.read(file));
         assertThat(e).as("expected a SceneException for:%n%s", json).isNotNull();
         return e;
     }

@@ -164,9 +164,9 @@ class PlyReaderErrorTest {
 
     @Test
     void aMissingFileAndADirectoryAreNamedAsSuch() {
-        SceneException missing = catchThrowableOfType(() -> PlyReader.read(dir.resolve("none.ply")), SceneException.class);
+        SceneException missing = catchThrowableOfType(SceneException.class, () -> PlyReader.read(dir.resolve("none.ply")));
         assertThat(missing).hasMessage(dir.resolve("none.ply") + ": file not found");
-        SceneException directory = catchThrowableOfType(() -> PlyReader.read(dir), SceneException.class);
+        SceneException directory = catchThrowableOfType(SceneException.class, () -> PlyReader.read(dir));
         assertThat(directory).hasMessage(dir + ": is a directory, not a PLY file");
     }
 
@@ -199,7 +199,7 @@ class PlyReaderErrorTest {
     private String error(byte[] content) throws Exception {
         Path file = dir.resolve("mesh.ply");
         Files.write(file, content);
-        SceneException e = catchThrowableOfType(() -> PlyReader.read(file), SceneException.class);
+        SceneException e = catchThrowableOfType(SceneException.class, () -> PlyReader.read(file));
         assertThat(e).as("an error for %s", new String(content, 0, Math.min(content.length, 200), StandardCharsets.ISO_8859_1)).isNotNull();
         return e.getMessage();
     }

@@ -113,8 +113,8 @@ class SceneFileFormatTest {
         RenderSettings halfGiven = RenderSettings.defaults().withScene(new SceneSettings(100, null, null, null, null, null, null, null));
         assertThat(halfGiven.width()).isEqualTo(100);
         assertThat(halfGiven.height()).isEqualTo(512);
-        var e = catchThrowableOfType(() -> RenderSettings.defaults().withScene(
-                new SceneSettings(null, null, null, null, null, "bidir", null, null)), IllegalArgumentException.class);
+        var e = catchThrowableOfType(IllegalArgumentException.class, () -> RenderSettings.defaults().withScene(
+                new SceneSettings(null, null, null, null, null, "bidir", null, null)));
         assertThat(e).hasMessage("unknown integrator 'bidir' (known: path, direct, whitted, photon)");
     }
 
@@ -256,7 +256,7 @@ class SceneFileFormatTest {
     @MethodSource("badScenes")
     void badNewKeysAreOneErrorWithFileLineAndKey(String json, int line, String fragment) throws Exception {
         Path file = write("bad.json", json);
-        SceneException e = catchThrowableOfType(() -> SceneLoader.load(file), SceneException.class);
+        SceneException e = catchThrowableOfType(SceneException.class, () -> SceneLoader.load(file));
         assertThat(e).as(json).isNotNull();
         assertThat(e.getMessage()).startsWith(file + ":" + line + ": ").contains(fragment);
         assertThat(e.line()).isEqualTo(line);

@@ -218,7 +218,7 @@ class SceneLoaderTest {
         assertThat(error(noExtension)).startsWith(noExtension + ": unknown scene format");
         Path bad = dir.resolve("bad.obj");
         Files.writeString(bad, "v 1 2 x\n");
-        SceneException e = catchThrowableOfType(() -> SceneLoader.load(bad), SceneException.class);
+        SceneException e = catchThrowableOfType(SceneException.class, () -> SceneLoader.load(bad));
         assertThat(e.line()).isEqualTo(1);
         assertThat(e.getMessage()).startsWith(bad + ":1: ").doesNotContain("\n");
     }
@@ -234,7 +234,7 @@ class SceneLoaderTest {
     }
 
     private static String error(Path file) {
-        SceneException e = catchThrowableOfType(() -> SceneLoader.load(file), SceneException.class);
+        SceneException e = catchThrowableOfType(SceneException.class, () -> SceneLoader.load(file));
         assertThat(e).as("expected a SceneException for %s", file).isNotNull();
         assertThat(e.file()).isEqualTo(file);
         return e.getMessage();

@@ -111,7 +111,7 @@ class SceneSchemaTest {
         assertThat(errors(json)).as("schema errors").isNotEmpty();
         Files.writeString(dir.resolve("a.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
         Path file = Files.writeString(dir.resolve("s.json"), json);
-        assertThat(catchThrowableOfType(() -> JsonSceneReader.parse(file), SceneException.class)).as("reader error").isNotNull();
+        assertThat(catchThrowableOfType(SceneException.class, () -> JsonSceneReader.parse(file))).as("reader error").isNotNull();
     }
 
     private static JsonNode get(JsonNode object, String key) {
