@@ -6,8 +6,9 @@ import java.util.Arrays;
  * Tells which parts of a mesh are closed, consistently oriented and facing outwards: the parts
  * whose back faces no ray from outside can reach, so that back-face culling is safe on them.
  *
- * <p>Works on sorted primitive arrays (welding and edge matching are sorts and binary searches),
- * so a million-triangle mesh takes a fraction of a second and no boxed map entries.
+ * <p>Works on primitive arrays (welding is a hash table of vertex indices, edge matching a sort
+ * and binary searches), so a million-triangle mesh takes a fraction of a second and no boxed map
+ * entries.
  */
 public final class MeshTopology {
     private MeshTopology() {}
@@ -65,7 +66,7 @@ public final class MeshTopology {
             double cz = (double) p[i1] * p[i2 + 1] - (double) p[i1 + 1] * p[i2];
             volume += (p[i0] * cx + p[i0 + 1] * cy + p[i0 + 2] * cz) / 6;
         }
-        Arrays.sort(edges, 0, e);
+        Arrays.parallelSort(edges, 0, e);
         for (int i = 1; i < e; i++) {
             if (edges[i] == edges[i - 1]) {
                 return false;                          // the same directed edge twice: not a 2-manifold
@@ -82,68 +83,45 @@ public final class MeshTopology {
 
     /**
      * Maps each vertex to a weld id shared by exactly the vertices with the same position (-0 and
-     * +0 count as equal): vertices sorted by their coordinate bits, equal runs get one id.
+     * +0 count as equal), numbered in order of first appearance: an open-addressing hash table on
+     * the coordinate bits holds the first vertex of each position.
      */
     private static int[] weld(float[] positions) {
         int n = positions.length / 3;
         int[] weld = new int[n];
-        if (n == 0) {
-            return weld;
-        }
-        // Sort keys: the x and y bits in one long, the z bits in a second.
-        long[] xy = new long[n];
-        long[] zv = new long[n];
+        int mask = Integer.highestOneBit(Math.max(1, 2 * n - 1)) * 2 - 1;   // load factor at most 1/2
+        int[] slot = new int[mask + 1];                                       // first vertex + 1; 0 = empty
+        int ids = 0;
         for (int v = 0; v < n; v++) {
-            xy[v] = ((long) bits(positions[3 * v]) << 32) | (bits(positions[3 * v + 1]) & 0xffffffffL);
-            zv[v] = bits(positions[3 * v + 2]);
-        }
-        int[] perm = sortedIndices(xy, zv);
-        int id = -1;
-        for (int k = 0; k < n; k++) {
-            int v = perm[k];
-            if (k == 0 || xy[v] != xy[perm[k - 1]] || zv[v] != zv[perm[k - 1]]) {
-                id++;
+            int x = bits(positions[3 * v]), y = bits(positions[3 * v + 1]), z = bits(positions[3 * v + 2]);
+            int h = mix(x, y, z) & mask;
+            while (true) {
+                int u = slot[h] - 1;
+                if (u < 0) {
+                    slot[h] = v + 1;
+                    weld[v] = ids++;
+                    break;
+                }
+                if (bits(positions[3 * u]) == x && bits(positions[3 * u + 1]) == y && bits(positions[3 * u + 2]) == z) {
+                    weld[v] = weld[u];
+                    break;
+                }
+                h = (h + 1) & mask;
             }
-            weld[v] = id;
         }
         return weld;
+    }
+
+    /** A hash of three ints whose every input bit reaches the low bits (a multiply-xorshift finaliser). */
+    private static int mix(int x, int y, int z) {
+        long h = ((long) x * 0x9E3779B97F4A7C15L) ^ ((long) y * 0xC2B2AE3D27D4EB4FL) ^ ((long) z * 0x165667B19E3779F9L);
+        h ^= h >>> 31;
+        h *= 0xBF58476D1CE4E5B9L;
+        return (int) (h ^ (h >>> 29));
     }
 
     /** Coordinate bits with -0 folded into +0 ({@code x + 0.0f} turns -0.0f into +0.0f). */
     private static int bits(float x) {
         return Float.floatToIntBits(x + 0.0f);
-    }
-
-    /** The vertex indices ordered by (primary, secondary) key, by a merge sort on int indices. */
-    private static int[] sortedIndices(long[] primary, long[] secondary) {
-        int n = primary.length;
-        int[] a = new int[n];
-        for (int i = 0; i < n; i++) {
-            a[i] = i;
-        }
-        int[] b = new int[n];
-        for (int width = 1; width < n; width *= 2) {
-            for (int lo = 0; lo < n; lo += 2 * width) {
-                int mid = Math.min(lo + width, n), hi = Math.min(lo + 2 * width, n);
-                int i = lo, j = mid, k = lo;
-                while (i < mid && j < hi) {
-                    b[k++] = less(primary, secondary, a[j], a[i]) ? a[j++] : a[i++];
-                }
-                while (i < mid) {
-                    b[k++] = a[i++];
-                }
-                while (j < hi) {
-                    b[k++] = a[j++];
-                }
-            }
-            int[] tmp = a;
-            a = b;
-            b = tmp;
-        }
-        return a;
-    }
-
-    private static boolean less(long[] primary, long[] secondary, int u, int v) {
-        return primary[u] != primary[v] ? primary[u] < primary[v] : secondary[u] < secondary[v];
     }
 }
