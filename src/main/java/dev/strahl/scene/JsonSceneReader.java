@@ -235,7 +235,11 @@ final class JsonSceneReader {
                 throw new SceneException(file, s.get("positions").line, "'shapes[].positions' must fit into floats, got " + p);
             }
         }
-        new TriangleMesh(positions, indices, normals);          // cannot fail after the checks above
+        try {
+            transform.apply(new TriangleMesh(positions, indices, normals));   // the mesh itself is valid after the checks above
+        } catch (IllegalArgumentException e) {
+            throw new SceneException(file, s.get("transform").line, "'shapes[].transform': " + e.getMessage());
+        }
         return new SceneDescription.TrianglesShape(positions, indices, normals, material, transform);
     }
 

@@ -66,11 +66,11 @@ public final class SceneLoader {
         if (name.endsWith(".ply")) {
             PlyReader.PlyModel model = PlyReader.read(file);
             model.warnings().forEach(w -> builder.note("warning: " + w));
-            builder.addMesh(transform.apply(model.mesh()), material != null ? material : DEFAULT_MATERIAL);
+            builder.addMesh(moved(file, model.mesh(), transform), material != null ? material : DEFAULT_MATERIAL);
         } else if (name.endsWith(".obj")) {
             ObjModel model = ObjReader.read(file);
             model.warnings().forEach(w -> builder.note("warning: " + w));
-            TriangleMesh mesh = transform.apply(model.mesh());
+            TriangleMesh mesh = moved(file, model.mesh(), transform);
             if (material != null) {
                 builder.addMesh(mesh, material);
                 return;
@@ -82,6 +82,14 @@ public final class SceneLoader {
             builder.addMesh(mesh, model.triangleMaterial(), palette);
         } else {
             throw new SceneException(file, "unknown mesh format (expected .obj or .ply)");
+        }
+    }
+
+    private static TriangleMesh moved(Path file, TriangleMesh mesh, Transform transform) throws SceneException {
+        try {
+            return transform.apply(mesh);
+        } catch (IllegalArgumentException e) {
+            throw new SceneException(file, e.getMessage());
         }
     }
 

@@ -79,12 +79,21 @@ public final class Transform {
         for (Step s : this.steps) {
             Matrix4d step = switch (s.kind()) {
                 case TRANSLATE -> new Matrix4d().translation(s.x(), s.y(), s.z());
-                case ROTATE -> new Matrix4d().rotation(Math.toRadians(s.degrees()), new Vector3d(s.x(), s.y(), s.z()).normalize());
+                case ROTATE -> new Matrix4d().rotation(Math.toRadians(s.degrees()), unit(s.x(), s.y(), s.z()));
                 case SCALE -> new Matrix4d().scaling(s.x(), s.y(), s.z());
             };
             m = step.mul(m);                   // later steps act on the result of earlier ones
         }
+        if (!m.isFinite()) {
+            throw new IllegalArgumentException("the steps multiply to a matrix beyond the range of numbers (scale factors too large or too small)");
+        }
         this.matrix = m;
+    }
+
+    /** The unit vector along (x, y, z), also for axes whose squared length under- or overflows. */
+    private static Vector3d unit(double x, double y, double z) {
+        double max = Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
+        return new Vector3d(x / max, y / max, z / max).normalize();
     }
 
     /**
@@ -92,6 +101,7 @@ public final class Transform {
      *
      * @param steps the steps, first applied first
      * @return the transform
+     * @throws IllegalArgumentException if the steps multiply to a matrix that is not finite
      */
     public static Transform of(List<Step> steps) {
         return steps.isEmpty() ? IDENTITY : new Transform(steps);
@@ -228,6 +238,7 @@ public final class Transform {
      *
      * @param mesh the mesh in its own coordinates
      * @return the transformed mesh (the same mesh for the identity)
+     * @throws IllegalArgumentException if the transform moves a vertex beyond the range of {@code float}
      */
     public TriangleMesh apply(TriangleMesh mesh) {
         if (isIdentity()) {
@@ -237,6 +248,11 @@ public final class Transform {
         Vector3d v = new Vector3d();
         for (int i = 0; i < p.length; i += 3) {
             matrix.transformPosition(v.set(p[i], p[i + 1], p[i + 2]));
+            if (!(Math.abs(v.x) <= Float.MAX_VALUE && Math.abs(v.y) <= Float.MAX_VALUE && Math.abs(v.z) <= Float.MAX_VALUE)) {
+                throw new IllegalArgumentException(String.format(java.util.Locale.ROOT,
+                        "the transform moves vertex %d (%s, %s, %s) to (%.3g, %.3g, %.3g), beyond the range of float coordinates",
+                        i / 3 + 1, p[i], p[i + 1], p[i + 2], v.x, v.y, v.z));
+            }
             p[i] = (float) v.x;
             p[i + 1] = (float) v.y;
             p[i + 2] = (float) v.z;

@@ -53,6 +53,10 @@ final class TransformReader {
                 throw v.error(value, "bad '" + key + "[]." + e.getKey() + "': " + x.getMessage());
             }
         }
-        return Transform.of(steps);
+        try {
+            return Transform.of(steps);
+        } catch (IllegalArgumentException x) {
+            throw v.error(node, "bad '" + key + "': " + x.getMessage());
+        }
     }
 }

@@ -183,6 +183,17 @@ class BadInputTest {
             refused("JSON without geometry", files("s.json", "{\n \"shapes\": [ ]\n}\n"), scene("$IN/s.json"), "$IN/s.json:2: ", "no geometry"),
             refused("JSON naming a broken OBJ", files("s.json", "{ \"shapes\": [ { \"type\": \"mesh\", \"file\": \"t.obj\" } ] }\n",
                     "t.obj", SQUARE + "f 1 2 9\n"), scene("$IN/s.json"), "$IN/t.obj:5: ", "vertex index 9 out of range"),
+            refused("JSON transform moving a mesh beyond floats", files("s.json", "{ \"shapes\": [ { \"type\": \"mesh\", \"file\": \"t.obj\",\n"
+                    + "  \"transform\": [ { \"scale\": 1e39 } ] } ] }\n", "t.obj", SQUARE + "f 1 2 3\n"), scene("$IN/s.json"), "$IN/t.obj: ",
+                    "the transform moves vertex 2 (1.0, 0.0, 0.0) to (1.00e+39, 0.00, 0.00), beyond the range of float coordinates"),
+            refused("JSON transform moving triangles beyond floats", files("s.json", "{ \"materials\": { \"m\": { \"type\": \"diffuse\" } },\n"
+                    + " \"shapes\": [ { \"type\": \"triangles\", \"positions\": [0,0,0, 1,0,0, 0,1,0], \"indices\": [0,1,2], \"material\": \"m\",\n"
+                    + "  \"transform\": [ { \"translate\": [0, 0, 1e300] } ] } ] }\n"), scene("$IN/s.json"), "$IN/s.json:3: ",
+                    "'shapes[].transform': the transform moves vertex 1"),
+            refused("JSON transform steps that overflow", files("s.json", "{ \"materials\": { \"m\": { \"type\": \"diffuse\" } },\n"
+                    + " \"shapes\": [ { \"type\": \"triangles\", \"positions\": [0,0,0, 1,0,0, 0,1,0], \"indices\": [0,1,2], \"material\": \"m\",\n"
+                    + "  \"transform\": [ { \"scale\": 1e200 }, { \"scale\": 1e200 } ] } ] }\n"), scene("$IN/s.json"), "$IN/s.json:3: ",
+                    "bad 'shapes[].transform': the steps multiply to a matrix beyond the range of numbers"),
             refused("unknown scene format", files("t.txt", SQUARE), scene("$IN/t.txt"), "$IN/t.txt: ", "unknown scene format"),
             // ---- options ----
             refused("unknown option", files(), scene(CORNELL, "--frobnicate"), "Unknown option: '--frobnicate'"),

@@ -23,6 +23,23 @@ class TransformTest {
     }
 
     @Test
+    void rotationAxesOfAnyLengthGiveTheSameRotation() {
+        Vector3d expected = Transform.rotation(90, 0, 1, 0).applyToPoint(new Vector3d(1, 0, 0), new Vector3d());
+        for (double length : new double[] {1e-200, 1e200}) {     // their squared lengths under- and overflow
+            Vector3d p = Transform.rotation(90, 0, length, 0).applyToPoint(new Vector3d(1, 0, 0), new Vector3d());
+            assertThat(new double[] {p.x, p.y, p.z}).containsExactly(new double[] {expected.x, expected.y, expected.z}, within(1e-12));
+        }
+    }
+
+    @Test
+    void stepsThatOverflowAndVerticesMovedBeyondFloatsAreRefused() {
+        assertThatThrownBy(() -> Transform.scaling(1e200).scale(1e200)).isInstanceOf(IllegalArgumentException.class)
+                .hasMessageContaining("beyond the range of numbers");
+        assertThatThrownBy(() -> Transform.scaling(1e39).apply(TRI)).isInstanceOf(IllegalArgumentException.class)
+                .hasMessage("the transform moves vertex 2 (1.0, 0.0, 0.0) to (1.00e+39, 0.00, 0.00), beyond the range of float coordinates");
+    }
+
+    @Test
     void rotationIsCounterClockwiseLookingDownTheAxis() {
         Vector3d p = Transform.rotation(90, 0, 1, 0).applyToPoint(new Vector3d(1, 0, 0), new Vector3d());
         assertThat(new double[] {p.x, p.y, p.z}).containsExactly(new double[] {0, 0, -1}, within(1e-12));
