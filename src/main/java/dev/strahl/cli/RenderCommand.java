@@ -271,6 +271,9 @@ final class RenderCommand implements Callable<Integer> {
             try {
                 stats = job.awaitStats();
             } catch (IllegalStateException e) {
+                if (e.getCause() instanceof OutOfMemoryError oom) {
+                    throw oom;                         // on a render thread: the same advice as on this one
+                }
                 throw new RenderFailure("the render failed: " + e.getCause(), e.getCause());
             }
         } finally {

@@ -353,6 +353,8 @@ public final class RenderJob implements AutoCloseable {
             RenderStats stats = stats();
             listener.finished(stats);
             result.complete(stats);
+        } catch (ExecutionException e) {
+            result.completeExceptionally(e.getCause());    // what failed on a render thread, not its wrapper
         } catch (Throwable t) {
             result.completeExceptionally(t);
         } finally {
@@ -389,8 +391,28 @@ public final class RenderJob implements AutoCloseable {
         for (WorkerState w : workers) {
             tasks.add(pool.submit(() -> renderTiles(w, nextTile, firstSample, endSample)));
         }
+        awaitAll(tasks);
+    }
+
+    /**
+     * Waits for every task. When one fails, the others are told to stop (they look at
+     * {@code cancelled} between tiles and chunks) and waited for too, so that no thread still
+     * writes into the film once the job has ended; then the first failure is thrown.
+     */
+    private void awaitAll(List<Future<?>> tasks) throws InterruptedException, ExecutionException {
+        ExecutionException first = null;
         for (Future<?> task : tasks) {
-            task.get();
+            try {
+                task.get();
+            } catch (ExecutionException e) {
+                if (first == null) {
+                    first = e;
+                    cancelled = true;
+                }
+            }
+        }
+        if (first != null) {
+            throw first;
         }
     }
 
@@ -406,9 +428,7 @@ public final class RenderJob implements AutoCloseable {
             }));
         }
         try {
-            for (Future<?> t : tasks) {
-                t.get();
-            }
+            awaitAll(tasks);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             cancelled = true;
