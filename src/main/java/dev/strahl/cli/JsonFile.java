@@ -3,15 +3,14 @@ package dev.strahl.cli;
 import com.fasterxml.jackson.core.JsonEncoding;
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonGenerator;
+import dev.strahl.film.AtomicFile;
 import java.io.IOException;
-import java.nio.file.Files;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 
 /**
  * Writes a JSON document for tools ({@code render --stats}, {@code bench --json}): pretty-printed,
- * to a temporary file next to the target that is then renamed, so that a reader never sees half
- * a file.
+ * through {@link AtomicFile}, so that a reader never sees half a file.
  */
 final class JsonFile {
     private JsonFile() {}
@@ -23,17 +22,12 @@ final class JsonFile {
     }
 
     static void write(Path file, Body body) throws IOException {
-        Path dir = file.toAbsolutePath().getParent();
-        Path tmp = Files.createTempFile(dir, "." + file.getFileName(), ".tmp");
-        try {
-            try (JsonGenerator json = new JsonFactory().createGenerator(tmp.toFile(), JsonEncoding.UTF8)) {
-                json.useDefaultPrettyPrinter();
-                body.write(json);
-            }
-            Files.writeString(tmp, System.lineSeparator(), java.nio.file.StandardOpenOption.APPEND);
-            Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } finally {
-            Files.deleteIfExists(tmp);
-        }
+        AtomicFile.write(file, out -> {
+            JsonGenerator json = new JsonFactory().createGenerator(out, JsonEncoding.UTF8);
+            json.disable(JsonGenerator.Feature.AUTO_CLOSE_TARGET).useDefaultPrettyPrinter();
+            body.write(json);
+            json.close();                              // flushes; AtomicFile closes the stream
+            out.write(System.lineSeparator().getBytes(StandardCharsets.UTF_8));
+        });
     }
 }
