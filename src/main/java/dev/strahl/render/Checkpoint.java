@@ -282,7 +282,7 @@ public final class Checkpoint {
         return m;
     }
 
-    /** "width=512;height=512;maxDepth=-1;..." over every record component that decides the image. */
+    /** "width=512;height=512;maxDepth=-1;...;sampler=stratified" over everything that decides the image. */
     static String settingsKey(RenderSettings settings) {
         StringBuilder sb = new StringBuilder();
         for (RecordComponent c : RenderSettings.class.getRecordComponents()) {
@@ -297,7 +297,8 @@ public final class Checkpoint {
             }
             sb.append(sb.length() == 0 ? "" : ";").append(c.getName()).append('=').append(value);
         }
-        return sb.toString();
+        // Not a setting but decides the samples as much: the sample mode of the JVM (-Dstrahl.sampler).
+        return sb.append(";sampler=").append(RenderJob.stratifiedSampler() ? "stratified" : "independent").toString();
     }
 
     /** SHA-256 of the geometry arrays, the materials (exact parameters), the camera and the environment. */

@@ -58,8 +58,12 @@ public final class RenderJob implements AutoCloseable {
     /** The mean image at the end of the last completed pass: what {@link #snapshot()} returns. */
     private volatile Image lastPass;
     private final long startNanos;
+    private final boolean stratified = stratifiedSampler();
+
     /** Stratified sample mode of {@link Rng} (the default), or plain streams with {@code -Dstrahl.sampler=independent}. */
-    private final boolean stratified = !"independent".equals(System.getProperty("strahl.sampler"));
+    static boolean stratifiedSampler() {
+        return !"independent".equals(System.getProperty("strahl.sampler"));
+    }
 
     private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener, Film film) {
         this.settings = settings;
