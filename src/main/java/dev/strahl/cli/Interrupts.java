@@ -58,7 +58,7 @@ final class Interrupts implements AutoCloseable {
 
     /** Whether a signal asked the render to stop. */
     boolean interrupted() {
-        return signals.get() > 0;
+        return exitCode != 0;                  // set before the render is told to stop, so never 0 once it has stopped
     }
 
     /** {@link #SIGINT_EXIT} or {@link #SIGTERM_EXIT} after a signal, else 0. */
@@ -135,8 +135,8 @@ final class Interrupts implements AutoCloseable {
             if (stop == null || written.getCount() == 0) {
                 return;
             }
-            signals.incrementAndGet();
             exitCode = SIGINT_EXIT;
+            signals.incrementAndGet();
             stop.run();
             try {
                 written.await(HOOK_WAIT_SECONDS, TimeUnit.SECONDS);

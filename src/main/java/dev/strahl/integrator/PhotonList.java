@@ -11,6 +11,8 @@ import java.util.Arrays;
 final class PhotonList {
     static final int STRIDE = 10;
     static final int X = 0, WX = 3, R = 6, SEGMENTS = 9;
+    /** The longest array a JVM allocates. */
+    private static final long MAX_LENGTH = Integer.MAX_VALUE - 8;
 
     private float[] data;
     private int size;
@@ -60,12 +62,12 @@ final class PhotonList {
     }
 
     private void ensureCapacity(int photons) {
-        if ((long) photons * STRIDE > data.length) {
-            long grown = Math.max((long) photons * STRIDE, 2L * data.length);
-            if (grown > Integer.MAX_VALUE - 8) {
+        long needed = (long) photons * STRIDE;
+        if (needed > data.length) {
+            if (needed > MAX_LENGTH) {
                 throw new IllegalStateException("too many photons: " + photons);
             }
-            data = Arrays.copyOf(data, (int) grown);
+            data = Arrays.copyOf(data, (int) Math.min(MAX_LENGTH, Math.max(needed, 2L * data.length)));
         }
     }
 }

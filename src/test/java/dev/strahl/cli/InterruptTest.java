@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
+import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -26,6 +27,15 @@ class InterruptTest {
 
     @TempDir
     Path dir;
+    private final List<Process> started = new ArrayList<>();
+
+    /** A failed assertion must not leave a million-spp render running. */
+    @AfterEach
+    void stopWhatIsLeft() throws InterruptedException {
+        for (Process p : started) {
+            p.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+        }
+    }
 
     @Test
     void sigintWritesTheImageSoFarAndACheckpointThatResumes() throws Exception {
@@ -108,8 +118,10 @@ class InterruptTest {
         String classPath = (modules.isBlank() ? "" : modules + File.pathSeparator) + System.getProperty("java.class.path");
         cmd.addAll(List.of("-Xmx512m", "-cp", classPath, Main.class.getName()));
         cmd.addAll(List.of(args));
-        return new ProcessBuilder(cmd).directory(dir.toFile()).redirectOutput(ProcessBuilder.Redirect.DISCARD)
+        Process p = new ProcessBuilder(cmd).directory(dir.toFile()).redirectOutput(ProcessBuilder.Redirect.DISCARD)
                 .redirectError(dir.resolve("stderr.txt").toFile()).start();
+        started.add(p);
+        return p;
     }
 
     private static boolean envResetsSignals() {
@@ -134,10 +146,12 @@ class InterruptTest {
         assertThat(kill.exitValue()).isZero();
     }
 
-    private static void awaitFile(Process p, Path file) throws Exception {
+    private void awaitFile(Process p, Path file) throws Exception {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
         while (!Files.exists(file)) {
-            assumeTrue(p.isAlive(), "the render process ended early");
+            if (!p.isAlive()) {
+                throw new AssertionError("the render process ended early, exit code " + p.exitValue() + ": " + stderr(p));
+            }
             assertThat(System.nanoTime()).as("waiting for " + file).isLessThan(deadline);
             Thread.sleep(20);
         }
