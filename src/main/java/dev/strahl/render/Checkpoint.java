@@ -108,7 +108,7 @@ public final class Checkpoint {
      * @return bytes
      */
     public long fileSize() {
-        return headerSize() + (long) width * height * PIXEL_BYTES + 4;
+        return headerSize(settingsKey) + (long) width * height * PIXEL_BYTES + 4;
     }
 
     /**
@@ -185,8 +185,7 @@ public final class Checkpoint {
             int w = in.readInt();
             int h = in.readInt();
             // The size the header announces, checked before anything is allocated
-            long expected = MAGIC.length + 4 + 32 + 2 + settings.getBytes(StandardCharsets.UTF_8).length + 4 + 4 + 4 + 8 + 8
-                    + (long) Math.max(w, 0) * Math.max(h, 0) * PIXEL_BYTES + 4;
+            long expected = headerSize(settings) + (long) Math.max(w, 0) * Math.max(h, 0) * PIXEL_BYTES + 4;
             if (w <= 0 || h <= 0 || size > expected) {
                 throw new CheckpointException(file, "corrupt checkpoint (" + size + " bytes for a " + w + "x" + h + " film)");
             }
@@ -248,8 +247,9 @@ public final class Checkpoint {
         }
     }
 
-    private int headerSize() {
-        int utf = 2 + settingsKey.getBytes(StandardCharsets.UTF_8).length;   // ASCII in practice, so modified UTF-8 = UTF-8
+    /** Magic, version, digest, the settings in writeUTF's form, width, height, spp, invalid count, seconds. */
+    private static int headerSize(String settings) {
+        int utf = 2 + settings.getBytes(StandardCharsets.UTF_8).length;   // ASCII in practice, so modified UTF-8 = UTF-8
         return MAGIC.length + 4 + 32 + utf + 4 + 4 + 4 + 8 + 8;
     }
 
