@@ -52,17 +52,6 @@ public final class OwenSobol {
         return TABLES[i & 0xff] ^ TABLES[256 + (i >>> 8 & 0xff)] ^ TABLES[512 + (i >>> 16 & 0xff)] ^ TABLES[768 + (i >>> 24)];
     }
 
-    /** The same by the definition (XOR of the direction numbers of the set bits), for tests. */
-    static int sobol1Reference(int i) {
-        int x = 0;
-        for (int k = 0; k < 32; k++) {
-            if ((i >>> k & 1) != 0) {
-                x ^= DIRECTIONS[k];
-            }
-        }
-        return x;
-    }
-
     /**
      * Laine and Karras' hash-based permutation, which on bit-reversed values acts like an Owen
      * scramble: each output bit depends only on the input bits below it (the constants are

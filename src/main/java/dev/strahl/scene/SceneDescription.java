@@ -15,7 +15,7 @@ import org.joml.Vector3d;
 import org.joml.Vector3dc;
 
 /**
- * A scene file as data: what {@link JsonSceneReader} parses and {@link SceneFileWriter} writes,
+ * A scene file as data: what {@link JsonSceneReader} parses (and the tests' SceneFileWriter writes),
  * key for key, before anything is loaded or built. Two descriptions are equal when they say the
  * same, so that a file written and read back can be compared with the original.
  *
