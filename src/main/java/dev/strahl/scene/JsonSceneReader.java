@@ -45,6 +45,8 @@ final class JsonSceneReader {
     static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment");
     static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov");
     static final Set<String> FILM_KEYS = Set.of("width", "height");
+    /** The integrators' names, as IntegratorKind has them (a test holds the two equal: this layer cannot see it). */
+    static final List<String> INTEGRATORS = List.of("path", "direct", "whitted", "photon");
     static final Set<String> INTEGRATOR_KEYS = Set.of("type", "spp", "maxDepth", "seed", "lightSamples", "hemisphere", "photons",
             "photonRadius");
 
@@ -281,6 +283,10 @@ final class JsonSceneReader {
             Map<String, JsonNode> i = v.object(integrator, "integrator");
             v.allowOnly(i, "integrator", INTEGRATOR_KEYS);
             type = i.containsKey("type") ? v.string(i.get("type"), "integrator.type") : null;
+            if (type != null && !INTEGRATORS.contains(type)) {
+                throw new SceneException(file, i.get("type").line, "'integrator.type': unknown integrator '" + type + "' (known: "
+                        + String.join(", ", INTEGRATORS) + ")");
+            }
             spp = i.containsKey("spp") ? v.integer(i.get("spp"), "integrator.spp", 1, Integer.MAX_VALUE) : null;
             if (i.containsKey("maxDepth")) {
                 maxDepth = v.integer(i.get("maxDepth"), "integrator.maxDepth", -1, Integer.MAX_VALUE);

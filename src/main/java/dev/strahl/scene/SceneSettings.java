@@ -7,7 +7,8 @@ import dev.strahl.sampling.HemisphereSampling;
  * is null where the file says nothing; {@code RenderSettings.withScene} applies the others, and
  * {@code RenderSettings.withSceneFile} does so except for the {@link Setting}s given on a command
  * line, which win. The integrator is kept by name, because the scene layer sits below the
- * integrators; an unknown name is refused when the settings are applied.
+ * integrators; the scene file reader refuses an unknown name at its line, and settings made in
+ * code with one are refused when they are applied.
  *
  * @param width           film width in pixels, or null
  * @param height          film height in pixels, or null

@@ -74,10 +74,10 @@ class RenderSceneSettingsTest {
     }
 
     @Test
-    void anUnknownIntegratorInTheFileIsOneLineNamingTheFile() throws Exception {
+    void anUnknownIntegratorInTheFileIsOneLineNamingTheFileAndLine() throws Exception {
         Path s = scene("{ \"type\": \"bidir\" }");
         var run = RenderCommandTest.strahl("render", s.toString(), "-o", dir.resolve("a.png").toString());
         assertThat(run.code()).isEqualTo(2);
-        assertThat(run.err().strip()).isEqualTo("strahl: " + s + ": unknown integrator 'bidir' (known: path, direct, whitted, photon)");
+        assertThat(run.err().strip()).isEqualTo("strahl: " + s + ":2: 'integrator.type': unknown integrator 'bidir' (known: path, direct, whitted, photon)");
     }
 }

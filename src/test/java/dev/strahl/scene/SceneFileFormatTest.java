@@ -119,6 +119,15 @@ class SceneFileFormatTest {
     }
 
     @Test
+    void anUnknownIntegratorIsRefusedAtItsLineAndTheReaderKnowsEveryIntegrator() throws Exception {
+        Path file = write("i.json", "{\n \"integrator\": {\n  \"type\": \"bidir\" },\n " + M + " \"shapes\": [ " + SPHERE + " ] }");
+        var e = catchThrowableOfType(SceneException.class, () -> JsonSceneReader.parse(file));
+        assertThat(e).hasMessage(file + ":3: 'integrator.type': unknown integrator 'bidir' (known: path, direct, whitted, photon)");
+        assertThat(JsonSceneReader.INTEGRATORS).containsExactlyElementsOf(
+                java.util.Arrays.stream(IntegratorKind.values()).map(IntegratorKind::id).toList());
+    }
+
+    @Test
     void photonKeysAreOptionalAndAWholeRadiusIsANumber() throws Exception {
         write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
         String shapes = "\"shapes\": [ { \"type\": \"mesh\", \"file\": \"tri.obj\" } ] }";

@@ -170,7 +170,7 @@ class ViewerEndToEndTest {
 
             // --- settings that cannot be applied: a dialog, and the scene on screen stays -----------
             var before = c.scene();
-            assertThat(errorDialogOnOpening(ui, bad)).isEqualTo(bad + ": unknown integrator 'bidir' (known: "
+            assertThat(errorDialogOnOpening(ui, bad)).isEqualTo(bad + ":1: 'integrator.type': unknown integrator 'bidir' (known: "
                     + String.join(", ", Arrays.stream(IntegratorKind.values()).map(IntegratorKind::id).toList()) + ")");
             assertThat(c.scene()).isSameAs(before);
             assertThat(onEdt(ui.frame::getTitle)).endsWith("b.json");
