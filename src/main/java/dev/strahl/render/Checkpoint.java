@@ -298,7 +298,7 @@ public final class Checkpoint {
             sb.append(sb.length() == 0 ? "" : ";").append(c.getName()).append('=').append(value);
         }
         // Not a setting but decides the samples as much: the sample mode of the JVM (-Dstrahl.sampler).
-        return sb.append(";sampler=").append(RenderJob.stratifiedSampler() ? "stratified" : "independent").toString();
+        return sb.append(";sampler=").append(RenderWorkers.stratifiedSampler() ? "stratified" : "independent").toString();
     }
 
     /** SHA-256 of the geometry arrays, the materials (exact parameters), the camera and the environment. */

@@ -1,26 +1,15 @@
 package dev.strahl.render;
 
-import dev.strahl.camera.PinholeRays;
 import dev.strahl.film.Film;
 import dev.strahl.film.Image;
-import dev.strahl.geometry.Ray;
 import dev.strahl.integrator.Integrator;
-import dev.strahl.integrator.Parallel;
-import dev.strahl.math.Rgb;
-import dev.strahl.sampling.Rng;
 import dev.strahl.scene.Scene;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * A render running in the background: passes over the whole image, each adding a few samples
@@ -44,45 +33,24 @@ public final class RenderJob implements AutoCloseable {
     private final RenderSettings settings;
     private final RenderListener listener;
     private final Film film;
-    private final PinholeRays cameraRays;
     private final Integrator integrator;
     private final int threads;
-    private final ExecutorService pool;
-    private final AtomicLong samplesDone = new AtomicLong();
-    private final AtomicLong invalidSamples = new AtomicLong();
+    private final RenderWorkers workers;
     private final CompletableFuture<RenderStats> result = new CompletableFuture<>();
-    private final WorkerState[] workers;
-    private volatile boolean cancelled;
     private volatile int completedSpp;
     private volatile long restoredSamples;           // held by a resumed film before this job began
     /** The mean image at the end of the last completed pass: what {@link #snapshot()} returns. */
     private volatile Image lastPass;
     private final long startNanos;
-    private final boolean stratified = stratifiedSampler();
-
-    /** Stratified sample mode of {@link Rng} (the default), or plain streams with {@code -Dstrahl.sampler=independent}. */
-    static boolean stratifiedSampler() {
-        return !"independent".equals(System.getProperty("strahl.sampler"));
-    }
 
     private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener, Film film) {
         this.settings = settings;
         this.listener = listener;
         this.film = film != null ? film : new Film(settings.width(), settings.height());
-        this.cameraRays = scene.camera().rays(settings.width(), settings.height());
         this.integrator = integrator;
         this.threads = settings.effectiveThreads();
-        int job = JOB_NUMBER.incrementAndGet();
-        AtomicInteger workerNumber = new AtomicInteger();
-        this.pool = Executors.newFixedThreadPool(threads, r -> {
-            Thread t = new Thread(r, "strahl-render-" + job + "-" + workerNumber.incrementAndGet());
-            t.setDaemon(true);
-            return t;
-        });
-        this.workers = new WorkerState[threads];
-        for (int i = 0; i < threads; i++) {
-            workers[i] = new WorkerState(integrator.newWorker());
-        }
+        this.workers = new RenderWorkers(this.film, scene.camera().rays(settings.width(), settings.height()), integrator,
+                settings.seed(), threads, "strahl-render-" + JOB_NUMBER.incrementAndGet());
         this.startNanos = System.nanoTime();
     }
 
@@ -217,7 +185,7 @@ public final class RenderJob implements AutoCloseable {
      */
     public double progress() {
         double total = (double) settings.samplesPerPixel() * settings.width() * settings.height();
-        return Math.min(1, (restoredSamples + samplesDone.get()) / total);
+        return Math.min(1, (restoredSamples + workers.samplesDone()) / total);
     }
 
     /**
@@ -226,7 +194,7 @@ public final class RenderJob implements AutoCloseable {
      * @return the count
      */
     public long samplesDone() {
-        return samplesDone.get();
+        return workers.samplesDone();
     }
 
     /**
@@ -235,7 +203,7 @@ public final class RenderJob implements AutoCloseable {
      * @return the count so far
      */
     public long invalidSamples() {
-        return invalidSamples.get();
+        return workers.invalidSamples();
     }
 
     /**
@@ -249,7 +217,7 @@ public final class RenderJob implements AutoCloseable {
 
     /** Asks the workers to stop soon; {@link #awaitCompletion()} then returns the film as it is. */
     public void cancel() {
-        cancelled = true;
+        workers.cancel();
     }
 
     /**
@@ -330,24 +298,24 @@ public final class RenderJob implements AutoCloseable {
                 lastPass = film.toImage();                 // what the restored film holds, until a pass ends
             }
             int pass = 0;
-            while (start < spp && !cancelled) {
+            while (start < spp && !workers.cancelled()) {
                 int size = prepares ? 1 : settings.samplesPerPass() > 0 ? settings.samplesPerPass() : autoPassSize(pass);
                 int end = Math.min(spp, start + size);
                 if (prepares) {
-                    integrator.prepareSample(settings.seed(), start, this::runChunks);
-                    if (cancelled) {
+                    integrator.prepareSample(settings.seed(), start, workers);
+                    if (workers.cancelled()) {
                         break;
                     }
                 }
-                renderPass(start, end);
-                if (cancelled) {
+                workers.renderPass(start, end);
+                if (workers.cancelled()) {
                     break;
                 }
                 completedSpp = end;
                 Image image = film.toImage();
                 lastPass = image;
                 double seconds = elapsedSeconds();
-                listener.passFinished(new RenderListener.Pass(pass + 1, end, samplesDone.get(), seconds), image);
+                listener.passFinished(new RenderListener.Pass(pass + 1, end, workers.samplesDone(), seconds), image);
                 start = end;
                 pass++;
                 if (!settings.timeLimit().isZero() && elapsedSeconds() >= settings.timeLimit().toNanos() * 1e-9) {
@@ -362,7 +330,7 @@ public final class RenderJob implements AutoCloseable {
         } catch (Throwable t) {
             result.completeExceptionally(t);
         } finally {
-            pool.shutdownNow();
+            workers.shutdown();
         }
     }
 
@@ -382,122 +350,7 @@ public final class RenderJob implements AutoCloseable {
     }
 
     private RenderStats stats() {
-        long rays = 0;
-        for (WorkerState w : workers) {
-            rays += w.integrator.rayCount();
-        }
-        return new RenderStats(elapsedSeconds(), samplesDone.get(), rays, completedSpp, threads, cancelled, invalidSamples.get());
-    }
-
-    private void renderPass(int firstSample, int endSample) throws InterruptedException, ExecutionException {
-        AtomicInteger nextTile = new AtomicInteger();
-        List<Future<?>> tasks = new ArrayList<>(threads);
-        for (WorkerState w : workers) {
-            tasks.add(pool.submit(() -> renderTiles(w, nextTile, firstSample, endSample)));
-        }
-        awaitAll(tasks);
-    }
-
-    /**
-     * Waits for every task. When one fails, the others are told to stop (they look at
-     * {@code cancelled} between tiles and chunks) and waited for too, so that no thread still
-     * writes into the film once the job has ended; then the first failure is thrown.
-     */
-    private void awaitAll(List<Future<?>> tasks) throws InterruptedException, ExecutionException {
-        ExecutionException first = null;
-        for (Future<?> task : tasks) {
-            try {
-                task.get();
-            } catch (ExecutionException e) {
-                if (first == null) {
-                    first = e;
-                    cancelled = true;
-                }
-            }
-        }
-        if (first != null) {
-            throw first;
-        }
-    }
-
-    /** {@link Parallel} on the job's workers: chunks are taken from an atomic counter, each run with its thread's worker. */
-    private void runChunks(int count, Parallel.Task task) {
-        AtomicInteger next = new AtomicInteger();
-        List<Future<?>> tasks = new ArrayList<>(threads);
-        for (WorkerState w : workers) {
-            tasks.add(pool.submit(() -> {
-                for (int i = next.getAndIncrement(); i < count && !cancelled; i = next.getAndIncrement()) {
-                    task.run(i, w.integrator);
-                }
-            }));
-        }
-        try {
-            awaitAll(tasks);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            cancelled = true;
-            throw new IllegalStateException("interrupted while preparing a pass", e);
-        } catch (ExecutionException e) {
-            if (e.getCause() instanceof RuntimeException r) {
-                throw r;
-            }
-            if (e.getCause() instanceof Error err) {
-                throw err;
-            }
-            throw new IllegalStateException(e.getCause());
-        }
-    }
-
-    private void renderTiles(WorkerState w, AtomicInteger nextTile, int firstSample, int endSample) {
-        int tilesX = film.tileCountX();
-        int tileCount = tilesX * film.tileCountY();
-        long seed = settings.seed();
-        for (int tile = nextTile.getAndIncrement(); tile < tileCount && !cancelled; tile = nextTile.getAndIncrement()) {
-            int x0 = (tile % tilesX) * Film.TILE;
-            int y0 = (tile / tilesX) * Film.TILE;
-            int x1 = Math.min(x0 + Film.TILE, film.width());
-            int y1 = Math.min(y0 + Film.TILE, film.height());
-            long invalid = 0;
-            for (int y = y0; y < y1 && !cancelled; y++) {
-                long rowSamples = 0;
-                for (int x = x0; x < x1; x++) {
-                    int pixel = film.pixelIndex(x, y);
-                    // a restored film may hold more samples in some pixels: they go on from there
-                    int s0 = Math.max(firstSample, film.sampleCountAt(pixel));
-                    rowSamples += Math.max(0, endSample - s0);
-                    for (int s = s0; s < endSample; s++) {
-                        if (stratified) {
-                            w.rng.startSample(seed, x, y, s);
-                        } else {
-                            w.rng.seed(Rng.streamSeed(seed, x, y, s));
-                        }
-                        cameraRays.generate(x + w.rng.nextDouble(), y + w.rng.nextDouble(), w.ray);
-                        w.integrator.radiance(w.ray, w.rng, w.radiance);
-                        if (w.radiance.isFinite()) {
-                            film.add(pixel, w.radiance.r, w.radiance.g, w.radiance.b);
-                        } else {
-                            film.add(pixel, 0, 0, 0);
-                            invalid++;
-                        }
-                    }
-                }
-                samplesDone.addAndGet(rowSamples);
-            }
-            if (invalid > 0) {
-                invalidSamples.addAndGet(invalid);
-            }
-        }
-    }
-
-    /** What one worker thread owns: reused for every sample, so the loop allocates nothing. */
-    private static final class WorkerState {
-        final Integrator.Worker integrator;
-        final Rng rng = new Rng();
-        final Ray ray = new Ray();
-        final Rgb.Mutable radiance = new Rgb.Mutable();
-
-        WorkerState(Integrator.Worker integrator) {
-            this.integrator = integrator;
-        }
+        return new RenderStats(elapsedSeconds(), workers.samplesDone(), workers.rayCount(), completedSpp, threads, workers.cancelled(),
+                workers.invalidSamples());
     }
 }

@@ -1,0 +1,200 @@
+package dev.strahl.render;
+
+import dev.strahl.camera.PinholeRays;
+import dev.strahl.film.Film;
+import dev.strahl.geometry.Ray;
+import dev.strahl.integrator.Integrator;
+import dev.strahl.integrator.Parallel;
+import dev.strahl.math.Rgb;
+import dev.strahl.sampling.Rng;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * The threads of one render job and what each owns: a fixed pool whose workers take
+ * {@value Film#TILE}-pixel tiles from an atomic counter and add a pass's samples of each pixel in
+ * index order, with the random numbers of (seed, pixel, sample index) alone; and the same
+ * threads for an integrator's per-sample preparation ({@link Parallel}).
+ */
+final class RenderWorkers implements Parallel {
+    private final Film film;
+    private final PinholeRays cameraRays;
+    private final long seed;
+    private final boolean stratified = stratifiedSampler();
+    private final int threads;
+    private final ExecutorService pool;
+    private final WorkerState[] workers;
+    private final AtomicLong samplesDone = new AtomicLong();
+    private final AtomicLong invalidSamples = new AtomicLong();
+    private volatile boolean cancelled;
+
+    /** Stratified sample mode of {@link Rng} (the default), or plain streams with {@code -Dstrahl.sampler=independent}. */
+    static boolean stratifiedSampler() {
+        return !"independent".equals(System.getProperty("strahl.sampler"));
+    }
+
+    RenderWorkers(Film film, PinholeRays cameraRays, Integrator integrator, long seed, int threads, String name) {
+        this.film = film;
+        this.cameraRays = cameraRays;
+        this.seed = seed;
+        this.threads = threads;
+        AtomicInteger workerNumber = new AtomicInteger();
+        this.pool = Executors.newFixedThreadPool(threads, r -> {
+            Thread t = new Thread(r, name + "-" + workerNumber.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        });
+        this.workers = new WorkerState[threads];
+        for (int i = 0; i < threads; i++) {
+            workers[i] = new WorkerState(integrator.newWorker());
+        }
+    }
+
+    /** Asks the threads to stop after their current row or chunk. */
+    void cancel() {
+        cancelled = true;
+    }
+
+    boolean cancelled() {
+        return cancelled;
+    }
+
+    long samplesDone() {
+        return samplesDone.get();
+    }
+
+    long invalidSamples() {
+        return invalidSamples.get();
+    }
+
+    long rayCount() {
+        long rays = 0;
+        for (WorkerState w : workers) {
+            rays += w.integrator.rayCount();
+        }
+        return rays;
+    }
+
+    void shutdown() {
+        pool.shutdownNow();
+    }
+
+    /** Renders samples [firstSample, endSample) of every pixel; returns when all threads are done with it. */
+    void renderPass(int firstSample, int endSample) throws InterruptedException, ExecutionException {
+        AtomicInteger nextTile = new AtomicInteger();
+        List<Future<?>> tasks = new ArrayList<>(threads);
+        for (WorkerState w : workers) {
+            tasks.add(pool.submit(() -> renderTiles(w, nextTile, firstSample, endSample)));
+        }
+        awaitAll(tasks);
+    }
+
+    /**
+     * Waits for every task. When one fails, the others are told to stop (they look at
+     * {@code cancelled} between tiles and chunks) and waited for too, so that no thread still
+     * writes into the film once the job has ended; then the first failure is thrown.
+     */
+    private void awaitAll(List<Future<?>> tasks) throws InterruptedException, ExecutionException {
+        ExecutionException first = null;
+        for (Future<?> task : tasks) {
+            try {
+                task.get();
+            } catch (ExecutionException e) {
+                if (first == null) {
+                    first = e;
+                    cancelled = true;
+                }
+            }
+        }
+        if (first != null) {
+            throw first;
+        }
+    }
+
+    /** {@link Parallel} on the job's workers: chunks are taken from an atomic counter, each run with its thread's worker. */
+    @Override
+    public void forEach(int count, Parallel.Task task) {
+        AtomicInteger next = new AtomicInteger();
+        List<Future<?>> tasks = new ArrayList<>(threads);
+        for (WorkerState w : workers) {
+            tasks.add(pool.submit(() -> {
+                for (int i = next.getAndIncrement(); i < count && !cancelled; i = next.getAndIncrement()) {
+                    task.run(i, w.integrator);
+                }
+            }));
+        }
+        try {
+            awaitAll(tasks);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            cancelled = true;
+            throw new IllegalStateException("interrupted while preparing a pass", e);
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof RuntimeException r) {
+                throw r;
+            }
+            if (e.getCause() instanceof Error err) {
+                throw err;
+            }
+            throw new IllegalStateException(e.getCause());
+        }
+    }
+
+    private void renderTiles(WorkerState w, AtomicInteger nextTile, int firstSample, int endSample) {
+        int tilesX = film.tileCountX();
+        int tileCount = tilesX * film.tileCountY();
+        for (int tile = nextTile.getAndIncrement(); tile < tileCount && !cancelled; tile = nextTile.getAndIncrement()) {
+            int x0 = (tile % tilesX) * Film.TILE;
+            int y0 = (tile / tilesX) * Film.TILE;
+            int x1 = Math.min(x0 + Film.TILE, film.width());
+            int y1 = Math.min(y0 + Film.TILE, film.height());
+            long invalid = 0;
+            for (int y = y0; y < y1 && !cancelled; y++) {
+                long rowSamples = 0;
+                for (int x = x0; x < x1; x++) {
+                    int pixel = film.pixelIndex(x, y);
+                    // a restored film may hold more samples in some pixels: they go on from there
+                    int s0 = Math.max(firstSample, film.sampleCountAt(pixel));
+                    rowSamples += Math.max(0, endSample - s0);
+                    for (int s = s0; s < endSample; s++) {
+                        if (stratified) {
+                            w.rng.startSample(seed, x, y, s);
+                        } else {
+                            w.rng.seed(Rng.streamSeed(seed, x, y, s));
+                        }
+                        cameraRays.generate(x + w.rng.nextDouble(), y + w.rng.nextDouble(), w.ray);
+                        w.integrator.radiance(w.ray, w.rng, w.radiance);
+                        if (w.radiance.isFinite()) {
+                            film.add(pixel, w.radiance.r, w.radiance.g, w.radiance.b);
+                        } else {
+                            film.add(pixel, 0, 0, 0);
+                            invalid++;
+                        }
+                    }
+                }
+                samplesDone.addAndGet(rowSamples);
+            }
+            if (invalid > 0) {
+                invalidSamples.addAndGet(invalid);
+            }
+        }
+    }
+
+    /** What one worker thread owns: reused for every sample, so the loop allocates nothing. */
+    private static final class WorkerState {
+        final Integrator.Worker integrator;
+        final Rng rng = new Rng();
+        final Ray ray = new Ray();
+        final Rgb.Mutable radiance = new Rgb.Mutable();
+
+        WorkerState(Integrator.Worker integrator) {
+            this.integrator = integrator;
+        }
+    }
+}
