@@ -334,7 +334,7 @@ public final class RenderJob implements AutoCloseable {
         }
     }
 
-    private static long samplesIn(Film film) {
+    static long samplesIn(Film film) {
         long n = 0;
         for (int y = 0; y < film.height(); y++) {
             for (int x = 0; x < film.width(); x++) {

@@ -69,20 +69,10 @@ class RenderJobFailureTest {
             assertThat(failure).isInstanceOf(IllegalStateException.class).hasCause(error);   // the error itself, unwrapped
             assertThat(failure.getCause()).isSameAs(error);
             film = job.film();
-            samplesAtTheEnd = samplesIn(film);
+            samplesAtTheEnd = RenderJob.samplesIn(film);
         }
         assertThat(samplesAtTheEnd).as("the failure came long before the last tile").isLessThan(256L * 256 * 4);
         Thread.sleep(200);
-        assertThat(samplesIn(film)).as("samples written after the job ended").isEqualTo(samplesAtTheEnd);
-    }
-
-    private static long samplesIn(Film film) {
-        long n = 0;
-        for (int y = 0; y < film.height(); y++) {
-            for (int x = 0; x < film.width(); x++) {
-                n += film.sampleCount(x, y);
-            }
-        }
-        return n;
+        assertThat(RenderJob.samplesIn(film)).as("samples written after the job ended").isEqualTo(samplesAtTheEnd);
     }
 }
