@@ -5,7 +5,6 @@ import dev.strahl.geometry.Geometry;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.ForkJoinTask;
 import java.util.concurrent.RecursiveAction;
-import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * Top-down construction of a binary BVH with the binned surface-area heuristic (Wald, "On fast
@@ -13,8 +12,10 @@ import java.util.concurrent.atomic.AtomicInteger;
  * {@value #BINS} bins on all three axes in one pass, the cheapest bin boundary taken), then
  * collapsed into the four-wide tree of {@link Bvh} by repeatedly opening the child of largest
  * surface area (as Embree and pbrt's wide BVHs do). Large ranges are built in parallel on a
- * fork/join pool; the result does not depend on the thread count, because the final tree is
- * written in one depth-first pass over the binary one.
+ * fork/join pool, and the top splits, which have the references to themselves, bin them in
+ * parallel chunks. The result does not depend on the thread count: chunks' bins are merged by
+ * sums, minima and maxima, which do not depend on the order, and the final tree is written in
+ * one depth-first pass over the binary one.
  *
  * <p>Leaves hold at most {@value #MAX_LEAF} primitives, all triangles or all spheres, so that
  * they are one contiguous range of the reordered {@link Geometry} (no index indirection).
@@ -28,8 +29,12 @@ final class BvhBuilder {
     static final double TRAVERSAL_COST = 2.0;
     private static final int MAX_SAH_DEPTH = 40;
     private static final int PARALLEL_MIN = 1 << 14;
+    /** Ranges at least this large bin in parallel, in chunks of {@link #CHUNK} references. */
+    private static final int PARALLEL_BIN_MIN = 1 << 16;
+    private static final int CHUNK = 1 << 14;
 
     private final Geometry geometry;
+    private final int threads;
     private final int n;
     private final int triangleCount;
     // Per reference position k (not primitive: partitioning moves them along with ref, so that
@@ -38,31 +43,21 @@ final class BvhBuilder {
     private final float[] centroid;
     private final int[] ref;           // primitive ids, partitioned in place into leaf ranges
     // Binary nodes: box (6 floats), and a = left child, b = right child (interior) or a = start, b = ~count (leaf).
+    // The subtree over ref[start, end) owns nodes [root, root + 2 (end - start) - 1), the most
+    // it can need: children are numbered from their ranges, without a shared counter, and each
+    // thread writes its own stretch of the arrays.
     private final float[] nodeBox;
     private final int[] nodeA, nodeB;
-    private final AtomicInteger nodes = new AtomicInteger(1);
 
-    BvhBuilder(Geometry geometry) {
+    /** A builder on {@code threads} threads; the tree is the same for any number. */
+    BvhBuilder(Geometry geometry, int threads) {
         this.geometry = geometry;
+        this.threads = threads;
         this.n = geometry.primitiveCount();
         this.triangleCount = geometry.triangleCount();
         this.primKey = new int[6 * n];
         this.centroid = new float[3 * n];
         this.ref = new int[n];
-        Aabb box = new Aabb();
-        for (int i = 0; i < n; i++) {
-            box.reset();
-            geometry.includeBounds(i, box);
-            int o = 6 * i;
-            float[] b = {roundDown(box.minX), roundDown(box.minY), roundDown(box.minZ), roundUp(box.maxX), roundUp(box.maxY), roundUp(box.maxZ)};
-            for (int c = 0; c < 6; c++) {
-                primKey[o + c] = key(b[c]);
-            }
-            for (int c = 0; c < 3; c++) {
-                centroid[3 * i + c] = 0.5f * b[c] + 0.5f * b[3 + c];
-            }
-            ref[i] = i;
-        }
         int capacity = Math.max(1, 2 * n);
         this.nodeBox = new float[6 * capacity];
         this.nodeA = new int[capacity];
@@ -73,18 +68,63 @@ final class BvhBuilder {
         if (n == 0) {
             return new Bvh(geometry, new float[0], 0);
         }
-        rangeBox(0, n, 0);
-        if (n >= PARALLEL_MIN && Runtime.getRuntime().availableProcessors() > 1) {
-            ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+        if (n >= PARALLEL_MIN && threads > 1) {
+            ForkJoinPool pool = new ForkJoinPool(threads);
             try {
-                pool.invoke(new Split(0, 0, n, 0));
+                pool.invoke(new Top());
             } finally {
                 pool.shutdown();
             }
         } else {
-            new Split(0, 0, n, 0).compute();
+            new Top().compute();
         }
         return new BvhWriter(geometry, ref, nodeA, nodeB, nodeBox).write();
+    }
+
+    /** The whole build: the references' boxes (in parallel chunks in a pool), then the splits. */
+    private final class Top extends RecursiveAction {
+        @Override
+        protected void compute() {
+            if (ForkJoinTask.inForkJoinPool()) {
+                References[] chunks = new References[(n + CHUNK - 1) / CHUNK];
+                for (int c = 0; c < chunks.length; c++) {
+                    chunks[c] = new References(c * CHUNK, Math.min(n, (c + 1) * CHUNK));
+                }
+                ForkJoinTask.invokeAll(chunks);
+            } else {
+                new References(0, n).compute();
+            }
+            rangeBox(0, n, 0);
+            split(0, 0, n, 0);
+        }
+    }
+
+    /** References [from, to): reference k = primitive k, its box rounded outwards, as keys, and its centroid. */
+    private final class References extends RecursiveAction {
+        private final int from, to;
+
+        References(int from, int to) {
+            this.from = from;
+            this.to = to;
+        }
+
+        @Override
+        protected void compute() {
+            Aabb box = new Aabb();
+            for (int i = from; i < to; i++) {
+                box.reset();
+                geometry.includeBounds(i, box);
+                int o = 6 * i;
+                float[] b = {roundDown(box.minX), roundDown(box.minY), roundDown(box.minZ), roundUp(box.maxX), roundUp(box.maxY), roundUp(box.maxZ)};
+                for (int c = 0; c < 6; c++) {
+                    primKey[o + c] = key(b[c]);
+                }
+                for (int c = 0; c < 3; c++) {
+                    centroid[3 * i + c] = 0.5f * b[c] + 0.5f * b[3 + c];
+                }
+                ref[i] = i;
+            }
+        }
     }
 
     /** Per-thread binning memory, reused at every split a thread makes. */
@@ -96,6 +136,40 @@ final class BvhBuilder {
         final float[] centroidBounds = new float[6];
         int bins;                                           // bins in use at this split
         int lastBin;
+
+        /** Adds another chunk's bins (order-independent: sums, minima, maxima). */
+        void merge(Bins o) {
+            for (int axis = 0; axis < 3; axis++) {
+                for (int b = 0; b < bins; b++) {
+                    int i = axis * BINS + b;
+                    count[i] += o.count[i];
+                    grow(box, 6 * i, o.box[6 * i], o.box[6 * i + 1], o.box[6 * i + 2], o.box[6 * i + 3], o.box[6 * i + 4], o.box[6 * i + 5]);
+                }
+            }
+        }
+    }
+
+    /** One chunk of a large range: its centroid bounds ({@code cb} null) or its bins over {@code cb}. */
+    private final class BinChunk extends RecursiveAction {
+        private final int start, end;
+        private final float[] cb;
+        final Bins bins = new Bins();
+
+        BinChunk(int start, int end, float[] cb, int nb) {
+            this.start = start;
+            this.end = end;
+            this.cb = cb;
+            bins.bins = nb;
+        }
+
+        @Override
+        protected void compute() {
+            if (cb == null) {
+                centroidBounds(start, end, bins.centroidBounds);
+            } else {
+                binAll(bins, start, end, cb);
+            }
+        }
     }
 
     private static final ThreadLocal<Bins> BINS_SCRATCH = ThreadLocal.withInitial(Bins::new);
@@ -123,24 +197,26 @@ final class BvhBuilder {
             makeLeaf(node, start, count);
             return;
         }
-        Bins s = BINS_SCRATCH.get();
-        // Centroid bounds decide the binning range.
-        float[] cb = s.centroidBounds;
-        setEmpty(cb);
-        for (int k = start; k < end; k++) {
-            int p = 3 * k;
-            for (int c = 0; c < 3; c++) {
-                float v = centroid[p + c];
-                cb[c] = Math.min(cb[c], v);
-                cb[3 + c] = Math.max(cb[3 + c], v);
-            }
-        }
+        // A large range bins in parallel and may run other splits while it waits for its chunks:
+        // those use the thread's scratch bins, so it takes its own.
+        boolean parallel = count >= PARALLEL_BIN_MIN && ForkJoinTask.inForkJoinPool();
+        Bins s = parallel ? new Bins() : BINS_SCRATCH.get();
         // Fewer bins for few primitives: the sweep costs as much per bin as the binning per primitive.
         s.bins = Math.min(BINS, Math.max(2, count));
+        boolean sah = depth < MAX_SAH_DEPTH;
+        // Centroid bounds decide the binning range.
+        float[] cb = s.centroidBounds;
+        if (parallel) {
+            binParallel(s, start, end, sah);
+        } else {
+            centroidBounds(start, end, cb);
+            if (sah) {
+                binAll(s, start, end, cb);
+            }
+        }
         int bestAxis = -1, bestBin = -1;
         double bestCost = Double.POSITIVE_INFINITY;
-        if (depth < MAX_SAH_DEPTH) {
-            binAll(s, start, end, cb);
+        if (sah) {
             for (int axis = 0; axis < 3; axis++) {
                 if (!(cb[3 + axis] > cb[axis])) {
                     continue;
@@ -163,18 +239,17 @@ final class BvhBuilder {
             bestAxis = -1;            // mixed triangles and spheres: split by type below
         }
 
-        int mid;
-        int left = nodes.getAndAdd(2), right = left + 1;
+        int mid = bestAxis >= 0 ? partition(start, end, bestAxis, cb[bestAxis], binScale(cb, bestAxis, s.bins), s.bins, bestBin)
+                : isHomogeneous(start, end) ? medianSplit(start, end, cb) : typeSplit(start, end);
+        assert mid > start && mid < end;
+        int left = node + 1, right = node + 2 * (mid - start);
         if (bestAxis >= 0) {
-            mid = partition(start, end, bestAxis, cb[bestAxis], binScale(cb, bestAxis, s.bins), s.bins, bestBin);
             binsBox(s, bestAxis, 0, bestBin + 1, 6 * left);
             binsBox(s, bestAxis, bestBin + 1, s.bins, 6 * right);
         } else {
-            mid = isHomogeneous(start, end) ? medianSplit(start, end, cb) : typeSplit(start, end);
             rangeBox(start, mid, 6 * left);
             rangeBox(mid, end, 6 * right);
         }
-        assert mid > start && mid < end;
         nodeA[node] = left;
         nodeB[node] = right;
         if (count >= PARALLEL_MIN && ForkJoinTask.inForkJoinPool()) {
@@ -188,19 +263,51 @@ final class BvhBuilder {
         }
     }
 
+    /**
+     * Centroid bounds and (if {@code sah}) bins of a large range into {@code s}, from chunks
+     * run in parallel. The top split would otherwise run on one thread while the others wait.
+     */
+    private void binParallel(Bins s, int start, int end, boolean sah) {
+        BinChunk[] chunks = new BinChunk[(end - start + CHUNK - 1) / CHUNK];
+        for (int pass = 0; pass < (sah ? 2 : 1); pass++) {
+            float[] cb = pass == 0 ? null : s.centroidBounds;
+            for (int c = 0; c < chunks.length; c++) {
+                int from = start + c * CHUNK;
+                chunks[c] = new BinChunk(from, Math.min(end, from + CHUNK), cb, s.bins);
+            }
+            ForkJoinTask.invokeAll(chunks);
+            if (pass == 0) {
+                setEmpty(s.centroidBounds);
+                for (BinChunk c : chunks) {
+                    include(s.centroidBounds, c.bins.centroidBounds);
+                }
+            } else {
+                clear(s);
+                for (BinChunk c : chunks) {
+                    s.merge(c.bins);
+                }
+            }
+        }
+    }
+
+    private void centroidBounds(int start, int end, float[] cb) {
+        setEmpty(cb);
+        for (int k = start; k < end; k++) {
+            int p = 3 * k;
+            for (int c = 0; c < 3; c++) {
+                float v = centroid[p + c];
+                cb[c] = Math.min(cb[c], v);
+                cb[3 + c] = Math.max(cb[3 + c], v);
+            }
+        }
+    }
+
     /** Sorts every primitive of the range into its bin on each axis, growing the bins' boxes. */
     private void binAll(Bins s, int start, int end, float[] cb) {
         int nb = s.bins;
         int[] count = s.count;
         int[] box = s.box;
-        for (int axis = 0; axis < 3; axis++) {
-            for (int b = 0; b < nb; b++) {
-                count[axis * BINS + b] = 0;
-                int o = 6 * (axis * BINS + b);
-                box[o] = box[o + 1] = box[o + 2] = Integer.MAX_VALUE;
-                box[o + 3] = box[o + 4] = box[o + 5] = Integer.MIN_VALUE;
-            }
-        }
+        clear(s);
         float sx = binScale(cb, 0, nb), sy = binScale(cb, 1, nb), sz = binScale(cb, 2, nb);
         for (int k = start; k < end; k++) {
             int p = k;
@@ -215,6 +322,17 @@ final class BvhBuilder {
             grow(box, 6 * bx, x0, y0, z0, x1, y1, z1);
             grow(box, 6 * by, x0, y0, z0, x1, y1, z1);
             grow(box, 6 * bz, x0, y0, z0, x1, y1, z1);
+        }
+    }
+
+    private static void clear(Bins s) {
+        for (int axis = 0; axis < 3; axis++) {
+            for (int b = 0; b < s.bins; b++) {
+                s.count[axis * BINS + b] = 0;
+                int o = 6 * (axis * BINS + b);
+                s.box[o] = s.box[o + 1] = s.box[o + 2] = Integer.MAX_VALUE;
+                s.box[o + 3] = s.box[o + 4] = s.box[o + 5] = Integer.MIN_VALUE;
+            }
         }
     }
 
@@ -425,6 +543,14 @@ final class BvhBuilder {
     private static void setEmpty(float[] b) {
         b[0] = b[1] = b[2] = Float.POSITIVE_INFINITY;
         b[3] = b[4] = b[5] = Float.NEGATIVE_INFINITY;
+    }
+
+    /** Grows box {@code b} by box {@code o}; minima and maxima, so in any order the same. */
+    private static void include(float[] b, float[] o) {
+        for (int c = 0; c < 3; c++) {
+            b[c] = Math.min(b[c], o[c]);
+            b[3 + c] = Math.max(b[3 + c], o[3 + c]);
+        }
     }
 
     static double area(float[] b, int o) {
