@@ -43,9 +43,10 @@ final class BvhBuilder {
     private final float[] centroid;
     private final int[] ref;           // primitive ids, partitioned in place into leaf ranges
     // Binary nodes: box (6 floats), and a = left child, b = right child (interior) or a = start, b = ~count (leaf).
-    // The subtree over ref[start, end) owns nodes [root, root + 2 (end - start) - 1), the most
-    // it can need: children are numbered from their ranges, without a shared counter, and each
-    // thread writes its own stretch of the arrays.
+    // Numbered without a shared counter: a split takes the next two free slots for its children
+    // (siblings adjacent, in depth-first order), and the halves of a large split each get their
+    // own stretch of 2 × references − 2 slots, the most their descendants can take, so forked
+    // halves never share a counter and the threads write separate parts of the arrays.
     private final float[] nodeBox;
     private final int[] nodeA, nodeB;
 
@@ -95,7 +96,7 @@ final class BvhBuilder {
                 new References(0, n).compute();
             }
             rangeBox(0, n, 0);
-            split(0, 0, n, 0);
+            split(0, 0, n, 0, 1);
         }
     }
 
@@ -176,26 +177,28 @@ final class BvhBuilder {
 
     /** Builds the subtree of one binary node over ref[start, end); forks halves of large ranges. */
     private final class Split extends RecursiveAction {
-        private final int node, start, end, depth;
+        private final int node, start, end, depth, free;
 
-        Split(int node, int start, int end, int depth) {
+        Split(int node, int start, int end, int depth, int free) {
             this.node = node;
             this.start = start;
             this.end = end;
             this.depth = depth;
+            this.free = free;
         }
 
         @Override
         protected void compute() {
-            split(node, start, end, depth);
+            split(node, start, end, depth, free);
         }
     }
 
-    private void split(int node, int start, int end, int depth) {
+    /** Builds binary node {@code node} over ref[start, end), numbering its descendants from {@code free}; returns the next free slot. */
+    private int split(int node, int start, int end, int depth, int free) {
         int count = end - start;
         if (count == 1) {
             makeLeaf(node, start, count);
-            return;
+            return free;
         }
         // A large range bins in parallel and may run other splits while it waits for its chunks:
         // those use the thread's scratch bins, so it takes its own.
@@ -236,7 +239,7 @@ final class BvhBuilder {
         if (count <= MAX_LEAF && (bestAxis < 0 || count <= splitCost)) {
             if (isHomogeneous(start, end)) {
                 makeLeaf(node, start, count);
-                return;
+                return free;
             }
             bestAxis = -1;            // mixed triangles and spheres: split by type below
         }
@@ -244,7 +247,8 @@ final class BvhBuilder {
         int mid = bestAxis >= 0 ? partition(start, end, bestAxis, cb[bestAxis], binScale(cb, bestAxis, s.bins), s.bins, bestBin)
                 : isHomogeneous(start, end) ? medianSplit(start, end, cb) : typeSplit(start, end);
         assert mid > start && mid < end;
-        int left = node + 1, right = node + 2 * (mid - start);
+        int left = free, right = free + 1;
+        free += 2;
         if (bestAxis >= 0) {
             binsBox(s, bestAxis, 0, bestBin + 1, 6 * left);
             binsBox(s, bestAxis, bestBin + 1, s.bins, 6 * right);
@@ -254,15 +258,20 @@ final class BvhBuilder {
         }
         nodeA[node] = left;
         nodeB[node] = right;
-        if (count >= PARALLEL_MIN && ForkJoinTask.inForkJoinPool()) {
-            Split l = new Split(left, start, mid, depth + 1);
+        if (count < PARALLEL_MIN) {
+            return split(right, mid, end, depth + 1, split(left, start, mid, depth + 1, free));
+        }
+        int rightFree = free + 2 * (mid - start) - 2;
+        if (ForkJoinTask.inForkJoinPool()) {
+            Split l = new Split(left, start, mid, depth + 1, free);
             l.fork();
-            split(right, mid, end, depth + 1);
+            split(right, mid, end, depth + 1, rightFree);
             l.join();
         } else {
-            split(left, start, mid, depth + 1);
-            split(right, mid, end, depth + 1);
+            split(left, start, mid, depth + 1, free);
+            split(right, mid, end, depth + 1, rightFree);
         }
+        return rightFree + 2 * (end - mid) - 2;
     }
 
     /**
