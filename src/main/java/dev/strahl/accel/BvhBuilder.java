@@ -128,28 +128,6 @@ final class BvhBuilder {
         }
     }
 
-    /** Per-thread binning memory, reused at every split a thread makes. */
-    private static final class Bins {
-        final int[] count = new int[3 * BINS];
-        final int[] box = new int[3 * BINS * 6];           // bin (axis, b) at 6 * (axis * BINS + b), as ordered keys
-        final double[] rightArea = new double[BINS];
-        final int[] rightCount = new int[BINS];
-        final float[] centroidBounds = new float[6];
-        int bins;                                           // bins in use at this split
-        int lastBin;
-
-        /** Adds another chunk's bins (order-independent: sums, minima, maxima). */
-        void merge(Bins o) {
-            for (int axis = 0; axis < 3; axis++) {
-                for (int b = 0; b < bins; b++) {
-                    int i = axis * BINS + b;
-                    count[i] += o.count[i];
-                    grow(box, 6 * i, o.box[6 * i], o.box[6 * i + 1], o.box[6 * i + 2], o.box[6 * i + 3], o.box[6 * i + 4], o.box[6 * i + 5]);
-                }
-            }
-        }
-    }
-
     /** One chunk of a large range: its centroid bounds ({@code cb} null) or its bins over {@code cb}. */
     private final class BinChunk extends RecursiveAction {
         private final int start, end;
@@ -173,6 +151,7 @@ final class BvhBuilder {
         }
     }
 
+    /** Each thread's bins, reused at every split it makes (large splits take their own, see split). */
     private static final ThreadLocal<Bins> BINS_SCRATCH = ThreadLocal.withInitial(Bins::new);
 
     /** Builds the subtree of one binary node over ref[start, end); forks halves of large ranges. */
@@ -226,7 +205,7 @@ final class BvhBuilder {
                 if (!(cb[3 + axis] > cb[axis])) {
                     continue;
                 }
-                double cost = sweep(s, axis, bestCost);
+                double cost = s.sweep(axis, bestCost);
                 if (cost < bestCost) {
                     bestCost = cost;
                     bestAxis = axis;
@@ -293,7 +272,7 @@ final class BvhBuilder {
                     include(s.centroidBounds, c.bins.centroidBounds);
                 }
             } else {
-                clear(s);
+                s.clear();
                 for (BinChunk c : chunks) {
                     s.merge(c.bins);
                 }
@@ -318,7 +297,7 @@ final class BvhBuilder {
         int nb = s.bins;
         int[] count = s.count;
         int[] box = s.box;
-        clear(s);
+        s.clear();
         float sx = binScale(cb, 0, nb), sy = binScale(cb, 1, nb), sz = binScale(cb, 2, nb);
         for (int k = start; k < end; k++) {
             int p = k;
@@ -330,31 +309,10 @@ final class BvhBuilder {
             count[bz]++;
             int q = 6 * p;
             int x0 = primKey[q], y0 = primKey[q + 1], z0 = primKey[q + 2], x1 = primKey[q + 3], y1 = primKey[q + 4], z1 = primKey[q + 5];
-            grow(box, 6 * bx, x0, y0, z0, x1, y1, z1);
-            grow(box, 6 * by, x0, y0, z0, x1, y1, z1);
-            grow(box, 6 * bz, x0, y0, z0, x1, y1, z1);
+            Bins.grow(box, 6 * bx, x0, y0, z0, x1, y1, z1);
+            Bins.grow(box, 6 * by, x0, y0, z0, x1, y1, z1);
+            Bins.grow(box, 6 * bz, x0, y0, z0, x1, y1, z1);
         }
-    }
-
-    private static void clear(Bins s) {
-        for (int axis = 0; axis < 3; axis++) {
-            for (int b = 0; b < s.bins; b++) {
-                s.count[axis * BINS + b] = 0;
-                int o = 6 * (axis * BINS + b);
-                s.box[o] = s.box[o + 1] = s.box[o + 2] = Integer.MAX_VALUE;
-                s.box[o + 3] = s.box[o + 4] = s.box[o + 5] = Integer.MIN_VALUE;
-            }
-        }
-    }
-
-    /** Grows the key box at {@code o}: integer minima and maxima of ordered keys are those of the floats. */
-    private static void grow(int[] b, int o, int x0, int y0, int z0, int x1, int y1, int z1) {
-        b[o] = Math.min(b[o], x0);
-        b[o + 1] = Math.min(b[o + 1], y0);
-        b[o + 2] = Math.min(b[o + 2], z0);
-        b[o + 3] = Math.max(b[o + 3], x1);
-        b[o + 4] = Math.max(b[o + 4], y1);
-        b[o + 5] = Math.max(b[o + 5], z1);
     }
 
     /**
@@ -377,64 +335,12 @@ final class BvhBuilder {
         return ext > 0 ? bins / ext : 0;
     }
 
-    /**
-     * SAH cost (unnormalised: Σ area × count) of the best bin boundary on one axis, if below
-     * {@code bound}, else +∞; records the bin in {@code s.lastBin}.
-     */
-    private static double sweep(Bins s, int axis, double bound) {
-        int nb = s.bins, base = axis * BINS;
-        int[] box = s.box;
-        int x0 = Integer.MAX_VALUE, y0 = x0, z0 = x0, x1 = Integer.MIN_VALUE, y1 = x1, z1 = x1;
-        int acc = 0;
-        for (int b = nb - 1; b > 0; b--) {
-            int o = 6 * (base + b);
-            x0 = Math.min(x0, box[o]);
-            y0 = Math.min(y0, box[o + 1]);
-            z0 = Math.min(z0, box[o + 2]);
-            x1 = Math.max(x1, box[o + 3]);
-            y1 = Math.max(y1, box[o + 4]);
-            z1 = Math.max(z1, box[o + 5]);
-            acc += s.count[base + b];
-            s.rightArea[b] = acc == 0 ? 0 : keyArea(x0, y0, z0, x1, y1, z1);
-            s.rightCount[b] = acc;
-        }
-        x0 = y0 = z0 = Integer.MAX_VALUE;
-        x1 = y1 = z1 = Integer.MIN_VALUE;
-        acc = 0;
-        double best = bound;
-        s.lastBin = -1;
-        for (int b = 0; b < nb - 1; b++) {
-            int o = 6 * (base + b);
-            x0 = Math.min(x0, box[o]);
-            y0 = Math.min(y0, box[o + 1]);
-            z0 = Math.min(z0, box[o + 2]);
-            x1 = Math.max(x1, box[o + 3]);
-            y1 = Math.max(y1, box[o + 4]);
-            z1 = Math.max(z1, box[o + 5]);
-            acc += s.count[base + b];
-            int right = s.rightCount[b + 1];
-            if (acc == 0 || right == 0) {
-                continue;
-            }
-            double cost = keyArea(x0, y0, z0, x1, y1, z1) * acc + s.rightArea[b + 1] * right;
-            if (cost < best) {
-                best = cost;
-                s.lastBin = b;
-            }
-        }
-        return s.lastBin >= 0 ? best : Double.POSITIVE_INFINITY;
-    }
-
-    private static double keyArea(int x0, int y0, int z0, int x1, int y1, int z1) {
-        return area(unkey(x0), unkey(y0), unkey(z0), unkey(x1), unkey(y1), unkey(z1));
-    }
-
     /** The union of bins [from, to) on one axis, written to nodeBox at {@code dest}. */
     private void binsBox(Bins s, int axis, int from, int to, int dest) {
         int[] b = {Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE};
         for (int k = from; k < to; k++) {
             int o = 6 * (axis * BINS + k);
-            grow(b, 0, s.box[o], s.box[o + 1], s.box[o + 2], s.box[o + 3], s.box[o + 4], s.box[o + 5]);
+            Bins.grow(b, 0, s.box[o], s.box[o + 1], s.box[o + 2], s.box[o + 3], s.box[o + 4], s.box[o + 5]);
         }
         for (int c = 0; c < 6; c++) {
             nodeBox[dest + c] = unkey(b[c]);
@@ -542,7 +448,7 @@ final class BvhBuilder {
         int[] b = {Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE};
         for (int k = start; k < end; k++) {
             int q = 6 * k;
-            grow(b, 0, primKey[q], primKey[q + 1], primKey[q + 2], primKey[q + 3], primKey[q + 4], primKey[q + 5]);
+            Bins.grow(b, 0, primKey[q], primKey[q + 1], primKey[q + 2], primKey[q + 3], primKey[q + 4], primKey[q + 5]);
         }
         for (int c = 0; c < 6; c++) {
             nodeBox[dest + c] = unkey(b[c]);
@@ -568,7 +474,7 @@ final class BvhBuilder {
         return area(b[o], b[o + 1], b[o + 2], b[o + 3], b[o + 4], b[o + 5]);
     }
 
-    private static double area(float x0, float y0, float z0, float x1, float y1, float z1) {
+    static double area(float x0, float y0, float z0, float x1, float y1, float z1) {
         double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
         if (!(dx >= 0 && dy >= 0 && dz >= 0)) {
             return 0;
