@@ -76,7 +76,7 @@ public final class Bvh {
      * not the argument, to look up hits.
      */
     public static Bvh build(Geometry geometry) {
-        return new BvhBuilder(geometry).build();
+        return new BvhBuilder(geometry, Runtime.getRuntime().availableProcessors()).build();
     }
 
     /** The primitives, in the order of the leaves; the primitive ids of hits refer to it. */

@@ -5,7 +5,6 @@ import dev.strahl.geometry.Geometry;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.ForkJoinTask;
 import java.util.concurrent.RecursiveAction;
-import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * Top-down construction of a binary BVH with the binned surface-area heuristic (Wald, "On fast
@@ -13,8 +12,10 @@ import java.util.concurrent.atomic.AtomicInteger;
  * {@value #BINS} bins on all three axes in one pass, the cheapest bin boundary taken), then
  * collapsed into the four-wide tree of {@link Bvh} by repeatedly opening the child of largest
  * surface area (as Embree and pbrt's wide BVHs do). Large ranges are built in parallel on a
- * fork/join pool; the result does not depend on the thread count, because the final tree is
- * written in one depth-first pass over the binary one.
+ * fork/join pool, and the top splits, which have the references to themselves, bin them in
+ * parallel chunks. The result does not depend on the thread count: chunks' bins are merged by
+ * sums, minima and maxima, which do not depend on the order, and the final tree is written in
+ * one depth-first pass over the binary one.
  *
  * <p>Leaves hold at most {@value #MAX_LEAF} primitives, all triangles or all spheres, so that
  * they are one contiguous range of the reordered {@link Geometry} (no index indirection).
@@ -28,8 +29,12 @@ final class BvhBuilder {
     static final double TRAVERSAL_COST = 2.0;
     private static final int MAX_SAH_DEPTH = 40;
     private static final int PARALLEL_MIN = 1 << 14;
+    /** Ranges at least this large bin in parallel, in chunks of {@link #CHUNK} references. */
+    private static final int PARALLEL_BIN_MIN = 1 << 16;
+    private static final int CHUNK = 1 << 14;
 
     private final Geometry geometry;
+    private final int threads;
     private final int n;
     private final int triangleCount;
     // Per reference position k (not primitive: partitioning moves them along with ref, so that
@@ -38,31 +43,22 @@ final class BvhBuilder {
     private final float[] centroid;
     private final int[] ref;           // primitive ids, partitioned in place into leaf ranges
     // Binary nodes: box (6 floats), and a = left child, b = right child (interior) or a = start, b = ~count (leaf).
+    // Numbered without a shared counter: a split takes the next two free slots for its children
+    // (siblings adjacent, in depth-first order), and the halves of a large split each get their
+    // own stretch of 2 × references − 2 slots, the most their descendants can take, so forked
+    // halves never share a counter and the threads write separate parts of the arrays.
     private final float[] nodeBox;
     private final int[] nodeA, nodeB;
-    private final AtomicInteger nodes = new AtomicInteger(1);
 
-    BvhBuilder(Geometry geometry) {
+    /** A builder on {@code threads} threads; the tree is the same for any number. */
+    BvhBuilder(Geometry geometry, int threads) {
         this.geometry = geometry;
+        this.threads = threads;
         this.n = geometry.primitiveCount();
         this.triangleCount = geometry.triangleCount();
         this.primKey = new int[6 * n];
         this.centroid = new float[3 * n];
         this.ref = new int[n];
-        Aabb box = new Aabb();
-        for (int i = 0; i < n; i++) {
-            box.reset();
-            geometry.includeBounds(i, box);
-            int o = 6 * i;
-            float[] b = {roundDown(box.minX), roundDown(box.minY), roundDown(box.minZ), roundUp(box.maxX), roundUp(box.maxY), roundUp(box.maxZ)};
-            for (int c = 0; c < 6; c++) {
-                primKey[o + c] = key(b[c]);
-            }
-            for (int c = 0; c < 3; c++) {
-                centroid[3 * i + c] = 0.5f * b[c] + 0.5f * b[3 + c];
-            }
-            ref[i] = i;
-        }
         int capacity = Math.max(1, 2 * n);
         this.nodeBox = new float[6 * capacity];
         this.nodeA = new int[capacity];
@@ -73,79 +69,141 @@ final class BvhBuilder {
         if (n == 0) {
             return new Bvh(geometry, new float[0], 0);
         }
-        rangeBox(0, n, 0);
-        if (n >= PARALLEL_MIN && Runtime.getRuntime().availableProcessors() > 1) {
-            ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+        if (n >= PARALLEL_MIN && threads > 1) {
+            ForkJoinPool pool = new ForkJoinPool(threads);
             try {
-                pool.invoke(new Split(0, 0, n, 0));
+                pool.invoke(new Top());
             } finally {
                 pool.shutdown();
             }
         } else {
-            new Split(0, 0, n, 0).compute();
+            new Top().compute();
         }
         return new BvhWriter(geometry, ref, nodeA, nodeB, nodeBox).write();
     }
 
-    /** Per-thread binning memory, reused at every split a thread makes. */
-    private static final class Bins {
-        final int[] count = new int[3 * BINS];
-        final int[] box = new int[3 * BINS * 6];           // bin (axis, b) at 6 * (axis * BINS + b), as ordered keys
-        final double[] rightArea = new double[BINS];
-        final int[] rightCount = new int[BINS];
-        final float[] centroidBounds = new float[6];
-        int bins;                                           // bins in use at this split
-        int lastBin;
+    /** The whole build: the references' boxes (in parallel chunks in a pool), then the splits. */
+    private final class Top extends RecursiveAction {
+        @Override
+        protected void compute() {
+            if (ForkJoinTask.inForkJoinPool()) {
+                References[] chunks = new References[(n + CHUNK - 1) / CHUNK];
+                for (int c = 0; c < chunks.length; c++) {
+                    chunks[c] = new References(c * CHUNK, Math.min(n, (c + 1) * CHUNK));
+                }
+                ForkJoinTask.invokeAll(chunks);
+            } else {
+                new References(0, n).compute();
+            }
+            rangeBox(0, n, 0);
+            split(0, 0, n, 0, 1);
+        }
     }
 
-    private static final ThreadLocal<Bins> BINS_SCRATCH = ThreadLocal.withInitial(Bins::new);
+    /** References [from, to): reference k = primitive k, its box rounded outwards, as keys, and its centroid. */
+    private final class References extends RecursiveAction {
+        private final int from, to;
 
-    /** Builds the subtree of one binary node over ref[start, end); forks halves of large ranges. */
-    private final class Split extends RecursiveAction {
-        private final int node, start, end, depth;
-
-        Split(int node, int start, int end, int depth) {
-            this.node = node;
-            this.start = start;
-            this.end = end;
-            this.depth = depth;
+        References(int from, int to) {
+            this.from = from;
+            this.to = to;
         }
 
         @Override
         protected void compute() {
-            split(node, start, end, depth);
+            Aabb box = new Aabb();
+            for (int i = from; i < to; i++) {
+                box.reset();
+                geometry.includeBounds(i, box);
+                int o = 6 * i;
+                float[] b = {roundDown(box.minX), roundDown(box.minY), roundDown(box.minZ), roundUp(box.maxX), roundUp(box.maxY), roundUp(box.maxZ)};
+                for (int c = 0; c < 6; c++) {
+                    primKey[o + c] = key(b[c]);
+                }
+                for (int c = 0; c < 3; c++) {
+                    centroid[3 * i + c] = 0.5f * b[c] + 0.5f * b[3 + c];
+                }
+                ref[i] = i;
+            }
         }
     }
 
-    private void split(int node, int start, int end, int depth) {
+    /** One chunk of a large range: its centroid bounds ({@code cb} null) or its bins over {@code cb}. */
+    private final class BinChunk extends RecursiveAction {
+        private final int start, end;
+        private final float[] cb;
+        final Bins bins = new Bins();
+
+        BinChunk(int start, int end, float[] cb, int nb) {
+            this.start = start;
+            this.end = end;
+            this.cb = cb;
+            bins.bins = nb;
+        }
+
+        @Override
+        protected void compute() {
+            if (cb == null) {
+                centroidBounds(start, end, bins.centroidBounds);
+            } else {
+                binAll(bins, start, end, cb);
+            }
+        }
+    }
+
+    /** Each thread's bins, reused at every split it makes (large splits take their own, see split). */
+    private static final ThreadLocal<Bins> BINS_SCRATCH = ThreadLocal.withInitial(Bins::new);
+
+    /** Builds the subtree of one binary node over ref[start, end); forks halves of large ranges. */
+    private final class Split extends RecursiveAction {
+        private final int node, start, end, depth, free;
+
+        Split(int node, int start, int end, int depth, int free) {
+            this.node = node;
+            this.start = start;
+            this.end = end;
+            this.depth = depth;
+            this.free = free;
+        }
+
+        @Override
+        protected void compute() {
+            split(node, start, end, depth, free);
+        }
+    }
+
+    /** Builds binary node {@code node} over ref[start, end), numbering its descendants from {@code free}; returns the next free slot. */
+    private int split(int node, int start, int end, int depth, int free) {
         int count = end - start;
         if (count == 1) {
             makeLeaf(node, start, count);
-            return;
+            return free;
         }
-        Bins s = BINS_SCRATCH.get();
-        // Centroid bounds decide the binning range.
-        float[] cb = s.centroidBounds;
-        setEmpty(cb);
-        for (int k = start; k < end; k++) {
-            int p = 3 * k;
-            for (int c = 0; c < 3; c++) {
-                float v = centroid[p + c];
-                cb[c] = Math.min(cb[c], v);
-                cb[3 + c] = Math.max(cb[3 + c], v);
-            }
-        }
+        // A large range bins in parallel and may run other splits while it waits for its chunks:
+        // those use the thread's scratch bins, so it takes its own.
+        boolean parallel = count >= PARALLEL_BIN_MIN && ForkJoinTask.inForkJoinPool();
+        Bins s = parallel ? new Bins() : BINS_SCRATCH.get();
         // Fewer bins for few primitives: the sweep costs as much per bin as the binning per primitive.
         s.bins = Math.min(BINS, Math.max(2, count));
+        boolean sah = depth < MAX_SAH_DEPTH;
+        // Centroid bounds decide the binning range.
+        float[] cb = s.centroidBounds;
+        if (parallel) {
+            binParallel(s, start, end, sah);
+        } else {
+            centroidBounds(start, end, cb);
+            if (sah) {
+                binAll(s, start, end, cb);
+            }
+        }
         int bestAxis = -1, bestBin = -1;
         double bestCost = Double.POSITIVE_INFINITY;
-        if (depth < MAX_SAH_DEPTH) {
-            binAll(s, start, end, cb);
+        if (sah) {
             for (int axis = 0; axis < 3; axis++) {
                 if (!(cb[3 + axis] > cb[axis])) {
                     continue;
                 }
-                double cost = sweep(s, axis, bestCost);
+                double cost = s.sweep(axis, bestCost);
                 if (cost < bestCost) {
                     bestCost = cost;
                     bestAxis = axis;
@@ -158,33 +216,77 @@ final class BvhBuilder {
         if (count <= MAX_LEAF && (bestAxis < 0 || count <= splitCost)) {
             if (isHomogeneous(start, end)) {
                 makeLeaf(node, start, count);
-                return;
+                return free;
             }
             bestAxis = -1;            // mixed triangles and spheres: split by type below
         }
 
-        int mid;
-        int left = nodes.getAndAdd(2), right = left + 1;
+        int mid = bestAxis >= 0 ? partition(start, end, bestAxis, cb[bestAxis], binScale(cb, bestAxis, s.bins), s.bins, bestBin)
+                : isHomogeneous(start, end) ? medianSplit(start, end, cb) : typeSplit(start, end);
+        assert mid > start && mid < end;
+        int left = free, right = free + 1;
+        free += 2;
         if (bestAxis >= 0) {
-            mid = partition(start, end, bestAxis, cb[bestAxis], binScale(cb, bestAxis, s.bins), s.bins, bestBin);
             binsBox(s, bestAxis, 0, bestBin + 1, 6 * left);
             binsBox(s, bestAxis, bestBin + 1, s.bins, 6 * right);
         } else {
-            mid = isHomogeneous(start, end) ? medianSplit(start, end, cb) : typeSplit(start, end);
             rangeBox(start, mid, 6 * left);
             rangeBox(mid, end, 6 * right);
         }
-        assert mid > start && mid < end;
         nodeA[node] = left;
         nodeB[node] = right;
-        if (count >= PARALLEL_MIN && ForkJoinTask.inForkJoinPool()) {
-            Split l = new Split(left, start, mid, depth + 1);
+        if (count < PARALLEL_MIN) {
+            return split(right, mid, end, depth + 1, split(left, start, mid, depth + 1, free));
+        }
+        int rightFree = free + 2 * (mid - start) - 2;
+        if (ForkJoinTask.inForkJoinPool()) {
+            Split l = new Split(left, start, mid, depth + 1, free);
             l.fork();
-            split(right, mid, end, depth + 1);
+            split(right, mid, end, depth + 1, rightFree);
             l.join();
         } else {
-            split(left, start, mid, depth + 1);
-            split(right, mid, end, depth + 1);
+            split(left, start, mid, depth + 1, free);
+            split(right, mid, end, depth + 1, rightFree);
+        }
+        return rightFree + 2 * (end - mid) - 2;
+    }
+
+    /**
+     * Centroid bounds and (if {@code sah}) bins of a large range into {@code s}, from chunks
+     * run in parallel. The top split would otherwise run on one thread while the others wait.
+     */
+    private void binParallel(Bins s, int start, int end, boolean sah) {
+        BinChunk[] chunks = new BinChunk[(end - start + CHUNK - 1) / CHUNK];
+        for (int pass = 0; pass < (sah ? 2 : 1); pass++) {
+            float[] cb = pass == 0 ? null : s.centroidBounds;
+            for (int c = 0; c < chunks.length; c++) {
+                int from = start + c * CHUNK;
+                chunks[c] = new BinChunk(from, Math.min(end, from + CHUNK), cb, s.bins);
+            }
+            ForkJoinTask.invokeAll(chunks);
+            if (pass == 0) {
+                setEmpty(s.centroidBounds);
+                for (BinChunk c : chunks) {
+                    include(s.centroidBounds, c.bins.centroidBounds);
+                }
+            } else {
+                s.clear();
+                for (BinChunk c : chunks) {
+                    s.merge(c.bins);
+                }
+            }
+        }
+    }
+
+    private void centroidBounds(int start, int end, float[] cb) {
+        setEmpty(cb);
+        for (int k = start; k < end; k++) {
+            int p = 3 * k;
+            for (int c = 0; c < 3; c++) {
+                float v = centroid[p + c];
+                cb[c] = Math.min(cb[c], v);
+                cb[3 + c] = Math.max(cb[3 + c], v);
+            }
         }
     }
 
@@ -193,14 +295,7 @@ final class BvhBuilder {
         int nb = s.bins;
         int[] count = s.count;
         int[] box = s.box;
-        for (int axis = 0; axis < 3; axis++) {
-            for (int b = 0; b < nb; b++) {
-                count[axis * BINS + b] = 0;
-                int o = 6 * (axis * BINS + b);
-                box[o] = box[o + 1] = box[o + 2] = Integer.MAX_VALUE;
-                box[o + 3] = box[o + 4] = box[o + 5] = Integer.MIN_VALUE;
-            }
-        }
+        s.clear();
         float sx = binScale(cb, 0, nb), sy = binScale(cb, 1, nb), sz = binScale(cb, 2, nb);
         for (int k = start; k < end; k++) {
             int p = k;
@@ -212,20 +307,10 @@ final class BvhBuilder {
             count[bz]++;
             int q = 6 * p;
             int x0 = primKey[q], y0 = primKey[q + 1], z0 = primKey[q + 2], x1 = primKey[q + 3], y1 = primKey[q + 4], z1 = primKey[q + 5];
-            grow(box, 6 * bx, x0, y0, z0, x1, y1, z1);
-            grow(box, 6 * by, x0, y0, z0, x1, y1, z1);
-            grow(box, 6 * bz, x0, y0, z0, x1, y1, z1);
+            Bins.grow(box, 6 * bx, x0, y0, z0, x1, y1, z1);
+            Bins.grow(box, 6 * by, x0, y0, z0, x1, y1, z1);
+            Bins.grow(box, 6 * bz, x0, y0, z0, x1, y1, z1);
         }
-    }
-
-    /** Grows the key box at {@code o}: integer minima and maxima of ordered keys are those of the floats. */
-    private static void grow(int[] b, int o, int x0, int y0, int z0, int x1, int y1, int z1) {
-        b[o] = Math.min(b[o], x0);
-        b[o + 1] = Math.min(b[o + 1], y0);
-        b[o + 2] = Math.min(b[o + 2], z0);
-        b[o + 3] = Math.max(b[o + 3], x1);
-        b[o + 4] = Math.max(b[o + 4], y1);
-        b[o + 5] = Math.max(b[o + 5], z1);
     }
 
     /**
@@ -248,64 +333,12 @@ final class BvhBuilder {
         return ext > 0 ? bins / ext : 0;
     }
 
-    /**
-     * SAH cost (unnormalised: Σ area × count) of the best bin boundary on one axis, if below
-     * {@code bound}, else +∞; records the bin in {@code s.lastBin}.
-     */
-    private static double sweep(Bins s, int axis, double bound) {
-        int nb = s.bins, base = axis * BINS;
-        int[] box = s.box;
-        int x0 = Integer.MAX_VALUE, y0 = x0, z0 = x0, x1 = Integer.MIN_VALUE, y1 = x1, z1 = x1;
-        int acc = 0;
-        for (int b = nb - 1; b > 0; b--) {
-            int o = 6 * (base + b);
-            x0 = Math.min(x0, box[o]);
-            y0 = Math.min(y0, box[o + 1]);
-            z0 = Math.min(z0, box[o + 2]);
-            x1 = Math.max(x1, box[o + 3]);
-            y1 = Math.max(y1, box[o + 4]);
-            z1 = Math.max(z1, box[o + 5]);
-            acc += s.count[base + b];
-            s.rightArea[b] = acc == 0 ? 0 : keyArea(x0, y0, z0, x1, y1, z1);
-            s.rightCount[b] = acc;
-        }
-        x0 = y0 = z0 = Integer.MAX_VALUE;
-        x1 = y1 = z1 = Integer.MIN_VALUE;
-        acc = 0;
-        double best = bound;
-        s.lastBin = -1;
-        for (int b = 0; b < nb - 1; b++) {
-            int o = 6 * (base + b);
-            x0 = Math.min(x0, box[o]);
-            y0 = Math.min(y0, box[o + 1]);
-            z0 = Math.min(z0, box[o + 2]);
-            x1 = Math.max(x1, box[o + 3]);
-            y1 = Math.max(y1, box[o + 4]);
-            z1 = Math.max(z1, box[o + 5]);
-            acc += s.count[base + b];
-            int right = s.rightCount[b + 1];
-            if (acc == 0 || right == 0) {
-                continue;
-            }
-            double cost = keyArea(x0, y0, z0, x1, y1, z1) * acc + s.rightArea[b + 1] * right;
-            if (cost < best) {
-                best = cost;
-                s.lastBin = b;
-            }
-        }
-        return s.lastBin >= 0 ? best : Double.POSITIVE_INFINITY;
-    }
-
-    private static double keyArea(int x0, int y0, int z0, int x1, int y1, int z1) {
-        return area(unkey(x0), unkey(y0), unkey(z0), unkey(x1), unkey(y1), unkey(z1));
-    }
-
     /** The union of bins [from, to) on one axis, written to nodeBox at {@code dest}. */
     private void binsBox(Bins s, int axis, int from, int to, int dest) {
         int[] b = {Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE};
         for (int k = from; k < to; k++) {
             int o = 6 * (axis * BINS + k);
-            grow(b, 0, s.box[o], s.box[o + 1], s.box[o + 2], s.box[o + 3], s.box[o + 4], s.box[o + 5]);
+            Bins.grow(b, 0, s.box[o], s.box[o + 1], s.box[o + 2], s.box[o + 3], s.box[o + 4], s.box[o + 5]);
         }
         for (int c = 0; c < 6; c++) {
             nodeBox[dest + c] = unkey(b[c]);
@@ -413,7 +446,7 @@ final class BvhBuilder {
         int[] b = {Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE};
         for (int k = start; k < end; k++) {
             int q = 6 * k;
-            grow(b, 0, primKey[q], primKey[q + 1], primKey[q + 2], primKey[q + 3], primKey[q + 4], primKey[q + 5]);
+            Bins.grow(b, 0, primKey[q], primKey[q + 1], primKey[q + 2], primKey[q + 3], primKey[q + 4], primKey[q + 5]);
         }
         for (int c = 0; c < 6; c++) {
             nodeBox[dest + c] = unkey(b[c]);
@@ -427,11 +460,19 @@ final class BvhBuilder {
         b[3] = b[4] = b[5] = Float.NEGATIVE_INFINITY;
     }
 
+    /** Grows box {@code b} by box {@code o}; minima and maxima, so in any order the same. */
+    private static void include(float[] b, float[] o) {
+        for (int c = 0; c < 3; c++) {
+            b[c] = Math.min(b[c], o[c]);
+            b[3 + c] = Math.max(b[3 + c], o[3 + c]);
+        }
+    }
+
     static double area(float[] b, int o) {
         return area(b[o], b[o + 1], b[o + 2], b[o + 3], b[o + 4], b[o + 5]);
     }
 
-    private static double area(float x0, float y0, float z0, float x1, float y1, float z1) {
+    static double area(float x0, float y0, float z0, float x1, float y1, float z1) {
         double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
         if (!(dx >= 0 && dy >= 0 && dz >= 0)) {
             return 0;

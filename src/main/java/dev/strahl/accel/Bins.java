@@ -1,0 +1,103 @@
+package dev.strahl.accel;
+
+import static dev.strahl.accel.BvhBuilder.BINS;
+
+/**
+ * The bins of one split of {@link BvhBuilder}: per axis and bin the count of centroids in it
+ * and the bounds of their boxes (as ordered keys, see {@link BvhBuilder#key}), and the SAH
+ * sweep over them. One per thread, reused at every split it makes; chunks of a large range bin
+ * into their own and are merged.
+ */
+final class Bins {
+    final int[] count = new int[3 * BINS];
+    final int[] box = new int[3 * BINS * 6];           // bin (axis, b) at 6 * (axis * BINS + b), as ordered keys
+    final double[] rightArea = new double[BINS];
+    final int[] rightCount = new int[BINS];
+    final float[] centroidBounds = new float[6];
+    int bins;                                           // bins in use at this split
+    int lastBin;
+
+    /** Adds another chunk's bins (order-independent: sums, minima, maxima). */
+    void merge(Bins o) {
+        for (int axis = 0; axis < 3; axis++) {
+            for (int b = 0; b < bins; b++) {
+                int i = axis * BINS + b;
+                count[i] += o.count[i];
+                grow(box, 6 * i, o.box[6 * i], o.box[6 * i + 1], o.box[6 * i + 2], o.box[6 * i + 3], o.box[6 * i + 4], o.box[6 * i + 5]);
+            }
+        }
+    }
+
+    /** Empties the bins in use. */
+    void clear() {
+        for (int axis = 0; axis < 3; axis++) {
+            for (int b = 0; b < bins; b++) {
+                count[axis * BINS + b] = 0;
+                int o = 6 * (axis * BINS + b);
+                box[o] = box[o + 1] = box[o + 2] = Integer.MAX_VALUE;
+                box[o + 3] = box[o + 4] = box[o + 5] = Integer.MIN_VALUE;
+            }
+        }
+    }
+
+    /** Grows the key box at {@code o}: integer minima and maxima of ordered keys are those of the floats. */
+    static void grow(int[] b, int o, int x0, int y0, int z0, int x1, int y1, int z1) {
+        b[o] = Math.min(b[o], x0);
+        b[o + 1] = Math.min(b[o + 1], y0);
+        b[o + 2] = Math.min(b[o + 2], z0);
+        b[o + 3] = Math.max(b[o + 3], x1);
+        b[o + 4] = Math.max(b[o + 4], y1);
+        b[o + 5] = Math.max(b[o + 5], z1);
+    }
+
+    /**
+     * SAH cost (unnormalised: Σ area × count) of the best bin boundary on one axis, if below
+     * {@code bound}, else +∞; records the bin in {@code lastBin}.
+     */
+    double sweep(int axis, double bound) {
+        int nb = bins, base = axis * BINS;
+        int x0 = Integer.MAX_VALUE, y0 = x0, z0 = x0, x1 = Integer.MIN_VALUE, y1 = x1, z1 = x1;
+        int acc = 0;
+        for (int b = nb - 1; b > 0; b--) {
+            int o = 6 * (base + b);
+            x0 = Math.min(x0, box[o]);
+            y0 = Math.min(y0, box[o + 1]);
+            z0 = Math.min(z0, box[o + 2]);
+            x1 = Math.max(x1, box[o + 3]);
+            y1 = Math.max(y1, box[o + 4]);
+            z1 = Math.max(z1, box[o + 5]);
+            acc += count[base + b];
+            rightArea[b] = acc == 0 ? 0 : keyArea(x0, y0, z0, x1, y1, z1);
+            rightCount[b] = acc;
+        }
+        x0 = y0 = z0 = Integer.MAX_VALUE;
+        x1 = y1 = z1 = Integer.MIN_VALUE;
+        acc = 0;
+        double best = bound;
+        lastBin = -1;
+        for (int b = 0; b < nb - 1; b++) {
+            int o = 6 * (base + b);
+            x0 = Math.min(x0, box[o]);
+            y0 = Math.min(y0, box[o + 1]);
+            z0 = Math.min(z0, box[o + 2]);
+            x1 = Math.max(x1, box[o + 3]);
+            y1 = Math.max(y1, box[o + 4]);
+            z1 = Math.max(z1, box[o + 5]);
+            acc += count[base + b];
+            int right = rightCount[b + 1];
+            if (acc == 0 || right == 0) {
+                continue;
+            }
+            double cost = keyArea(x0, y0, z0, x1, y1, z1) * acc + rightArea[b + 1] * right;
+            if (cost < best) {
+                best = cost;
+                lastBin = b;
+            }
+        }
+        return lastBin >= 0 ? best : Double.POSITIVE_INFINITY;
+    }
+
+    private static double keyArea(int x0, int y0, int z0, int x1, int y1, int z1) {
+        return BvhBuilder.area(BvhBuilder.unkey(x0), BvhBuilder.unkey(y0), BvhBuilder.unkey(z0), BvhBuilder.unkey(x1), BvhBuilder.unkey(y1), BvhBuilder.unkey(z1));
+    }
+}
