@@ -85,7 +85,7 @@ public final class Transform {
             m = step.mul(m);                   // later steps act on the result of earlier ones
         }
         if (!m.isFinite()) {
-            throw new IllegalArgumentException("the steps multiply to a matrix beyond the range of numbers (scale factors too large or too small)");
+            throw new IllegalArgumentException("the steps multiply to a matrix beyond the range of numbers (too large a scale or translation)");
         }
         this.matrix = m;
     }
