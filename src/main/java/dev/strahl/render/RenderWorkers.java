@@ -15,6 +15,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
 
 /**
  * The threads of one render job and what each owns: a fixed pool whose workers take
@@ -27,7 +28,6 @@ final class RenderWorkers implements Parallel {
     private final PinholeRays cameraRays;
     private final long seed;
     private final boolean stratified = stratifiedSampler();
-    private final int threads;
     private final ExecutorService pool;
     private final WorkerState[] workers;
     private final AtomicLong samplesDone = new AtomicLong();
@@ -43,7 +43,6 @@ final class RenderWorkers implements Parallel {
         this.film = film;
         this.cameraRays = cameraRays;
         this.seed = seed;
-        this.threads = threads;
         AtomicInteger workerNumber = new AtomicInteger();
         this.pool = Executors.newFixedThreadPool(threads, r -> {
             Thread t = new Thread(r, name + "-" + workerNumber.incrementAndGet());
@@ -88,19 +87,20 @@ final class RenderWorkers implements Parallel {
     /** Renders samples [firstSample, endSample) of every pixel; returns when all threads are done with it. */
     void renderPass(int firstSample, int endSample) throws InterruptedException, ExecutionException {
         AtomicInteger nextTile = new AtomicInteger();
-        List<Future<?>> tasks = new ArrayList<>(threads);
-        for (WorkerState w : workers) {
-            tasks.add(pool.submit(() -> renderTiles(w, nextTile, firstSample, endSample)));
-        }
-        awaitAll(tasks);
+        onEveryThread(w -> renderTiles(w, nextTile, firstSample, endSample));
     }
 
     /**
-     * Waits for every task. When one fails, the others are told to stop (they look at
-     * {@code cancelled} between tiles and chunks) and waited for too, so that no thread still
-     * writes into the film once the job has ended; then the first failure is thrown.
+     * Runs {@code body} once on every thread, each with its own worker, and waits for all. When
+     * one fails, the others are told to stop (they look at {@code cancelled} between tiles and
+     * chunks) and waited for too, so that no thread still writes into the film once the job has
+     * ended; then the first failure is thrown.
      */
-    private void awaitAll(List<Future<?>> tasks) throws InterruptedException, ExecutionException {
+    private void onEveryThread(Consumer<WorkerState> body) throws InterruptedException, ExecutionException {
+        List<Future<?>> tasks = new ArrayList<>(workers.length);
+        for (WorkerState w : workers) {
+            tasks.add(pool.submit(() -> body.accept(w)));
+        }
         ExecutionException first = null;
         for (Future<?> task : tasks) {
             try {
@@ -121,16 +121,12 @@ final class RenderWorkers implements Parallel {
     @Override
     public void forEach(int count, Parallel.Task task) {
         AtomicInteger next = new AtomicInteger();
-        List<Future<?>> tasks = new ArrayList<>(threads);
-        for (WorkerState w : workers) {
-            tasks.add(pool.submit(() -> {
+        try {
+            onEveryThread(w -> {
                 for (int i = next.getAndIncrement(); i < count && !cancelled; i = next.getAndIncrement()) {
                     task.run(i, w.integrator);
                 }
-            }));
-        }
-        try {
-            awaitAll(tasks);
+            });
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             cancelled = true;
