@@ -1,30 +1,29 @@
 /**
- * strahl, a physically based renderer: build or load a scene, render it progressively on all
- * cores, write PNG or PFM. The front door is {@link dev.strahl.scene.Scene},
- * {@link dev.strahl.scene.SceneLoader}, {@link dev.strahl.render.RenderSettings},
- * {@link dev.strahl.render.RenderJob} and {@link dev.strahl.film.ImageWriters}; docs/architecture.md
- * lists every API type.
+ * strahl, a physically based renderer: build a scene in code or load one from a file, render it
+ * progressively on all cores, write the image. The API is four packages:
+ * {@link dev.strahl.scene} (the scene: shapes, materials, camera), {@link dev.strahl.render}
+ * (settings, render jobs, their listener and figures), {@link dev.strahl.image} (colours and
+ * images) and {@link dev.strahl.io} (loading scenes, writing images). docs/architecture.md lists
+ * every API type.
+ *
+ * <p>The command line (picocli) and the viewer's look and feel (FlatLaf) are optional
+ * dependencies: a program that uses strahl as a library never needs them.
  */
 module dev.strahl {
-    requires transitive java.desktop;          // BufferedImage in the film API; Swing in the viewer
+    requires transitive org.joml;              // vectors in the camera and scene-building API
+    requires com.fasterxml.jackson.core;       // the scene file parser
+    requires java.desktop;                     // ImageIO for PNG; Swing in the viewer
     requires java.management;
     requires jdk.management;                   // the viewer's CPU load figure
-    requires transitive org.joml;              // vectors in the camera, sphere and transform API
-    requires com.fasterxml.jackson.core;       // the scene file parser
-    requires info.picocli;
-    requires com.formdev.flatlaf;
     requires jdk.unsupported;                  // sun.misc.Signal: Ctrl-C stops a render and keeps its image
+    requires static info.picocli;              // the command line only
+    requires static com.formdev.flatlaf;       // the viewer only
     requires static jdk.incubator.vector;      // the optional SIMD box test of the BVH (accel/SimdNodes), used when present
 
     exports dev.strahl.scene;
     exports dev.strahl.render;
-    exports dev.strahl.film;
-    exports dev.strahl.material;
-    exports dev.strahl.math;
-    exports dev.strahl.camera;
-    exports dev.strahl.geometry;
-    exports dev.strahl.integrator;
-    exports dev.strahl.sampling;
+    exports dev.strahl.image;
+    exports dev.strahl.io;
 
     // picocli reads and sets the annotated command fields reflectively
     opens dev.strahl.cli to info.picocli;

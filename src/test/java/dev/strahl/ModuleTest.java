@@ -21,9 +21,9 @@ class ModuleTest {
     void exactlyTheApiPackagesAreExported() {
         assertThat(module.getDescriptor().exports()).allMatch(e -> !e.isQualified())
                 .extracting(ModuleDescriptor.Exports::source)
-                .containsExactlyInAnyOrder("dev.strahl.scene", "dev.strahl.render", "dev.strahl.film", "dev.strahl.material",
-                        "dev.strahl.math", "dev.strahl.camera", "dev.strahl.geometry", "dev.strahl.integrator", "dev.strahl.sampling");
-        assertThat(module.getDescriptor().packages()).contains("dev.strahl.accel", "dev.strahl.light", "dev.strahl.cli", "dev.strahl.viewer");
+                .containsExactlyInAnyOrder("dev.strahl.scene", "dev.strahl.render", "dev.strahl.image", "dev.strahl.io");
+        assertThat(module.getDescriptor().packages()).contains("dev.strahl.accel", "dev.strahl.light", "dev.strahl.world", "dev.strahl.cli",
+                "dev.strahl.viewer", "dev.strahl.io.json");
     }
 
     @Test

@@ -18,12 +18,12 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * The library example of the README is the body of examples/embed's Embed.java, word for word,
+ * The library example of the README is the body of src/it/embed's Embed.java, word for word,
  * and that program compiles against the library and renders its PNG. (The invoker run of
  * {@code mvn verify} builds the example project itself against the packaged artifact.)
  */
 class ReadmeExampleTest {
-    static final Path EXAMPLE = Path.of("examples", "embed", "src", "main", "java", "dev", "strahl", "examples", "embed", "Embed.java");
+    static final Path EXAMPLE = Path.of("src", "it", "embed", "src", "main", "java", "dev", "strahl", "examples", "embed", "Embed.java");
 
     @TempDir
     Path dir;
@@ -67,11 +67,11 @@ class ReadmeExampleTest {
     void theExampleProjectHasStrahlsVersionSoThatItDependsOnTheStrahlBuiltWithIt() throws Exception {
         Pattern version = Pattern.compile("<artifactId>[^<]+</artifactId>\\s*<version>([^<]+)</version>");
         Matcher strahl = version.matcher(Files.readString(Path.of("pom.xml")));
-        Matcher example = version.matcher(Files.readString(Path.of("examples", "embed", "pom.xml")));
+        Matcher example = version.matcher(Files.readString(Path.of("src", "it", "embed", "pom.xml")));
         assertThat(strahl.find()).isTrue();
         assertThat(example.find()).isTrue();
         assertThat(example.group(1)).isEqualTo(strahl.group(1));
-        assertThat(Files.readString(Path.of("examples", "embed", "pom.xml"))).contains("<version>${project.version}</version>");
+        assertThat(Files.readString(Path.of("src", "it", "embed", "pom.xml"))).contains("<version>${project.version}</version>");
         assertThat(Files.readString(Path.of("README.md"))).contains("<version>" + strahl.group(1) + "</version>");
     }
 

@@ -2,7 +2,7 @@ package dev.strahl.accel;
 
 import dev.strahl.geometry.Ray;
 import dev.strahl.scene.Scene;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.SceneLoader;
 import java.nio.file.Path;
 import java.util.SplittableRandom;
 import java.util.concurrent.TimeUnit;

@@ -6,7 +6,7 @@ import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.scene.Scene;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.SceneLoader;
 import java.nio.file.Path;
 import java.util.SplittableRandom;
 import java.util.concurrent.TimeUnit;

@@ -3,7 +3,7 @@ package dev.strahl.bench;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
-import dev.strahl.geometry.TriangleMesh;
+import dev.strahl.scene.TriangleMesh;
 import java.util.SplittableRandom;
 import java.util.concurrent.TimeUnit;
 import org.joml.Vector3d;

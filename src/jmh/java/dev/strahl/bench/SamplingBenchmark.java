@@ -3,7 +3,7 @@ package dev.strahl.bench;
 import dev.strahl.material.BsdfSample;
 import dev.strahl.material.Glossy;
 import dev.strahl.material.Lambert;
-import dev.strahl.math.Rgb;
+import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Rng;
 import java.util.concurrent.TimeUnit;
 import org.joml.Vector3d;

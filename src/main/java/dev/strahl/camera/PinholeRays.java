@@ -1,5 +1,6 @@
 package dev.strahl.camera;
 
+import org.joml.Vector3dc;
 import dev.strahl.geometry.Ray;
 
 /**
@@ -15,24 +16,22 @@ public final class PinholeRays {
     private final double ux, uy, uz;   // up, scaled by t
     private final double invW, invH;
 
-    PinholeRays(Camera camera, int width, int height) {
+    /** Rays of a camera at {@code from} looking at {@code at}, with a vertical field of view, for a film size. */
+    public PinholeRays(Vector3dc from, Vector3dc at, Vector3dc up, double fovDegrees, int width, int height) {
         if (width <= 0 || height <= 0) {
             throw new IllegalArgumentException("film size must be positive, got " + width + "x" + height);
         }
-        var from = camera.lookFrom();
-        var at = camera.lookAt();
         double dx = at.x() - from.x(), dy = at.y() - from.y(), dz = at.z() - from.z();
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
         fx = dx / len;
         fy = dy / len;
         fz = dz / len;
-        var up = camera.up();
         double cx = fy * up.z() - fz * up.y(), cy = fz * up.x() - fx * up.z(), cz = fx * up.y() - fy * up.x();
         double clen = Math.sqrt(cx * cx + cy * cy + cz * cz);
         cx /= clen;
         cy /= clen;
         cz /= clen;
-        double t = Math.tan(Math.toRadians(camera.fovDegrees()) / 2);
+        double t = Math.tan(Math.toRadians(fovDegrees) / 2);
         double aspect = (double) width / height;
         rx = cx * t * aspect;
         ry = cy * t * aspect;

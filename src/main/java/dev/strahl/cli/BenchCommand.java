@@ -1,15 +1,20 @@
 package dev.strahl.cli;
 
+import dev.strahl.bench.BenchRays;
+import dev.strahl.bench.BenchProgress;
+import dev.strahl.bench.BenchReport;
+import dev.strahl.bench.BenchResults;
 import dev.strahl.accel.Bvh;
-import dev.strahl.camera.Camera;
-import dev.strahl.film.Image;
+import dev.strahl.scene.Camera;
+import dev.strahl.world.World;
+import dev.strahl.image.Image;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.SceneLoader;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -133,7 +138,7 @@ final class BenchCommand implements Callable<Integer> {
                 try {
                     long t0 = System.nanoTime();
                     Scene s = loader.load(file);
-                    sets.add(new Object[] {name(file), file, s, (System.nanoTime() - t0) * 1e-9 - s.bvhBuildSeconds()});
+                    sets.add(new Object[] {name(file), file, s, (System.nanoTime() - t0) * 1e-9 - World.of(s).bvhBuildSeconds()});
                 } catch (SceneException e) {
                     r.skipped.add(name(file) + ": " + e.getMessage());
                 }
@@ -242,7 +247,7 @@ final class BenchCommand implements Callable<Integer> {
     /** One mesh: BVH builds, memory, then each ray set checked against brute force and timed per thread count. */
     private void mesh(String name, Path file, Scene scene, double loadSeconds, TreeSet<Integer> counts, int timedRuns,
                       ExecutorService pool, BenchResults r, List<String> failures) throws InterruptedException {
-        Geometry g = scene.geometry();
+        Geometry g = World.of(scene).geometry();
         double[] build = new double[timedRuns];
         Bvh bvh = null;
         progress.step(name + ": BVH build, warm-up");
@@ -256,7 +261,7 @@ final class BenchCommand implements Callable<Integer> {
         double bytes = (double) (bvh.geometry().byteSize() + bvh.byteSize()) / g.primitiveCount();
 
         progress.step(name + ": making rays");
-        Camera camera = name.equals("cornell-box") ? scene.camera() : Camera.framing(g.bounds(), 40);
+        Camera camera = scene.camera();         // the scene file's, or one framing a mesh from +Z
         int side = (int) Math.max(1, Math.min(512, Math.sqrt(r.raysPerSet / 4.0)));
         List<BenchRays.RaySet> sets = List.of(BenchRays.primary(camera, side, side, 4, 1),
                 BenchRays.incoherent(g.bounds(), r.raysPerSet, 2), BenchRays.shadow(g, r.raysPerSet, 3));

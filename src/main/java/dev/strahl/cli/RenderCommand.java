@@ -1,9 +1,12 @@
 package dev.strahl.cli;
 
-import dev.strahl.camera.Camera;
-import dev.strahl.film.Film;
-import dev.strahl.film.ImageWriters;
-import dev.strahl.render.Checkpoint;
+import dev.strahl.io.text.Units;
+import dev.strahl.image.Image;
+import dev.strahl.io.json.SceneFile;
+import dev.strahl.render.PhotonParameters;
+import dev.strahl.world.World;
+import dev.strahl.scene.Camera;
+import dev.strahl.io.ImageWriters;
 import dev.strahl.render.CheckpointException;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderListener;
@@ -11,8 +14,8 @@ import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
-import dev.strahl.scene.SceneLoader;
-import dev.strahl.scene.SceneSettings;
+import dev.strahl.io.SceneLoader;
+import dev.strahl.io.json.SceneSettings;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
@@ -115,6 +118,7 @@ final class RenderCommand implements Callable<Integer> {
     Path statsFile;
 
     private double loadSeconds;
+    private double bvhSeconds;
 
     @Override
     public Integer call() {
@@ -160,10 +164,11 @@ final class RenderCommand implements Callable<Integer> {
         }
         HeapCheck.checkFilm(width, height);
         long loadStart = System.nanoTime();
-        Scene loaded = load();
-        loadSeconds = (System.nanoTime() - loadStart) * 1e-9 - loaded.bvhBuildSeconds();
-        Scene s = loaded.withCamera(camera(loaded.camera()));
-        settings = withSceneFile(loaded.settings());
+        SceneFile loaded = load();
+        bvhSeconds = World.of(loaded.scene()).bvhBuildSeconds();
+        loadSeconds = (System.nanoTime() - loadStart) * 1e-9 - bvhSeconds;
+        Scene s = loaded.scene().withCamera(camera(loaded.scene().camera()));
+        settings = loaded.settings().applyTo(settings, SceneFileOptions.given(spec.commandLine().getParseResult()));
         if (settings.width() != width || settings.height() != height) {
             HeapCheck.checkFilm(settings.width(), settings.height());          // the scene file's size
         }
@@ -173,47 +178,46 @@ final class RenderCommand implements Callable<Integer> {
             }
             err.flush();
         }
-        Checkpoint identity = checkpointFile != null ? Checkpoint.of(s, settings) : null;
-        Checkpoint.Restored restored = resume != null ? restore(identity) : null;
-        if (restored != null && !quiet) {
-            err.println(String.format(Locale.ROOT, "strahl: resuming %s at %d spp (%.1f s rendered before)", resume,
-                    restored.samplesPerPixel(), restored.seconds()));
-            err.flush();
-        }
-        return render(s, settings, identity, checkpointFile, restored, err, irq);
+        return render(s, settings, checkpointFile, err, irq);
     }
 
-    private Scene load() throws SceneException {
+    private SceneFile load() throws SceneException {
         try {
-            return SceneLoader.load(scene);
+            return SceneFile.load(scene);
         } catch (OutOfMemoryError e) {
             throw new IllegalArgumentException(scene + ": the scene does not fit in the Java heap (at most "
                     + HeapCheck.bytes(Runtime.getRuntime().maxMemory()) + "): give Java more memory (java -Xmx...)", e);
         }
     }
 
-    private Checkpoint.Restored restore(Checkpoint identity) throws CheckpointException {
+    private RenderJob start(Scene s, RenderSettings settings, RenderListener listener, PrintWriter err) throws CheckpointException {
+        if (resume == null) {
+            return RenderJob.start(s, settings, listener);
+        }
+        RenderJob job;
         try {
-            return identity.restore(resume);
+            job = RenderJob.resumeFrom(resume, s, settings, listener);
         } catch (IOException e) {
             throw new CheckpointException(resume, "cannot read the checkpoint: " + e.getMessage());
         }
+        if (!quiet) {
+            err.println(String.format(Locale.ROOT, "strahl: resuming %s at %d spp (%.1f s rendered before)", resume,
+                    job.completedSamplesPerPixel(), job.earlierSeconds()));
+            err.flush();
+        }
+        return job;
     }
 
     private RenderSettings settings() {
         return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0,
-                transport.integrator, transport.lightSamples, timeLimit == null ? Duration.ZERO : timeLimit)
-                .withPhotons(transport.photons).withPhotonRadius(transport.photonRadius);
+                transport.integrator, transport.lightSamples, timeLimit == null ? Duration.ZERO : timeLimit,
+                new PhotonParameters(transport.photons, transport.photonRadius));
     }
 
     /**
      * The scene file's film and integrator keys, overridden by every option given on the command
      * line (an option left at its default does not override the file).
      */
-    private RenderSettings withSceneFile(SceneSettings file) throws SceneException {
-        return settings().withSceneFile(scene, file, SceneFileOptions.given(spec.commandLine().getParseResult()));
-    }
-
     /** Refuses an unwritable output before spending time on the render. */
     private void checkOutput(Path file, String what) {
         if (!ImageWriters.isSupported(file)) {
@@ -250,15 +254,14 @@ final class RenderCommand implements Callable<Integer> {
                 up != null ? up : base.up(), fov != null ? fov : base.fovDegrees());
     }
 
-    private int render(Scene s, RenderSettings settings, Checkpoint identity, Path checkpointFile, Checkpoint.Restored restored,
-                       PrintWriter err, Interrupts irq) throws InterruptedException {
-        Film film = restored != null ? restored.film() : new Film(settings.width(), settings.height());
-        var saver = identity == null ? null
-                : new CheckpointSaver(identity, checkpointFile, film, checkpointInterval, restored, err);
+    private int render(Scene s, RenderSettings settings, Path checkpointFile, PrintWriter err, Interrupts irq)
+            throws InterruptedException, CheckpointException {
+        var saver = checkpointFile == null ? null : new CheckpointSaver(checkpointFile, checkpointInterval, err);
         boolean showProgress = !quiet && Terminal.isStderrTerminal();
         ProgressBar bar = new ProgressBar(System.err);
         RenderStats stats;
-        try (RenderJob job = RenderJob.resume(s, settings, film, saver != null ? saver : new RenderListener() {})) {
+        Image image;
+        try (RenderJob job = start(s, settings, saver != null ? saver : new RenderListener() {}, err)) {
             if (saver != null) {
                 saver.attach(job);
             }
@@ -276,26 +279,30 @@ final class RenderCommand implements Callable<Integer> {
                 }
                 throw new RenderFailure("the render failed: " + e.getCause(), e.getCause());
             }
+            image = job.awaitCompletion();
+            if (saver != null) {
+                saver.saveFinal();
+            }
         } finally {
             if (showProgress) {
                 bar.finish();
             }
         }
         try {
-            ImageWriters.write(film, output);
+            ImageWriters.write(image, output);
         } catch (IOException | UncheckedIOException e) {
             throw new RenderFailure("cannot write " + output + ": " + e.getMessage(), e);
         }
         if (statsFile != null) {
             try {
-                StatsFile.write(statsFile, stats, settings, loadSeconds, s.bvhBuildSeconds());
+                StatsFile.write(statsFile, stats, settings, loadSeconds, bvhSeconds);
             } catch (IOException e) {
                 throw new RenderFailure("cannot write " + statsFile + ": " + e.getMessage(), e);
             }
         }
-        boolean savedCheckpoint = saver != null && saver.saveFinal(stats);
+        boolean savedCheckpoint = saver != null;
         irq.written();
-        long invalid = stats.invalidSamples() + (restored != null ? restored.invalidSamples() : 0);
+        long invalid = stats.invalidSamples();
         if (irq.interrupted()) {
             err.println(String.format(Locale.ROOT, "strahl: interrupted at %d of %d spp after %.2f s: wrote %s%s",
                     stats.samplesPerPixel(), settings.samplesPerPixel(), stats.seconds(), output,
@@ -308,7 +315,7 @@ final class RenderCommand implements Callable<Integer> {
             }
             err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %d spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
                     settings.integrator().id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
-                    ProgressBar.si(stats.samplesPerSecond()), ProgressBar.si(stats.raysPerSecond()), stats.threads(), output));
+                    Units.si(stats.samplesPerSecond()), Units.si(stats.raysPerSecond()), stats.threads(), output));
         }
         if (!quiet && invalid > 0) {
             err.println("strahl: warning: " + invalid + " samples were NaN or infinite and counted as black");
@@ -321,7 +328,7 @@ final class RenderCommand implements Callable<Integer> {
     static String limitText(Duration d) {
         double seconds = d.toNanos() * 1e-9;
         if (seconds >= 100) {
-            return ProgressBar.formatDuration(seconds);
+            return Units.duration(seconds);
         }
         return new BigDecimal(seconds).round(new MathContext(3)).stripTrailingZeros().toPlainString() + " s";
     }

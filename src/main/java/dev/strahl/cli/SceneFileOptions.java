@@ -1,6 +1,6 @@
 package dev.strahl.cli;
 
-import dev.strahl.scene.SceneSettings.Setting;
+import dev.strahl.io.json.SceneSettings.Setting;
 import java.util.EnumSet;
 import java.util.Map;
 import java.util.Set;

@@ -1,5 +1,6 @@
 package dev.strahl.cli;
 
+import dev.strahl.io.json.JsonFile;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
 import java.io.IOException;

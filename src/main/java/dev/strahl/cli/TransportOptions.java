@@ -1,8 +1,8 @@
 package dev.strahl.cli;
 
-import dev.strahl.integrator.IntegratorKind;
-import dev.strahl.integrator.PhotonParameters;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.render.IntegratorKind;
+import dev.strahl.render.PhotonParameters;
+import dev.strahl.render.HemisphereSampling;
 import picocli.CommandLine.Option;
 
 /** The light-transport options that {@code render} and {@code view} share, defined once. */

@@ -1,7 +1,7 @@
 package dev.strahl.cli;
 
 import dev.strahl.scene.SceneException;
-import dev.strahl.scene.SceneSettings;
+import dev.strahl.io.json.SceneSettings;
 import dev.strahl.viewer.Theme;
 import dev.strahl.viewer.Viewer;
 import dev.strahl.viewer.ViewerOptions;

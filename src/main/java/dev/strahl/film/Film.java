@@ -1,5 +1,7 @@
 package dev.strahl.film;
 
+import dev.strahl.image.Image;
+
 /**
  * The HDR accumulation buffer of a render: per pixel the sums of r, g, b in double precision and
  * the number of samples. Memory is laid out tile by tile ({@value #TILE}×{@value #TILE} pixels),

@@ -1,5 +1,6 @@
 package dev.strahl.film;
 
+import dev.strahl.image.Image;
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
 

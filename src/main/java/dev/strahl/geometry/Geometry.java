@@ -375,30 +375,22 @@ public final class Geometry {
         private int degenerateCount;
 
         /**
-         * Adds every non-degenerate triangle of the mesh with the given material per triangle
-         * ({@code materials[i]} for triangle i). Triangles of zero area are skipped and counted.
-         *
-         * @param closed the mesh is closed with outward-facing triangles (back faces may be culled)
-         */
-        public Builder addMesh(TriangleMesh mesh, int[] materials, boolean closed) {
-            byte[] flags = new byte[mesh.triangleCount()];
-            Arrays.fill(flags, closed ? CLOSED : 0);
-            return addMesh(mesh, materials, flags);
-        }
-
-        /**
-         * Adds every non-degenerate triangle of the mesh with its material and flags
+         * Adds every non-degenerate triangle of an indexed mesh with its material and flags
          * ({@link #CLOSED}) per triangle. Triangles of zero area are skipped and counted.
+         *
+         * @param p         vertex positions, x, y, z per vertex
+         * @param idx       three vertex indices per triangle, each in range
+         * @param n         vertex normals like {@code p}, or null
+         * @param materials the material index of each triangle
+         * @param flags     the flags of each triangle
          */
-        public Builder addMesh(TriangleMesh mesh, int[] materials, byte[] flags) {
-            if (materials.length != mesh.triangleCount() || flags.length != mesh.triangleCount()) {
-                throw new IllegalArgumentException("need one material per triangle: " + materials.length + " for " + mesh.triangleCount());
+        public Builder addMesh(float[] p, int[] idx, float[] n, int[] materials, byte[] flags) {
+            int triangles = idx.length / 3;
+            if (materials.length != triangles || flags.length != triangles) {
+                throw new IllegalArgumentException("need one material and flag per triangle: " + materials.length + " for " + triangles);
             }
-            float[] p = mesh.positionsUnsafe();
-            float[] n = mesh.normalsUnsafe();
-            int[] idx = mesh.indicesUnsafe();
             int base = vertexCount;
-            ensureVertices(vertexCount + mesh.vertexCount());
+            ensureVertices(vertexCount + p.length / 3);
             System.arraycopy(p, 0, pos, 3 * base, p.length);
             if (n != null) {
                 if (!hasNormals) {
@@ -407,10 +399,10 @@ public final class Geometry {
                 }
                 System.arraycopy(n, 0, nrm, 3 * base, n.length);
             } else {
-                Arrays.fill(nrm, 3 * base, 3 * (base + mesh.vertexCount()), Float.NaN);
+                Arrays.fill(nrm, 3 * base, 3 * (base + p.length / 3), Float.NaN);
             }
-            vertexCount += mesh.vertexCount();
-            for (int t = 0; t < mesh.triangleCount(); t++) {
+            vertexCount += p.length / 3;
+            for (int t = 0; t < triangles; t++) {
                 int a = idx[3 * t], b = idx[3 * t + 1], c = idx[3 * t + 2];
                 if (isDegenerate(p, a, b, c)) {
                     degenerateCount++;

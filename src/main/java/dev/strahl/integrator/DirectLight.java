@@ -1,5 +1,6 @@
 package dev.strahl.integrator;
 
+import dev.strahl.math.MutableRgb;
 import dev.strahl.accel.Bvh;
 import dev.strahl.accel.TraversalStack;
 import dev.strahl.geometry.Ray;
@@ -9,7 +10,7 @@ import dev.strahl.light.LightSampler;
 import dev.strahl.material.Bsdf;
 import dev.strahl.math.Frame;
 import dev.strahl.math.MathUtil;
-import dev.strahl.math.Rgb;
+import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Rng;
 import org.joml.Vector3d;
 import org.joml.Vector3dc;
@@ -19,7 +20,7 @@ import org.joml.Vector3dc;
  * estimated with shadow rays to points sampled on the lights. One per worker thread (it owns its
  * scratch objects); shared by the path tracer, direct lighting and Whitted.
  */
-final class DirectLight {
+public final class DirectLight {
     private final Bvh bvh;
     private final LightSampler lights;
     private final TraversalStack stack;
@@ -29,8 +30,8 @@ final class DirectLight {
     private final Vector3d wiLocal = new Vector3d();
     private final Vector3d toSurface = new Vector3d();
     private final Vector3d target = new Vector3d();
-    private final Rgb.Mutable f = new Rgb.Mutable();
-    long rays;
+    private final MutableRgb f = new MutableRgb();
+    public long rays;
 
     DirectLight(Bvh bvh, LightSampler lights, TraversalStack stack) {
         this.bvh = bvh;
@@ -45,8 +46,8 @@ final class DirectLight {
      *                   taken at this point, and w is the power heuristic with sample counts
      *                   (Veach 1997, eq. 9.13): (n·pl)² / ((n·pl)² + (nb·pb)²)
      */
-    void add(Bsdf bsdf, SurfacePoint sp, Frame frame, Vector3dc woLocal, Rng rng, int n, int bsdfWeight,
-             Rgb.Mutable beta, Rgb.Mutable out) {
+    public void add(Bsdf bsdf, SurfacePoint sp, Frame frame, Vector3dc woLocal, Rng rng, int n, int bsdfWeight,
+             MutableRgb beta, MutableRgb out) {
         double scale = 1.0 / n;
         for (int i = 0; i < n; i++) {
             // The point on the light first: a pair of dimensions of a stratified sampler.

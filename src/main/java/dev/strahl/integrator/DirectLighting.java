@@ -1,14 +1,14 @@
 package dev.strahl.integrator;
 
+import dev.strahl.math.MutableRgb;
 import dev.strahl.geometry.Ray;
 import dev.strahl.light.LightSampler;
 import dev.strahl.material.BsdfSample;
 import dev.strahl.material.Bsdf;
 import dev.strahl.math.MathUtil;
-import dev.strahl.math.Rgb;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Rng;
-import dev.strahl.scene.Scene;
+import dev.strahl.world.World;
 import org.joml.Vector3d;
 
 /**
@@ -18,17 +18,17 @@ import org.joml.Vector3d;
  * quantity as the path tracer at max depth 2; soft shadows sharpen with more light samples.
  */
 public final class DirectLighting implements Integrator {
-    private final Scene scene;
+    private final World world;
     private final Bsdf[] bsdfs;
     private final boolean cullBackFaces;
     private final int lightSamples;
 
-    public DirectLighting(Scene scene, HemisphereSampling hemisphere, boolean cullBackFaces, int lightSamples) {
+    public DirectLighting(World world, boolean uniformHemisphere, boolean cullBackFaces, int lightSamples) {
         if (lightSamples < 1) {
             throw new IllegalArgumentException("light samples must be >= 1, got " + lightSamples);
         }
-        this.scene = scene;
-        this.bsdfs = Shading.bsdfs(scene, hemisphere);
+        this.world = world;
+        this.bsdfs = Shading.bsdfs(world, uniformHemisphere);
         this.cullBackFaces = cullBackFaces;
         this.lightSamples = lightSamples;
     }
@@ -36,12 +36,12 @@ public final class DirectLighting implements Integrator {
     @Override
     public Worker newWorker() {
         return new Worker() {
-            private final Tracer tracer = new Tracer(scene, bsdfs, cullBackFaces);
-            private final LightSampler lights = scene.lights();
+            private final Tracer tracer = new Tracer(world, bsdfs, cullBackFaces);
+            private final LightSampler lights = world.lights();
             private final Shading s = new Shading();
             private final BsdfSample bs = new BsdfSample();
             private final Vector3d wi = new Vector3d();
-            private final Rgb.Mutable beta = new Rgb.Mutable();
+            private final MutableRgb beta = new MutableRgb();
 
             @Override
             public long rayCount() {
@@ -49,9 +49,9 @@ public final class DirectLighting implements Integrator {
             }
 
             @Override
-            public void radiance(Ray ray, Rng rng, Rgb.Mutable out) {
+            public void radiance(Ray ray, Rng rng, MutableRgb out) {
                 if (tracer.trace(ray, s) < 0) {
-                    out.set(scene.environment());
+                    out.set(world.environment());
                     return;
                 }
                 out.set(s.emitted);
@@ -76,7 +76,7 @@ public final class DirectLighting implements Integrator {
                 ray.tMax = Double.POSITIVE_INFINITY;
                 double t = tracer.trace(ray, s);
                 if (t < 0) {
-                    out.addProduct(beta, scene.environment(), 1);
+                    out.addProduct(beta, world.environment(), 1);
                     return;
                 }
                 if (!s.emitted.isBlack()) {

@@ -1,7 +1,8 @@
 package dev.strahl.integrator;
 
+import dev.strahl.math.MutableRgb;
 import dev.strahl.geometry.Ray;
-import dev.strahl.math.Rgb;
+import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Rng;
 
 /**
@@ -43,7 +44,7 @@ public interface Integrator {
          * A pure function of the ray, the random stream and the prepared sample index; may
          * modify {@code ray}.
          */
-        void radiance(Ray ray, Rng rng, Rgb.Mutable out);
+        void radiance(Ray ray, Rng rng, MutableRgb out);
 
         /** Rays traced by this worker so far (camera, continuation and shadow rays, and any traced for {@link #prepareSample}). */
         long rayCount();

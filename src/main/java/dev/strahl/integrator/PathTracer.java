@@ -1,14 +1,14 @@
 package dev.strahl.integrator;
 
+import dev.strahl.math.MutableRgb;
 import dev.strahl.geometry.Ray;
 import dev.strahl.light.LightSampler;
 import dev.strahl.material.Bsdf;
 import dev.strahl.material.BsdfSample;
 import dev.strahl.math.MathUtil;
-import dev.strahl.math.Rgb;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Rng;
-import dev.strahl.scene.Scene;
+import dev.strahl.world.World;
 import org.joml.Vector3d;
 
 /**
@@ -22,7 +22,7 @@ import org.joml.Vector3d;
  * seen directly, 2 adds direct lighting, -1 is unbounded.
  */
 public final class PathTracer implements Integrator {
-    static final int RR_DEPTH = 5;
+    public static final int RR_DEPTH = 5;
     /** Random numbers one light sample takes (point on the light, then the light's choice). */
     private static final int LIGHT_DIMENSIONS = 3;
 
@@ -36,21 +36,21 @@ public final class PathTracer implements Integrator {
         LIGHT
     }
 
-    private final Scene scene;
+    private final World world;
     private final Bsdf[] bsdfs;
     private final int maxDepth;
     private final boolean cullBackFaces;
     private final Strategy strategy;
 
-    public PathTracer(Scene scene, int maxDepth, HemisphereSampling hemisphere, boolean cullBackFaces, Strategy strategy) {
+    public PathTracer(World world, int maxDepth, boolean uniformHemisphere, boolean cullBackFaces, Strategy strategy) {
         if (maxDepth == 0 || maxDepth < -1) {
             throw new IllegalArgumentException("maxDepth must be -1 (unbounded) or >= 1, got " + maxDepth);
         }
-        this.scene = scene;
+        this.world = world;
         this.maxDepth = maxDepth;
         this.cullBackFaces = cullBackFaces;
         this.strategy = strategy;
-        this.bsdfs = Shading.bsdfs(scene, hemisphere);
+        this.bsdfs = Shading.bsdfs(world, uniformHemisphere);
     }
 
     @Override
@@ -59,13 +59,13 @@ public final class PathTracer implements Integrator {
     }
 
     private final class PathWorker implements Worker {
-        private final Tracer tracer = new Tracer(scene, bsdfs, cullBackFaces);
-        private final LightSampler lights = scene.lights();
-        private final Rgb environment = scene.environment();
+        private final Tracer tracer = new Tracer(world, bsdfs, cullBackFaces);
+        private final LightSampler lights = world.lights();
+        private final Rgb environment = world.environment();
         private final Shading s = new Shading();
         private final BsdfSample bs = new BsdfSample();
         private final Vector3d wiWorld = new Vector3d();
-        private final Rgb.Mutable beta = new Rgb.Mutable();
+        private final MutableRgb beta = new MutableRgb();
 
         @Override
         public long rayCount() {
@@ -73,7 +73,7 @@ public final class PathTracer implements Integrator {
         }
 
         @Override
-        public void radiance(Ray ray, Rng rng, Rgb.Mutable out) {
+        public void radiance(Ray ray, Rng rng, MutableRgb out) {
             out.setZero();
             beta.set(1, 1, 1);
             double prevPdf = 0;

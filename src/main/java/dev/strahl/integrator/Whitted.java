@@ -1,13 +1,13 @@
 package dev.strahl.integrator;
 
+import dev.strahl.math.MutableRgb;
 import dev.strahl.geometry.Ray;
 import dev.strahl.light.LightSampler;
 import dev.strahl.material.Bsdf;
 import dev.strahl.material.BsdfSample;
-import dev.strahl.math.Rgb;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Rng;
-import dev.strahl.scene.Scene;
+import dev.strahl.world.World;
 import org.joml.Vector3d;
 
 /**
@@ -25,21 +25,21 @@ public final class Whitted implements Integrator {
     /** The recursion limit used for max depth -1: deep enough for glass, bounded for mirror pairs. */
     static final int UNBOUNDED_DEPTH = 16;
 
-    private final Scene scene;
+    private final World world;
     private final Bsdf[] bsdfs;
     private final int maxDepth;
     private final boolean cullBackFaces;
     private final int lightSamples;
 
-    public Whitted(Scene scene, int maxDepth, boolean cullBackFaces, int lightSamples) {
+    public Whitted(World world, int maxDepth, boolean cullBackFaces, int lightSamples) {
         if (maxDepth == 0 || maxDepth < -1) {
             throw new IllegalArgumentException("maxDepth must be -1 (unbounded) or >= 1, got " + maxDepth);
         }
         if (lightSamples < 1) {
             throw new IllegalArgumentException("light samples must be >= 1, got " + lightSamples);
         }
-        this.scene = scene;
-        this.bsdfs = Shading.bsdfs(scene, HemisphereSampling.COSINE);
+        this.world = world;
+        this.bsdfs = Shading.bsdfs(world, false);
         this.maxDepth = maxDepth > 0 ? maxDepth : UNBOUNDED_DEPTH;
         this.cullBackFaces = cullBackFaces;
         this.lightSamples = lightSamples;
@@ -51,12 +51,12 @@ public final class Whitted implements Integrator {
     }
 
     private final class WhittedWorker implements Worker {
-        private final Tracer tracer = new Tracer(scene, bsdfs, cullBackFaces);
-        private final LightSampler lights = scene.lights();
+        private final Tracer tracer = new Tracer(world, bsdfs, cullBackFaces);
+        private final LightSampler lights = world.lights();
         // Scratch per recursion level, so that a level's state survives its children.
         private final Shading[] shading = new Shading[maxDepth + 1];
         private final BsdfSample[][] lobes = new BsdfSample[maxDepth + 1][2];
-        private final Rgb.Mutable[] beta = new Rgb.Mutable[maxDepth + 1];
+        private final MutableRgb[] beta = new MutableRgb[maxDepth + 1];
         private final Vector3d wi = new Vector3d();
 
         WhittedWorker() {
@@ -64,7 +64,7 @@ public final class Whitted implements Integrator {
                 shading[i] = new Shading();
                 lobes[i][0] = new BsdfSample();
                 lobes[i][1] = new BsdfSample();
-                beta[i] = new Rgb.Mutable();
+                beta[i] = new MutableRgb();
             }
         }
 
@@ -74,18 +74,18 @@ public final class Whitted implements Integrator {
         }
 
         @Override
-        public void radiance(Ray ray, Rng rng, Rgb.Mutable out) {
+        public void radiance(Ray ray, Rng rng, MutableRgb out) {
             out.setZero();
             beta[0].set(1, 1, 1);
             trace(ray, 1, rng, out);
         }
 
         /** Adds beta[depth-1]·L(ray) to out, where the ray is the depth-th segment of the path. */
-        private void trace(Ray ray, int depth, Rng rng, Rgb.Mutable out) {
-            Rgb.Mutable weight = beta[depth - 1];
+        private void trace(Ray ray, int depth, Rng rng, MutableRgb out) {
+            MutableRgb weight = beta[depth - 1];
             Shading s = shading[depth];
             if (tracer.trace(ray, s) < 0) {
-                out.addProduct(weight, scene.environment(), 1);
+                out.addProduct(weight, world.environment(), 1);
                 return;
             }
             out.addProduct(weight, s.emitted, 1);

@@ -1,6 +1,6 @@
 package dev.strahl.light;
 
-import dev.strahl.math.Rgb;
+import dev.strahl.image.Rgb;
 import org.joml.Vector3d;
 
 /** A point sampled on a light, seen from a reference point; mutable, reused per thread. */

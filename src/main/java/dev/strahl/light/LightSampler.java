@@ -2,7 +2,7 @@ package dev.strahl.light;
 
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.SurfacePoint;
-import dev.strahl.math.Rgb;
+import dev.strahl.image.Rgb;
 import java.util.Arrays;
 import org.joml.Vector3dc;
 

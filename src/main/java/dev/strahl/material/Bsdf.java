@@ -1,7 +1,7 @@
 package dev.strahl.material;
 
-import dev.strahl.math.Rgb;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.math.MutableRgb;
+import dev.strahl.image.Rgb;
 import org.joml.Vector3dc;
 
 /**
@@ -12,7 +12,7 @@ import org.joml.Vector3dc;
 public sealed interface Bsdf permits Lambert, Mirror, Dielectric, Glossy {
 
     /** f(wo, wi) WITHOUT the cosine factor, into {@code dest}. Zero for delta lobes. */
-    void eval(Vector3dc wo, Vector3dc wi, Rgb.Mutable dest);
+    void eval(Vector3dc wo, Vector3dc wi, MutableRgb dest);
 
     /** Solid-angle density with which {@link #sample} picks wi given wo. Zero for delta lobes. */
     double pdf(Vector3dc wo, Vector3dc wi);
@@ -36,8 +36,8 @@ public sealed interface Bsdf permits Lambert, Mirror, Dielectric, Glossy {
         return true;
     }
 
-    /** This BSDF with diffuse lobes sampled as given; BSDFs without diffuse lobes return themselves. */
-    default Bsdf withHemisphereSampling(HemisphereSampling sampling) {
+    /** This BSDF with its diffuse lobes sampled uniformly or cosine-weighted; BSDFs without diffuse lobes return themselves. */
+    default Bsdf withUniformHemisphere(boolean uniform) {
         return this;
     }
 }

@@ -1,6 +1,7 @@
 package dev.strahl.material;
 
-import dev.strahl.math.Rgb;
+import dev.strahl.math.MutableRgb;
+import dev.strahl.image.Rgb;
 import org.joml.Vector3d;
 
 /** The result of sampling a BSDF; mutable, reused per thread. */
@@ -11,7 +12,7 @@ public final class BsdfSample {
     /** Sampled direction in the local frame. */
     public final Vector3d wi = new Vector3d();
     /** f(wo, wi)·|cosθi| / pdf. */
-    public final Rgb.Mutable weight = new Rgb.Mutable();
+    public final MutableRgb weight = new MutableRgb();
     /** Solid-angle density of wi; for a delta lobe the probability of choosing that lobe. */
     public double pdf;
     /** Whether wi comes from a delta (perfectly specular) lobe, for which eval and pdf are zero. */

@@ -1,6 +1,7 @@
 package dev.strahl.material;
 
-import dev.strahl.math.Rgb;
+import dev.strahl.math.MutableRgb;
+import dev.strahl.image.Rgb;
 import org.joml.Vector3dc;
 
 /**
@@ -44,7 +45,7 @@ public record Dielectric(double eta) implements Bsdf {
     }
 
     @Override
-    public void eval(Vector3dc wo, Vector3dc wi, Rgb.Mutable dest) {
+    public void eval(Vector3dc wo, Vector3dc wi, MutableRgb dest) {
         dest.setZero();
     }
 

@@ -1,7 +1,7 @@
 package dev.strahl.material;
 
-import dev.strahl.math.Rgb;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.math.MutableRgb;
+import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Warp;
 import java.util.Objects;
 import org.joml.Vector3dc;
@@ -42,9 +42,9 @@ import org.joml.Vector3dc;
  * @param specular    Ks, the reflectance of the microfacet mirror, channels ≥ 0; every channel of
  *                    Kd + Ks at most 1
  * @param alpha       Beckmann roughness α &gt; 0, the root-mean-square slope of the microfacets
- * @param sampling    how the diffuse lobe picks directions
+ * @param uniform     the diffuse lobe samples directions uniformly rather than cosine-weighted
  */
-public record Glossy(Rgb diffuse, Rgb specular, double alpha, HemisphereSampling sampling) implements Bsdf {
+public record Glossy(Rgb diffuse, Rgb specular, double alpha, boolean uniform) implements Bsdf {
     private static final double INV_PI = 1 / Math.PI;
     private static final double INV_SQRT_PI = 1 / Math.sqrt(Math.PI);
     /** Kd + Ks may exceed 1 by this much, the round-off of the normalisation in the factory. */
@@ -56,12 +56,11 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, HemisphereSampling
      * @param diffuse  Kd, the diffuse albedo, channels ≥ 0
      * @param specular Ks, the reflectance of the microfacet mirror, channels ≥ 0; every channel of Kd + Ks at most 1
      * @param alpha    Beckmann roughness α &gt; 0, the root-mean-square slope of the microfacets
-     * @param sampling how the diffuse lobe picks directions
+     * @param uniform  the diffuse lobe samples uniformly rather than cosine-weighted
      */
     public Glossy {
         Objects.requireNonNull(diffuse, "diffuse");
         Objects.requireNonNull(specular, "specular");
-        Objects.requireNonNull(sampling, "sampling");
         if (diffuse.r() < 0 || diffuse.g() < 0 || diffuse.b() < 0 || specular.r() < 0 || specular.g() < 0 || specular.b() < 0) {
             throw new IllegalArgumentException("Kd and Ks must not be negative, got Kd " + diffuse + ", Ks " + specular);
         }
@@ -95,7 +94,7 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, HemisphereSampling
             kd = kd.scale(1 / max);
             ks = ks.scale(1 / max);
         }
-        return new Glossy(kd, ks, alphaFromPhongExponent(ns), HemisphereSampling.COSINE);
+        return new Glossy(kd, ks, alphaFromPhongExponent(ns), false);
     }
 
     /**
@@ -109,7 +108,7 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, HemisphereSampling
     }
 
     @Override
-    public void eval(Vector3dc wo, Vector3dc wi, Rgb.Mutable dest) {
+    public void eval(Vector3dc wo, Vector3dc wi, MutableRgb dest) {
         if (wo.z() <= 0 || wi.z() <= 0) {
             dest.setZero();
             return;
@@ -147,7 +146,7 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, HemisphereSampling
             if (!(out.wi.z > 0)) {
                 return false;
             }
-        } else if (sampling == HemisphereSampling.COSINE) {
+        } else if (!uniform) {
             Warp.cosineHemisphere(u1, u2, out.wi);
         } else {
             Warp.uniformHemisphere(u1, u2, out.wi);
@@ -163,8 +162,8 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, HemisphereSampling
     }
 
     @Override
-    public Bsdf withHemisphereSampling(HemisphereSampling s) {
-        return s == sampling ? this : new Glossy(diffuse, specular, alpha, s);
+    public Bsdf withUniformHemisphere(boolean u) {
+        return u == uniform ? this : new Glossy(diffuse, specular, alpha, u);
     }
 
     // ------------------------------------------------------------------------------------------
@@ -182,7 +181,7 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, HemisphereSampling
     }
 
     private double diffusePdf(double cosThetaI) {
-        return sampling == HemisphereSampling.COSINE ? Warp.cosineHemispherePdf(cosThetaI) : Warp.uniformHemispherePdf(cosThetaI);
+        return uniform ? Warp.uniformHemispherePdf(cosThetaI) : Warp.cosineHemispherePdf(cosThetaI);
     }
 
     /** D(h) G1(wo) G1(wi) / (4 cosθo cosθi) for wo, wi above the surface (Walter et al. 2007 and pbrt-v3 §8.4.4, with F = 1). */

@@ -1,7 +1,7 @@
 package dev.strahl.material;
 
-import dev.strahl.math.Rgb;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.math.MutableRgb;
+import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Warp;
 import java.util.Objects;
 import org.joml.Vector3dc;
@@ -12,20 +12,19 @@ import org.joml.Vector3dc;
  * weight = 2·albedo·cosθ).
  *
  * @param albedo   reflectance, each channel in [0, 1]
- * @param sampling how directions are sampled
+ * @param uniform  sample directions uniformly over the hemisphere rather than cosine-weighted
  */
-public record Lambert(Rgb albedo, HemisphereSampling sampling) implements Bsdf {
+public record Lambert(Rgb albedo, boolean uniform) implements Bsdf {
     private static final double INV_PI = 1 / Math.PI;
 
     /**
      * Checks that the albedo lies in [0, 1].
      *
      * @param albedo   reflectance, each channel in [0, 1]
-     * @param sampling how directions are sampled
+     * @param uniform  sample directions uniformly rather than cosine-weighted
      */
     public Lambert {
         Objects.requireNonNull(albedo, "albedo");
-        Objects.requireNonNull(sampling, "sampling");
         if (albedo.r() < 0 || albedo.g() < 0 || albedo.b() < 0 || albedo.max() > 1) {
             throw new IllegalArgumentException("diffuse albedo must lie in [0, 1], got " + albedo);
         }
@@ -37,11 +36,11 @@ public record Lambert(Rgb albedo, HemisphereSampling sampling) implements Bsdf {
      * @param albedo reflectance, each channel in [0, 1]
      */
     public Lambert(Rgb albedo) {
-        this(albedo, HemisphereSampling.COSINE);
+        this(albedo, false);
     }
 
     @Override
-    public void eval(Vector3dc wo, Vector3dc wi, Rgb.Mutable dest) {
+    public void eval(Vector3dc wo, Vector3dc wi, MutableRgb dest) {
         if (wo.z() <= 0 || wi.z() <= 0) {
             dest.setZero();
             return;
@@ -54,7 +53,7 @@ public record Lambert(Rgb albedo, HemisphereSampling sampling) implements Bsdf {
         if (wo.z() <= 0) {
             return 0;
         }
-        return sampling == HemisphereSampling.COSINE ? Warp.cosineHemispherePdf(wi.z()) : Warp.uniformHemispherePdf(wi.z());
+        return uniform ? Warp.uniformHemispherePdf(wi.z()) : Warp.cosineHemispherePdf(wi.z());
     }
 
     @Override
@@ -63,7 +62,7 @@ public record Lambert(Rgb albedo, HemisphereSampling sampling) implements Bsdf {
             return false;
         }
         out.delta = false;
-        if (sampling == HemisphereSampling.COSINE) {
+        if (!uniform) {
             Warp.cosineHemisphere(u1, u2, out.wi);
             out.pdf = Warp.cosineHemispherePdf(out.wi.z);
             out.weight.set(albedo);
@@ -76,7 +75,7 @@ public record Lambert(Rgb albedo, HemisphereSampling sampling) implements Bsdf {
     }
 
     @Override
-    public Bsdf withHemisphereSampling(HemisphereSampling s) {
-        return s == sampling ? this : new Lambert(albedo, s);
+    public Bsdf withUniformHemisphere(boolean u) {
+        return u == uniform ? this : new Lambert(albedo, u);
     }
 }

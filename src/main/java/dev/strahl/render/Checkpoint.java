@@ -1,9 +1,9 @@
 package dev.strahl.render;
 
-import dev.strahl.camera.Camera;
-import dev.strahl.film.AtomicFile;
+import dev.strahl.scene.Camera;
+import dev.strahl.io.image.AtomicFile;
 import dev.strahl.film.Film;
-import dev.strahl.material.Material;
+import dev.strahl.world.World;
 import dev.strahl.scene.Scene;
 import java.io.BufferedInputStream;
 import java.io.DataInputStream;
@@ -30,7 +30,7 @@ import java.util.zip.CheckedOutputStream;
 /**
  * The saved state of a render, so that a long render survives an interruption: per pixel the
  * sample count and the r, g, b sums of the film, with a fingerprint of everything that decides
- * the image. Resuming ({@link RenderJob#resume}) continues every pixel from the sample index it
+ * the image. Resuming ({@link RenderJob#resumeFrom}) continues every pixel from the sample index it
  * reached, so an interrupted and resumed render is bit-identical to an uninterrupted one.
  *
  * <p>File format (big-endian), version 1:
@@ -50,7 +50,7 @@ import java.util.zip.CheckedOutputStream;
  * the target samples per pixel (a render may be resumed to go further), the thread count, the
  * pass size and the time limit. Every other setting, including any added later, is part of it.
  */
-public final class Checkpoint {
+final class Checkpoint {
     static final int VERSION = 1;
     private static final byte[] MAGIC = "STRAHLCK".getBytes(StandardCharsets.US_ASCII);
     private static final int PIXEL_BYTES = 4 + 3 * 8;
@@ -76,7 +76,7 @@ public final class Checkpoint {
      * @param settings the render settings
      * @return the identity, to save and restore checkpoints of that render
      */
-    public static Checkpoint of(Scene scene, RenderSettings settings) {
+    static Checkpoint of(Scene scene, RenderSettings settings) {
         return new Checkpoint(sceneDigest(scene), settingsKey(settings), settings.width(), settings.height());
     }
 
@@ -88,7 +88,7 @@ public final class Checkpoint {
      * @param invalidSamples  samples that were NaN or infinite, counted as black
      * @param seconds         seconds of rendering before
      */
-    public record Restored(Film film, int samplesPerPixel, long invalidSamples, double seconds) {
+    record Restored(Film film, int samplesPerPixel, long invalidSamples, double seconds) {
         /**
          * Checks the film is there.
          *
@@ -97,7 +97,7 @@ public final class Checkpoint {
          * @param invalidSamples  invalid samples so far
          * @param seconds         seconds rendered so far
          */
-        public Restored {
+        Restored {
             Objects.requireNonNull(film, "film");
         }
     }
@@ -107,7 +107,7 @@ public final class Checkpoint {
      *
      * @return bytes
      */
-    public long fileSize() {
+    long fileSize() {
         return headerSize(settingsKey) + (long) width * height * PIXEL_BYTES + 4;
     }
 
@@ -122,7 +122,7 @@ public final class Checkpoint {
      * @throws IOException if the file cannot be written; a previous checkpoint is then kept
      * @throws IllegalArgumentException if the film is not of the settings' size
      */
-    public void save(Path file, Film film, long invalidSamples, double seconds) throws IOException {
+    void save(Path file, Film film, long invalidSamples, double seconds) throws IOException {
         if (film.width() != width || film.height() != height) {
             throw new IllegalArgumentException("film " + film.width() + "x" + film.height() + " is not " + width + "x" + height);
         }
@@ -163,7 +163,7 @@ public final class Checkpoint {
      *                             corrupt, or made for another scene or other settings
      * @throws IOException         if it cannot be read
      */
-    public Restored restore(Path file) throws CheckpointException, IOException {
+    Restored restore(Path file) throws CheckpointException, IOException {
         long size;
         try {
             size = Files.size(file);
@@ -282,23 +282,34 @@ public final class Checkpoint {
         return m;
     }
 
-    /** "width=512;height=512;maxDepth=-1;...;sampler=stratified" over everything that decides the image. */
+    /**
+     * "width=512;height=512;maxDepth=-1;...;photons.photonsPerIteration=100000;...;sampler=stratified"
+     * over everything that decides the image; nested records give one entry per component.
+     */
     static String settingsKey(RenderSettings settings) {
         StringBuilder sb = new StringBuilder();
-        for (RecordComponent c : RenderSettings.class.getRecordComponents()) {
-            if (NOT_IN_FINGERPRINT.contains(c.getName())) {
+        appendComponents(sb, "", settings);
+        // Not a setting but decides the samples as much: the sample mode of the JVM (-Dstrahl.sampler).
+        return sb.append(";sampler=").append(RenderWorkers.stratifiedSampler() ? "stratified" : "independent").toString();
+    }
+
+    private static void appendComponents(StringBuilder sb, String prefix, Record record) {
+        for (RecordComponent c : record.getClass().getRecordComponents()) {
+            if (NOT_IN_FINGERPRINT.contains(prefix + c.getName())) {
                 continue;
             }
             Object value;
             try {
-                value = c.getAccessor().invoke(settings);
+                value = c.getAccessor().invoke(record);
             } catch (ReflectiveOperationException e) {
                 throw new IllegalStateException("cannot read setting " + c.getName(), e);
             }
-            sb.append(sb.length() == 0 ? "" : ";").append(c.getName()).append('=').append(value);
+            if (value instanceof Record nested) {
+                appendComponents(sb, prefix + c.getName() + ".", nested);
+            } else {
+                sb.append(sb.length() == 0 ? "" : ";").append(prefix).append(c.getName()).append('=').append(value);
+            }
         }
-        // Not a setting but decides the samples as much: the sample mode of the JVM (-Dstrahl.sampler).
-        return sb.append(";sampler=").append(RenderWorkers.stratifiedSampler() ? "stratified" : "independent").toString();
     }
 
     /** SHA-256 of the geometry arrays, the materials (exact parameters), the camera and the environment. */
@@ -309,17 +320,19 @@ public final class Checkpoint {
         } catch (NoSuchAlgorithmException e) {
             throw new IllegalStateException("SHA-256 is part of every Java platform", e);
         }
-        scene.geometry().digest(md);
+        World world = World.of(scene);
+        world.geometry().digest(md);
         StringBuilder sb = new StringBuilder();
-        for (Material m : scene.materials()) {
-            sb.append(m).append('\n');              // records: every parameter, doubles in full precision
+        for (int m = 0; m < world.materialCount(); m++) {
+            // records: every parameter, doubles in full precision
+            sb.append(world.bsdf(m)).append(' ').append(world.emission(m)).append('\n');
         }
         Camera c = scene.camera();
         sb.append("camera ").append(c.lookFrom().x()).append(' ').append(c.lookFrom().y()).append(' ').append(c.lookFrom().z())
                 .append(' ').append(c.lookAt().x()).append(' ').append(c.lookAt().y()).append(' ').append(c.lookAt().z())
                 .append(' ').append(c.up().x()).append(' ').append(c.up().y()).append(' ').append(c.up().z())
                 .append(' ').append(c.fovDegrees()).append('\n');
-        sb.append("environment ").append(scene.environment()).append('\n');
+        sb.append("environment ").append(world.environment()).append('\n');
         md.update(sb.toString().getBytes(StandardCharsets.UTF_8));
         return md.digest();
     }

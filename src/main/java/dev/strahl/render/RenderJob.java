@@ -1,9 +1,14 @@
 package dev.strahl.render;
 
+import dev.strahl.camera.PinholeRays;
 import dev.strahl.film.Film;
-import dev.strahl.film.Image;
+import dev.strahl.image.Image;
 import dev.strahl.integrator.Integrator;
+import dev.strahl.scene.Camera;
 import dev.strahl.scene.Scene;
+import dev.strahl.world.World;
+import java.io.IOException;
+import java.nio.file.Path;
 import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
@@ -13,18 +18,21 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * A render running in the background: passes over the whole image, each adding a few samples
- * per pixel, on a fixed pool of worker threads that take {@value Film#TILE}-pixel tiles from an
- * atomic counter. An integrator that {@linkplain Integrator#preparesEachSample prepares each
- * sample index} (the photon mapper) gets passes of one sample per pixel, each preceded by its
- * {@link Integrator#prepareSample} on the same threads. The random numbers of a sample depend only on (seed, pixel, sample index), and
- * each pixel adds its samples in index order, so the image is bit-identical for any thread count.
+ * per pixel, on a fixed pool of worker threads. The random numbers of a sample depend only on
+ * (seed, pixel, sample index), and each pixel adds its samples in index order, so the image is
+ * bit-identical for any thread count, and for a render paused, checkpointed and resumed.
  *
  * <pre>{@code
  * try (RenderJob job = RenderJob.start(scene, RenderSettings.defaults().withSamplesPerPixel(64))) {
- *     Film film = job.awaitCompletion();
- *     ImageWriters.write(film, Path.of("out.png"));
+ *     Image image = job.awaitCompletion();
+ *     ImageWriters.write(image, Path.of("out.png"));
  * }
  * }</pre>
+ *
+ * <p>While it runs, {@link #snapshot()} gives the image of the passes completed so far,
+ * {@link #pause()} and {@link #resume()} hold the workers and let them go on,
+ * {@link #saveCheckpoint(Path)} saves the state for {@link #resumeFrom} in another process, and
+ * {@link #cancel()} stops it.
  */
 public final class RenderJob implements AutoCloseable {
     private static final int MAX_AUTO_PASS = 16;
@@ -36,21 +44,39 @@ public final class RenderJob implements AutoCloseable {
     private final Integrator integrator;
     private final int threads;
     private final RenderWorkers workers;
+    private final Scene scene;
+    /** What ties a checkpoint to this scene and these settings; digested when first needed. */
+    private Checkpoint identity;
+    /** Figures of the renders a resumed job continues: NaN samples and seconds. */
+    private final long earlierInvalid;
+    private final double earlierSeconds;
     private final CompletableFuture<RenderStats> result = new CompletableFuture<>();
     private volatile int completedSpp;
-    private volatile long restoredSamples;           // held by a resumed film before this job began
+    private final long restoredSamples;              // held by a resumed film before this job began
     /** The mean image at the end of the last completed pass: what {@link #snapshot()} returns. */
     private volatile Image lastPass;
     private final long startNanos;
+    private final Object pauseLock = new Object();
+    private boolean paused;
+    private long pausedNanos;
+    private long pauseStart;
 
-    private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener, Film film) {
+    private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener, Checkpoint identity,
+                      Checkpoint.Restored restored) {
         this.settings = settings;
         this.listener = listener;
-        this.film = film != null ? film : new Film(settings.width(), settings.height());
+        this.film = restored != null ? restored.film() : new Film(settings.width(), settings.height());
         this.integrator = integrator;
         this.threads = settings.effectiveThreads();
-        this.workers = new RenderWorkers(this.film, scene.camera().rays(settings.width(), settings.height()), integrator,
-                settings.seed(), threads, "strahl-render-" + JOB_NUMBER.incrementAndGet());
+        this.scene = scene;
+        this.identity = identity;
+        this.earlierInvalid = restored != null ? restored.invalidSamples() : 0;
+        this.earlierSeconds = restored != null ? restored.seconds() : 0;
+        Camera c = scene.camera();
+        var rays = new PinholeRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), settings.width(), settings.height());
+        this.workers = new RenderWorkers(film, rays, integrator, settings.seed(), threads, "strahl-render-" + JOB_NUMBER.incrementAndGet());
+        this.completedSpp = Math.min(film.minSampleCount(), settings.samplesPerPixel());   // 0, unless the film was restored
+        this.restoredSamples = samplesIn(film);
         this.startNanos = System.nanoTime();
     }
 
@@ -74,61 +100,44 @@ public final class RenderJob implements AutoCloseable {
      * @return the running job; close it (or wait for it) when done
      */
     public static RenderJob start(Scene scene, RenderSettings settings, RenderListener listener) {
+        Objects.requireNonNull(scene, "scene");
         Objects.requireNonNull(settings, "settings");
-        return start(scene, settings, integratorFor(scene, settings), listener);
+        return start(scene, settings, Integrators.create(World.of(scene), settings), listener);
     }
 
-    /**
-     * Starts rendering with a given integrator (made for this scene); the settings' integrator
-     * choice is then ignored.
-     * (internal: {@link Integrator} is not part of the stable API).
-     *
-     * @param scene      the scene, shared read-only
-     * @param settings   how to render
-     * @param integrator the integrator, made for this scene
-     * @param listener   hears about every pass and the end
-     * @return the running job
-     */
-    public static RenderJob start(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener) {
+    /** Starts rendering with a given integrator made for this scene; the settings' choice is ignored (tests). */
+    static RenderJob start(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener) {
         Objects.requireNonNull(scene, "scene");
         Objects.requireNonNull(settings, "settings");
         Objects.requireNonNull(integrator, "integrator");
         Objects.requireNonNull(listener, "listener");
-        return launch(new RenderJob(scene, settings, integrator, listener, null));
+        return launch(new RenderJob(scene, settings, integrator, listener, null, null));
     }
 
     /**
-     * Continues a render into {@code film}, which holds the state of an earlier one with the same
-     * scene and settings (restored from a checkpoint, see {@link Film#restorePixel}). Each pixel
-     * goes on from the sample index it has reached, and the samples of a pixel are added in index
-     * order as always, so the result is bit-identical to a render that was never interrupted.
-     * The listener may read {@code film} in {@link RenderListener#passCompleted}: no worker writes
-     * to it until that returns. A new, empty film starts a render from the beginning.
+     * Continues the render saved in a checkpoint by {@link #saveCheckpoint}. Each pixel goes on
+     * from the sample index it had reached, and the samples of a pixel are added in index order
+     * as always, so the result is bit-identical to a render that was never interrupted.
      *
-     * @param scene    the scene, shared read-only; the same as the earlier render's
-     * @param settings how to render; the same as the earlier render's, except perhaps a higher
-     *                 sample count, another thread count, pass size or time limit
-     * @param film     the film to go on filling, of the settings' size
-     * @param listener hears about every pass and the end
+     * @param checkpoint the checkpoint file
+     * @param scene      the scene of the saved render (the same geometry, materials, camera, environment)
+     * @param settings   the settings of the saved render; the sample count may be higher, and
+     *                   threads, pass size and time limit may differ
+     * @param listener   hears about every pass and the end
      * @return the running job
-     * @throws IllegalArgumentException if the film's size is not the settings'
+     * @throws CheckpointException if the file is no checkpoint, truncated or corrupt, or was made
+     *                             for another scene or other settings (the message says which)
+     * @throws IOException         if it cannot be read
      */
-    public static RenderJob resume(Scene scene, RenderSettings settings, Film film, RenderListener listener) {
+    public static RenderJob resumeFrom(Path checkpoint, Scene scene, RenderSettings settings, RenderListener listener)
+            throws CheckpointException, IOException {
+        Objects.requireNonNull(checkpoint, "checkpoint");
         Objects.requireNonNull(scene, "scene");
         Objects.requireNonNull(settings, "settings");
-        Objects.requireNonNull(film, "film");
         Objects.requireNonNull(listener, "listener");
-        if (film.width() != settings.width() || film.height() != settings.height()) {
-            throw new IllegalArgumentException("film " + film.width() + "x" + film.height() + " does not match the settings' "
-                    + settings.width() + "x" + settings.height());
-        }
-        return launch(new RenderJob(scene, settings, integratorFor(scene, settings), listener, film));
-    }
-
-    /** The integrator the settings choose, with all its parameters. */
-    private static Integrator integratorFor(Scene scene, RenderSettings settings) {
-        return settings.integrator().create(scene, settings.maxDepth(), settings.hemisphere(), settings.cullBackFaces(),
-                settings.lightSamples(), settings.photonParameters());
+        Checkpoint identity = Checkpoint.of(scene, settings);
+        Checkpoint.Restored restored = identity.restore(checkpoint);
+        return launch(new RenderJob(scene, settings, Integrators.create(World.of(scene), settings), listener, identity, restored));
     }
 
     private static RenderJob launch(RenderJob job) {
@@ -148,19 +157,9 @@ public final class RenderJob implements AutoCloseable {
     }
 
     /**
-     * The film being filled. Read it when the job is done; while it renders, use {@link #snapshot()}.
-     *
-     * @return the film
-     */
-    public Film film() {
-        return film;
-    }
-
-    /**
      * A consistent image of the render so far: the mean of all samples of the passes completed
      * up to now, every pixel with the same sample count (black before the first pass ends).
-     * Safe to call from any thread at any time; the render goes on meanwhile. Use
-     * {@link Image#rgb()} for linear float RGB and {@link Image#toBufferedImage()} for display.
+     * Safe to call from any thread at any time; the render goes on meanwhile.
      *
      * @return the image, immutable
      */
@@ -170,7 +169,7 @@ public final class RenderJob implements AutoCloseable {
     }
 
     /**
-     * Samples per pixel of all completed passes.
+     * Samples per pixel of all completed passes (of a resumed render: counting those before).
      *
      * @return the count
      */
@@ -189,7 +188,7 @@ public final class RenderJob implements AutoCloseable {
     }
 
     /**
-     * Camera samples taken so far by this job (not counting those of a resumed film).
+     * Camera samples taken so far by this job (not counting those of a resumed render).
      *
      * @return the count
      */
@@ -198,24 +197,111 @@ public final class RenderJob implements AutoCloseable {
     }
 
     /**
-     * Samples of this job whose radiance was NaN or infinite (added to the film as black).
+     * Samples whose radiance was NaN or infinite (added to the film as black), counting those of
+     * the renders a resumed job continues.
      *
      * @return the count so far
      */
     public long invalidSamples() {
-        return workers.invalidSamples();
+        return earlierInvalid + workers.invalidSamples();
     }
 
     /**
-     * Time since the job started.
+     * Time this job has rendered: since it started, without the time it was paused.
      *
      * @return seconds
      */
     public double elapsedSeconds() {
-        return (System.nanoTime() - startNanos) * 1e-9;
+        synchronized (pauseLock) {
+            long now = System.nanoTime();
+            return (now - startNanos - pausedNanos - (paused ? now - pauseStart : 0)) * 1e-9;
+        }
     }
 
-    /** Asks the workers to stop soon; {@link #awaitCompletion()} then returns the film as it is. */
+    /**
+     * Time spent on this render before this job: by the renders whose checkpoint it resumed.
+     *
+     * @return seconds, 0 for a job that was started afresh
+     */
+    public double earlierSeconds() {
+        return earlierSeconds;
+    }
+
+    /**
+     * Holds the workers: each finishes the tile it is on and waits. Returns at once; calling it
+     * while paused does nothing. The render goes on, bit for bit as if never paused, after
+     * {@link #resume()}.
+     */
+    public void pause() {
+        synchronized (pauseLock) {
+            if (!paused) {
+                paused = true;
+                pauseStart = System.nanoTime();
+                workers.hold();
+            }
+        }
+    }
+
+    /** Lets paused workers go on; does nothing unless paused. */
+    public void resume() {
+        synchronized (pauseLock) {
+            if (paused) {
+                paused = false;
+                pausedNanos += System.nanoTime() - pauseStart;
+                workers.release();
+            }
+        }
+    }
+
+    /**
+     * Whether the job is paused.
+     *
+     * @return true between {@link #pause()} and {@link #resume()}
+     */
+    public boolean isPaused() {
+        synchronized (pauseLock) {
+            return paused;
+        }
+    }
+
+    /**
+     * Saves the render's state, so that {@link #resumeFrom} can continue it, bit-identically, in
+     * this or another process. May be called at any time, from any thread (also from a
+     * listener): the workers are held while the file is written, each after the tile it is on,
+     * and go on afterwards. The file is replaced atomically; a previous one survives a failure.
+     *
+     * @param file where to save
+     * @throws IOException if the file cannot be written
+     * @throws InterruptedException if the calling thread is interrupted while waiting for the workers
+     */
+    public void saveCheckpoint(Path file) throws IOException, InterruptedException {
+        Objects.requireNonNull(file, "file");
+        workers.hold();
+        try {
+            workers.awaitStill();
+            identity().save(file, film, invalidSamples(), earlierSeconds + elapsedSeconds());
+        } finally {
+            workers.release();
+        }
+    }
+
+    /**
+     * The size of a checkpoint of this render.
+     *
+     * @return bytes
+     */
+    public long checkpointSize() {
+        return identity().fileSize();
+    }
+
+    private synchronized Checkpoint identity() {
+        if (identity == null) {
+            identity = Checkpoint.of(scene, settings);
+        }
+        return identity;
+    }
+
+    /** Asks the workers to stop soon (also when paused); {@link #awaitCompletion()} then returns the image as it is. */
     public void cancel() {
         workers.cancel();
     }
@@ -230,14 +316,16 @@ public final class RenderJob implements AutoCloseable {
     }
 
     /**
-     * Waits for the render to end and returns its film.
+     * Waits for the render to end and returns its image: the mean of every sample taken, also
+     * of a pass a cancel cut short.
      *
-     * @return the film
+     * @return the image
      * @throws InterruptedException if the waiting thread is interrupted
+     * @throws IllegalStateException if the render failed
      */
-    public Film awaitCompletion() throws InterruptedException {
+    public Image awaitCompletion() throws InterruptedException {
         awaitStats();
-        return film;
+        return film.toImage();
     }
 
     /**
@@ -287,13 +375,16 @@ public final class RenderJob implements AutoCloseable {
         }
     }
 
+    /** The film being filled (for tests in this package). */
+    Film film() {
+        return film;
+    }
+
     private void run() {
         try {
             int spp = settings.samplesPerPixel();
             boolean prepares = integrator.preparesEachSample();
-            int start = film.minSampleCount();             // 0, unless the film was restored
-            completedSpp = Math.min(start, spp);
-            restoredSamples = samplesIn(film);
+            int start = film.minSampleCount();
             if (restoredSamples > 0) {
                 lastPass = film.toImage();                 // what the restored film holds, until a pass ends
             }
@@ -314,8 +405,7 @@ public final class RenderJob implements AutoCloseable {
                 completedSpp = end;
                 Image image = film.toImage();
                 lastPass = image;
-                double seconds = elapsedSeconds();
-                listener.passFinished(new RenderListener.Pass(pass + 1, end, workers.samplesDone(), seconds), image);
+                listener.passFinished(new RenderListener.Pass(pass + 1, end, workers.samplesDone(), elapsedSeconds()), image);
                 start = end;
                 pass++;
                 if (!settings.timeLimit().isZero() && elapsedSeconds() >= settings.timeLimit().toNanos() * 1e-9) {
@@ -351,6 +441,6 @@ public final class RenderJob implements AutoCloseable {
 
     private RenderStats stats() {
         return new RenderStats(elapsedSeconds(), workers.samplesDone(), workers.rayCount(), completedSpp, threads, workers.cancelled(),
-                workers.invalidSamples());
+                invalidSamples());
     }
 }

@@ -1,6 +1,6 @@
 package dev.strahl.render;
 
-import dev.strahl.film.Image;
+import dev.strahl.image.Image;
 
 /**
  * Hears about a render's progress. Called from a render thread: implementations must return

@@ -1,18 +1,16 @@
 package dev.strahl.render;
 
-import dev.strahl.integrator.IntegratorKind;
-import dev.strahl.integrator.PhotonParameters;
-import dev.strahl.sampling.HemisphereSampling;
-import dev.strahl.scene.SceneException;
-import dev.strahl.scene.SceneSettings;
-import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Objects;
-import java.util.Set;
+import java.util.function.Consumer;
 
 /**
- * How to render: film size, samples per pixel, path depth, seed, threads and sampling choices.
- * Immutable; the {@code with...} methods return modified copies.
+ * How to render: film size, samples per pixel, path depth, seed, threads and the choice of light
+ * transport. Immutable; start from {@link #defaults()} and change what you need with the
+ * {@code with...} methods, which return modified copies:
+ * <pre>{@code
+ * RenderSettings s = RenderSettings.defaults().withSize(800, 600).withSamplesPerPixel(256).withSeed(7);
+ * }</pre>
  *
  * @param width           film width in pixels
  * @param height          film height in pixels
@@ -26,13 +24,11 @@ import java.util.Set;
  * @param integrator      which light transport algorithm computes the radiance
  * @param lightSamples    shadow rays per diffuse or glossy hit for the direct and Whitted integrators
  * @param timeLimit       stop at the end of the pass during which this much time has passed; zero for no limit
- * @param photons         photons emitted per iteration (= per sample per pixel) by the photon mapper
- * @param photonRadius    the photon mapper's initial gather radius in scene units; 0 = automatic (from the scene size)
+ * @param photons         the photon mapper's photons per iteration and initial gather radius
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, long seed, int threads,
                              HemisphereSampling hemisphere, boolean cullBackFaces, int samplesPerPass,
-                             IntegratorKind integrator, int lightSamples, Duration timeLimit,
-                             int photons, double photonRadius) {
+                             IntegratorKind integrator, int lightSamples, Duration timeLimit, PhotonParameters photons) {
 
     /** Largest accepted film edge, to refuse absurd sizes before allocating. */
     public static final int MAX_SIZE = 1 << 15;
@@ -40,20 +36,19 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
     /**
      * Checks every setting; the message of the exception names the one that is wrong.
      *
-     * @param width           film width in pixels
-     * @param height          film height in pixels
-     * @param samplesPerPixel camera samples per pixel
+     * @param width           film width in pixels, 1 .. {@value #MAX_SIZE}
+     * @param height          film height in pixels, 1 .. {@value #MAX_SIZE}
+     * @param samplesPerPixel camera samples per pixel, positive
      * @param maxDepth        path segments including the camera segment; -1 for unbounded
-     * @param seed            the render seed; with the other settings it fixes the image bit for bit
+     * @param seed            the render seed
      * @param threads         worker threads; 0 for one per available processor
      * @param hemisphere      how diffuse surfaces sample directions
      * @param cullBackFaces   skip back faces of closed meshes for camera and continuation rays
-     * @param samplesPerPass  samples per pixel in each pass over the image; 0 chooses (1, 2, 4, … up to 16)
+     * @param samplesPerPass  samples per pixel in each pass; 0 chooses
      * @param integrator      which light transport algorithm computes the radiance
-     * @param lightSamples    shadow rays per diffuse or glossy hit for the direct and Whitted integrators
-     * @param timeLimit       stop at the end of the pass during which this much time has passed; zero for no limit
-     * @param photons         photons per iteration of the photon mapper, 1 .. {@value PhotonParameters#MAX_PHOTONS}
-     * @param photonRadius    the photon mapper's initial gather radius, finite and &gt;= 0; 0 = automatic
+     * @param lightSamples    shadow rays per diffuse or glossy hit, at least 1
+     * @param timeLimit       stop at the end of the pass that crosses this time; zero for no limit
+     * @param photons         the photon mapper's parameters
      */
     public RenderSettings {
         if (width <= 0 || height <= 0) {
@@ -80,290 +75,146 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         Objects.requireNonNull(hemisphere, "hemisphere");
         Objects.requireNonNull(integrator, "integrator");
         Objects.requireNonNull(timeLimit, "timeLimit");
+        Objects.requireNonNull(photons, "photons");
         if (timeLimit.isNegative()) {
             throw new IllegalArgumentException("time limit must not be negative, got " + timeLimit);
         }
-        new PhotonParameters(photons, photonRadius);        // validates
     }
 
     /**
-     * Settings with the photon mapper's defaults ({@value PhotonParameters#DEFAULT_PHOTONS} photons
-     * per iteration, automatic radius).
-     *
-     * @param width           film width in pixels
-     * @param height          film height in pixels
-     * @param samplesPerPixel camera samples per pixel
-     * @param maxDepth        path segments including the camera segment; -1 for unbounded
-     * @param seed            the render seed
-     * @param threads         worker threads; 0 for one per available processor
-     * @param hemisphere      how diffuse surfaces sample directions
-     * @param cullBackFaces   skip back faces of closed meshes for camera and continuation rays
-     * @param samplesPerPass  samples per pixel in each pass; 0 chooses
-     * @param integrator      which light transport algorithm computes the radiance
-     * @param lightSamples    shadow rays per diffuse or glossy hit for the direct and Whitted integrators
-     * @param timeLimit       stop at the end of the pass that crosses this time; zero for no limit
-     */
-    public RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, long seed, int threads,
-                          HemisphereSampling hemisphere, boolean cullBackFaces, int samplesPerPass,
-                          IntegratorKind integrator, int lightSamples, Duration timeLimit) {
-        this(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples,
-                timeLimit, PhotonParameters.DEFAULT_PHOTONS, 0);
-    }
-
-    /**
-     * 512×512, 64 spp, unbounded depth, seed 0, all processors, cosine sampling, no culling, path
-     * tracing (and for the photon mapper {@value PhotonParameters#DEFAULT_PHOTONS} photons per
-     * iteration, automatic radius).
+     * 512×512, 64 spp, unbounded depth, seed 0, all processors, cosine sampling, no culling,
+     * automatic passes, path tracing with one light sample, no time limit, and the photon mapper's
+     * {@linkplain PhotonParameters#defaults() defaults}.
      *
      * @return the defaults
      */
     public static RenderSettings defaults() {
-        return new RenderSettings(512, 512, 64, -1, 0, 0, HemisphereSampling.COSINE, false, 0, IntegratorKind.PATH, 1, Duration.ZERO);
+        return new RenderSettings(512, 512, 64, -1, 0, 0, HemisphereSampling.COSINE, false, 0, IntegratorKind.PATH, 1, Duration.ZERO,
+                PhotonParameters.defaults());
     }
 
     /**
-     * These settings with another the film size.
+     * These settings with another film size.
      *
      * @param w width in pixels
      * @param h height in pixels
      * @return a new settings object
      */
     public RenderSettings withSize(int w, int h) {
-        return new RenderSettings(w, h, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, photons, photonRadius);
+        return edit(e -> {
+            e.width = w;
+            e.height = h;
+        });
     }
 
     /**
-     * These settings with another the samples per pixel.
+     * These settings with another sample count.
      *
      * @param spp samples per pixel, positive
      * @return a new settings object
      */
     public RenderSettings withSamplesPerPixel(int spp) {
-        return new RenderSettings(width, height, spp, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, photons, photonRadius);
+        return edit(e -> e.samplesPerPixel = spp);
     }
 
     /**
-     * These settings with another the path depth.
+     * These settings with another path depth.
      *
      * @param depth path segments including the camera segment; -1 for unbounded
      * @return a new settings object
      */
     public RenderSettings withMaxDepth(int depth) {
-        return new RenderSettings(width, height, samplesPerPixel, depth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, photons, photonRadius);
+        return edit(e -> e.maxDepth = depth);
     }
 
     /**
-     * These settings with another the seed.
+     * These settings with another seed.
      *
      * @param s the random seed
      * @return a new settings object
      */
     public RenderSettings withSeed(long s) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, s, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, photons, photonRadius);
+        return edit(e -> e.seed = s);
     }
 
     /**
-     * These settings with another the thread count.
+     * These settings with another thread count.
      *
      * @param n worker threads; 0 for one per processor
      * @return a new settings object
      */
     public RenderSettings withThreads(int n) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, n, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, photons, photonRadius);
+        return edit(e -> e.threads = n);
     }
 
     /**
-     * These settings with another the sampling of diffuse bounces.
+     * These settings with another sampling of diffuse bounces.
      *
      * @param h cosine or uniform
      * @return a new settings object
      */
     public RenderSettings withHemisphere(HemisphereSampling h) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, h, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, photons, photonRadius);
+        return edit(e -> e.hemisphere = h);
     }
 
     /**
-     * These settings with another back-face culling.
+     * These settings with or without back-face culling.
      *
      * @param cull whether camera and continuation rays skip back faces of closed meshes
      * @return a new settings object
      */
     public RenderSettings withCullBackFaces(boolean cull) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cull, samplesPerPass, integrator, lightSamples, timeLimit, photons, photonRadius);
+        return edit(e -> e.cullBackFaces = cull);
     }
 
     /**
-     * These settings with another the pass size.
+     * These settings with another pass size.
      *
      * @param n samples per pixel per pass; 0 for automatic
      * @return a new settings object
      */
     public RenderSettings withSamplesPerPass(int n) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, n, integrator, lightSamples, timeLimit, photons, photonRadius);
+        return edit(e -> e.samplesPerPass = n);
     }
 
     /**
-     * These settings with another the integrator.
+     * These settings with another integrator.
      *
      * @param kind the integrator
      * @return a new settings object
      */
     public RenderSettings withIntegrator(IntegratorKind kind) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, kind, lightSamples, timeLimit, photons, photonRadius);
+        return edit(e -> e.integrator = kind);
     }
 
     /**
-     * These settings with another the shadow rays per hit.
+     * These settings with another number of shadow rays per hit.
      *
      * @param n shadow rays per diffuse or glossy hit, at least 1
      * @return a new settings object
      */
     public RenderSettings withLightSamples(int n) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, n, timeLimit, photons, photonRadius);
+        return edit(e -> e.lightSamples = n);
     }
 
     /**
-     * These settings with another the time limit.
+     * These settings with another time limit.
      *
      * @param limit stop after the pass that crosses it; zero for none
      * @return a new settings object
      */
     public RenderSettings withTimeLimit(Duration limit) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, limit, photons, photonRadius);
+        return edit(e -> e.timeLimit = limit);
     }
 
     /**
-     * These settings with another photon count for the photon mapper.
+     * These settings with other parameters for the photon mapper.
      *
-     * @param n photons traced per iteration (= per sample per pixel), 1 .. {@value PhotonParameters#MAX_PHOTONS}
+     * @param p photons per iteration and initial gather radius
      * @return a new settings object
      */
-    public RenderSettings withPhotons(int n) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, n, photonRadius);
-    }
-
-    /**
-     * These settings with another initial gather radius for the photon mapper.
-     *
-     * @param radius the first iteration's radius in scene units; 0 chooses it from the scene size
-     * @return a new settings object
-     */
-    public RenderSettings withPhotonRadius(double radius) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator, lightSamples, timeLimit, photons, radius);
-    }
-
-    /**
-     * The photon mapper's parameters.
-     *
-     * @return photons per iteration and initial radius
-     */
-    public PhotonParameters photonParameters() {
-        return new PhotonParameters(photons, photonRadius);
-    }
-
-    /**
-     * These settings with what a scene file asks for applied on top (its {@code film} and
-     * {@code integrator} keys); keys the file leaves out keep their value here.
-     *
-     * @param scene the scene file's settings ({@code scene.settings()})
-     * @return the combined settings
-     * @throws IllegalArgumentException if the file names an unknown integrator (or a value out of range,
-     *                                  which a scene file read by {@code SceneLoader} cannot hold)
-     */
-    public RenderSettings withScene(SceneSettings scene) {
-        RenderSettings s = this;
-        if (scene.width() != null || scene.height() != null) {
-            s = s.withSize(scene.width() != null ? scene.width() : width, scene.height() != null ? scene.height() : height);
-        }
-        if (scene.samplesPerPixel() != null) {
-            s = s.withSamplesPerPixel(scene.samplesPerPixel());
-        }
-        if (scene.maxDepth() != null) {
-            s = s.withMaxDepth(scene.maxDepth());
-        }
-        if (scene.seed() != null) {
-            s = s.withSeed(scene.seed());
-        }
-        if (scene.lightSamples() != null) {
-            s = s.withLightSamples(scene.lightSamples());
-        }
-        if (scene.hemisphere() != null) {
-            s = s.withHemisphere(scene.hemisphere());
-        }
-        if (scene.integrator() != null) {
-            s = s.withIntegrator(integratorNamed(scene.integrator()));
-        }
-        if (scene.photons() != null) {
-            s = s.withPhotons(scene.photons());
-        }
-        if (scene.photonRadius() != null) {
-            s = s.withPhotonRadius(scene.photonRadius());
-        }
-        return s;
-    }
-
-    /**
-     * These settings combined with a scene file's the way the command line combines them: the
-     * file's {@code film} and {@code integrator} keys replace the values here, except those of the
-     * settings in {@code given} (options given on the command line), which keep their value here.
-     * Every key of the file is checked, also those overridden, so a file is refused or accepted
-     * whatever the command line says. {@code strahl render} and {@code strahl view} both combine
-     * their options with a scene file here.
-     *
-     * @param file  the scene file, for the error message
-     * @param scene the scene file's settings ({@code scene.settings()})
-     * @param given the settings whose value here wins over the file's
-     * @return the combined settings
-     * @throws SceneException naming {@code file} if the file names an unknown integrator (or a value
-     *                        out of range, which a scene file read by {@code SceneLoader} cannot hold)
-     */
-    public RenderSettings withSceneFile(Path file, SceneSettings scene, Set<SceneSettings.Setting> given) throws SceneException {
-        RenderSettings s;
-        try {
-            s = withScene(scene);
-        } catch (IllegalArgumentException e) {
-            throw new SceneException(file, e.getMessage(), e);
-        }
-        for (SceneSettings.Setting setting : given) {
-            s = s.withValueOf(setting, this);
-        }
-        return s;
-    }
-
-    /**
-     * These settings with the value of one scene-file setting taken from {@code from}. (A switch
-     * expression: a new {@link SceneSettings.Setting} does not compile until it is handled here.)
-     */
-    private RenderSettings withValueOf(SceneSettings.Setting setting, RenderSettings from) {
-        return switch (setting) {
-            case WIDTH -> withSize(from.width, height);
-            case HEIGHT -> withSize(width, from.height);
-            case SAMPLES_PER_PIXEL -> withSamplesPerPixel(from.samplesPerPixel);
-            case MAX_DEPTH -> withMaxDepth(from.maxDepth);
-            case SEED -> withSeed(from.seed);
-            case INTEGRATOR -> withIntegrator(from.integrator);
-            case LIGHT_SAMPLES -> withLightSamples(from.lightSamples);
-            case HEMISPHERE -> withHemisphere(from.hemisphere);
-            case PHOTONS -> withPhotons(from.photons);
-            case PHOTON_RADIUS -> withPhotonRadius(from.photonRadius);
-        };
-    }
-
-    /**
-     * The integrator of a name as used on the command line and in scene files.
-     *
-     * @param name "path", "direct", "whitted", ...
-     * @return the integrator kind
-     * @throws IllegalArgumentException for an unknown name
-     */
-    public static IntegratorKind integratorNamed(String name) {
-        for (IntegratorKind k : IntegratorKind.values()) {
-            if (k.id().equals(name)) {
-                return k;
-            }
-        }
-        throw new IllegalArgumentException("unknown integrator '" + name + "' (known: "
-                + String.join(", ", java.util.Arrays.stream(IntegratorKind.values()).map(IntegratorKind::id).toList()) + ")");
+    public RenderSettings withPhotons(PhotonParameters p) {
+        return edit(e -> e.photons = p);
     }
 
     /**
@@ -373,5 +224,40 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      */
     public int effectiveThreads() {
         return threads > 0 ? threads : Runtime.getRuntime().availableProcessors();
+    }
+
+    /** A copy with some fields changed: every {@code with...} method is one line, the fields are listed once here. */
+    private RenderSettings edit(Consumer<Fields> change) {
+        Fields f = new Fields(this);
+        change.accept(f);
+        return new RenderSettings(f.width, f.height, f.samplesPerPixel, f.maxDepth, f.seed, f.threads, f.hemisphere, f.cullBackFaces,
+                f.samplesPerPass, f.integrator, f.lightSamples, f.timeLimit, f.photons);
+    }
+
+    /** The components as mutable fields, for {@link #edit}. */
+    private static final class Fields {
+        int width, height, samplesPerPixel, maxDepth, threads, samplesPerPass, lightSamples;
+        long seed;
+        HemisphereSampling hemisphere;
+        boolean cullBackFaces;
+        IntegratorKind integrator;
+        Duration timeLimit;
+        PhotonParameters photons;
+
+        Fields(RenderSettings s) {
+            width = s.width;
+            height = s.height;
+            samplesPerPixel = s.samplesPerPixel;
+            maxDepth = s.maxDepth;
+            seed = s.seed;
+            threads = s.threads;
+            hemisphere = s.hemisphere;
+            cullBackFaces = s.cullBackFaces;
+            samplesPerPass = s.samplesPerPass;
+            integrator = s.integrator;
+            lightSamples = s.lightSamples;
+            timeLimit = s.timeLimit;
+            photons = s.photons;
+        }
     }
 }

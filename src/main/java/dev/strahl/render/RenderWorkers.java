@@ -1,11 +1,11 @@
 package dev.strahl.render;
 
+import dev.strahl.math.MutableRgb;
 import dev.strahl.camera.PinholeRays;
 import dev.strahl.film.Film;
 import dev.strahl.geometry.Ray;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Parallel;
-import dev.strahl.math.Rgb;
 import dev.strahl.sampling.Rng;
 import java.util.ArrayList;
 import java.util.List;
@@ -22,6 +22,11 @@ import java.util.function.Consumer;
  * {@value Film#TILE}-pixel tiles from an atomic counter and add a pass's samples of each pixel in
  * index order, with the random numbers of (seed, pixel, sample index) alone; and the same
  * threads for an integrator's per-sample preparation ({@link Parallel}).
+ *
+ * <p>A gate between tiles (and between preparation chunks) lets the job hold the workers still:
+ * {@link #hold()} (a pause, or a checkpoint taken while a pass runs) makes each worker wait there
+ * before its next tile, and {@link #awaitStill()} returns once none is rendering, so that the film
+ * can be read consistently: every pixel then holds whole samples.
  */
 final class RenderWorkers implements Parallel {
     private final Film film;
@@ -33,6 +38,11 @@ final class RenderWorkers implements Parallel {
     private final AtomicLong samplesDone = new AtomicLong();
     private final AtomicLong invalidSamples = new AtomicLong();
     private volatile boolean cancelled;
+    /** Guards {@link #holds} and {@link #busy}; workers wait on it while a hold is on. */
+    private final Object gate = new Object();
+    private int holds;
+    /** Workers running a task and not waiting at the gate. */
+    private int busy;
 
     /** Stratified sample mode of {@link Rng} (the default), or plain streams with {@code -Dstrahl.sampler=independent}. */
     static boolean stratifiedSampler() {
@@ -57,7 +67,54 @@ final class RenderWorkers implements Parallel {
 
     /** Asks the threads to stop after their current row or chunk. */
     void cancel() {
-        cancelled = true;
+        synchronized (gate) {
+            cancelled = true;
+            gate.notifyAll();
+        }
+    }
+
+    /** Makes every worker stop before its next tile until {@link #release()}; does not wait. */
+    void hold() {
+        synchronized (gate) {
+            holds++;
+        }
+    }
+
+    void release() {
+        synchronized (gate) {
+            holds--;
+            gate.notifyAll();
+        }
+    }
+
+    /** While a hold is on: waits until no worker is rendering (each has finished its tile). */
+    void awaitStill() throws InterruptedException {
+        synchronized (gate) {
+            while (busy > 0 && !cancelled) {
+                gate.wait();
+            }
+        }
+    }
+
+    /** Called by a worker between tiles: waits while a hold is on. */
+    private void passGate() {
+        synchronized (gate) {
+            if (holds == 0) {
+                return;
+            }
+            busy--;
+            gate.notifyAll();
+            try {
+                while (holds > 0 && !cancelled) {
+                    gate.wait();
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                cancelled = true;
+            } finally {
+                busy++;
+            }
+        }
     }
 
     boolean cancelled() {
@@ -99,7 +156,20 @@ final class RenderWorkers implements Parallel {
     private void onEveryThread(Consumer<WorkerState> body) throws InterruptedException, ExecutionException {
         List<Future<?>> tasks = new ArrayList<>(workers.length);
         for (WorkerState w : workers) {
-            tasks.add(pool.submit(() -> body.accept(w)));
+            tasks.add(pool.submit(() -> {
+                synchronized (gate) {
+                    busy++;
+                }
+                try {
+                    passGate();
+                    body.accept(w);
+                } finally {
+                    synchronized (gate) {
+                        busy--;
+                        gate.notifyAll();
+                    }
+                }
+            }));
         }
         ExecutionException first = null;
         for (Future<?> task : tasks) {
@@ -125,6 +195,7 @@ final class RenderWorkers implements Parallel {
             onEveryThread(w -> {
                 for (int i = next.getAndIncrement(); i < count && !cancelled; i = next.getAndIncrement()) {
                     task.run(i, w.integrator);
+                    passGate();
                 }
             });
         } catch (InterruptedException e) {
@@ -179,6 +250,7 @@ final class RenderWorkers implements Parallel {
             if (invalid > 0) {
                 invalidSamples.addAndGet(invalid);
             }
+            passGate();
         }
     }
 
@@ -187,7 +259,7 @@ final class RenderWorkers implements Parallel {
         final Integrator.Worker integrator;
         final Rng rng = new Rng();
         final Ray ray = new Ray();
-        final Rgb.Mutable radiance = new Rgb.Mutable();
+        final MutableRgb radiance = new MutableRgb();
 
         WorkerState(Integrator.Worker integrator) {
             this.integrator = integrator;

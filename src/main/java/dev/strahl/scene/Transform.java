@@ -1,7 +1,6 @@
 package dev.strahl.scene;
 
 import dev.strahl.geometry.Sphere;
-import dev.strahl.geometry.TriangleMesh;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
@@ -24,7 +23,7 @@ import org.joml.Vector3dc;
  */
 public final class Transform {
     /** The kind of one step. */
-    public enum Kind {
+    enum Kind {
         /** Adds (x, y, z) to every point. */
         TRANSLATE,
         /** Rotates by {@code degrees} about the axis (x, y, z) through the origin, counter-clockwise looking down the axis. */
@@ -42,7 +41,7 @@ public final class Transform {
      * @param z       third component
      * @param degrees the rotation angle (0 for the other kinds)
      */
-    public record Step(Kind kind, double x, double y, double z, double degrees) {
+    record Step(Kind kind, double x, double y, double z, double degrees) {
         /**
          * Checks that the step is finite and not degenerate.
          *
@@ -52,7 +51,7 @@ public final class Transform {
          * @param z       third component
          * @param degrees the rotation angle (0 for the other kinds)
          */
-        public Step {
+        Step {
             Objects.requireNonNull(kind, "kind");
             if (!Double.isFinite(x) || !Double.isFinite(y) || !Double.isFinite(z) || !Double.isFinite(degrees)) {
                 throw new IllegalArgumentException(kind.name().toLowerCase(java.util.Locale.ROOT) + " must be finite, got (" + x + ", " + y + ", " + z + ")"
@@ -103,7 +102,7 @@ public final class Transform {
      * @return the transform
      * @throws IllegalArgumentException if the steps multiply to a matrix that is not finite
      */
-    public static Transform of(List<Step> steps) {
+    static Transform of(List<Step> steps) {
         return steps.isEmpty() ? IDENTITY : new Transform(steps);
     }
 
@@ -200,7 +199,7 @@ public final class Transform {
      *
      * @return an unmodifiable list
      */
-    public List<Step> steps() {
+    List<Step> steps() {
         return steps;
     }
 
@@ -282,23 +281,31 @@ public final class Transform {
     }
 
     /**
+     * Whether the transform keeps a sphere a sphere: it is made of translations, rotations and
+     * uniform scalings only (a similarity). Spheres accept no other transform.
+     *
+     * @return true for a similarity
+     */
+    public boolean isSimilarity() {
+        Matrix3d linear = new Matrix3d(matrix);
+        Matrix3d gram = new Matrix3d(linear).transpose().mul(linear);      // s² I for a similarity
+        double s2 = gram.m00();
+        double tolerance = 1e-9 * s2;
+        return Math.abs(gram.m11() - s2) <= tolerance && Math.abs(gram.m22() - s2) <= tolerance
+                && Math.abs(gram.m01()) <= tolerance && Math.abs(gram.m02()) <= tolerance && Math.abs(gram.m12()) <= tolerance;
+    }
+
+    /**
      * The sphere moved by this transform.
      *
-     * @param sphere the sphere in its own coordinates
-     * @return the transformed sphere
      * @throws IllegalArgumentException if the transform is not a similarity (it scales the axes unequally)
      */
-    public Sphere apply(Sphere sphere) {
+    Sphere apply(Sphere sphere) {
         Matrix3d linear = new Matrix3d(matrix);
         double sx = linear.getColumn(0, new Vector3d()).length();
-        double sy = linear.getColumn(1, new Vector3d()).length();
-        double sz = linear.getColumn(2, new Vector3d()).length();
-        Matrix3d gram = new Matrix3d(linear).transpose().mul(linear);      // s² I for a similarity
-        double s2 = sx * sx;
-        double tolerance = 1e-9 * s2;
-        boolean similar = Math.abs(gram.m00() - s2) <= tolerance && Math.abs(gram.m11() - s2) <= tolerance && Math.abs(gram.m22() - s2) <= tolerance
-                && Math.abs(gram.m01()) <= tolerance && Math.abs(gram.m02()) <= tolerance && Math.abs(gram.m12()) <= tolerance;
-        if (!similar) {
+        if (!isSimilarity()) {
+            double sy = linear.getColumn(1, new Vector3d()).length();
+            double sz = linear.getColumn(2, new Vector3d()).length();
             throw new IllegalArgumentException("a sphere can only be translated, rotated and scaled uniformly; this transform scales"
                     + " its axes by " + (float) sx + ", " + (float) sy + " and " + (float) sz);
         }

@@ -1,6 +1,6 @@
 package dev.strahl.viewer;
 
-import dev.strahl.film.ImageWriters;
+import dev.strahl.io.ImageWriters;
 import dev.strahl.scene.SceneException;
 import java.awt.event.KeyEvent;
 import java.io.File;

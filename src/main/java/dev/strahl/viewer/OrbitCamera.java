@@ -1,6 +1,6 @@
 package dev.strahl.viewer;
 
-import dev.strahl.camera.Camera;
+import dev.strahl.scene.Camera;
 import org.joml.Vector3d;
 import org.joml.Vector3dc;
 

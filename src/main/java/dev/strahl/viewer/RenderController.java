@@ -1,11 +1,11 @@
 package dev.strahl.viewer;
 
-import dev.strahl.film.Image;
-import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.image.Image;
+import dev.strahl.render.IntegratorKind;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.render.HemisphereSampling;
 import dev.strahl.scene.Scene;
 import java.util.Objects;
 import java.util.function.Consumer;
@@ -20,11 +20,11 @@ import java.util.function.UnaryOperator;
  * waits for rendering.
  *
  * <h2>Passes and holding</h2>
- * Each job renders passes of 1 sample per pixel without end. After every pass the job's
- * coordinator thread reports to this controller, which holds it there (the workers then idle)
- * while the viewer is paused or has reached its stop-at count, and lets it go on when resumed or
- * when the count is raised. So pausing keeps the accumulated samples, and holding costs nothing.
- * A held thread is released at once when its job is replaced or the controller is closed.
+ * Each job renders passes of 1 sample per pixel without end. The controller pauses the job
+ * ({@link RenderJob#pause()}: its workers wait after the tile they are on) while the viewer is
+ * paused or has reached its stop-at count, and resumes it when the user resumes or raises the
+ * count. So pausing keeps the accumulated samples, and holding costs nothing; no thread of the
+ * job is ever blocked in a callback.
  *
  * <h2>Moving the camera</h2>
  * A camera move or a window resize starts a preview job at a quarter of the resolution in each
@@ -50,6 +50,10 @@ final class RenderController {
     /** A running render as the controller sees it: a {@link RenderJob}, or a stand-in in tests. */
     interface Job {
         void cancel();
+
+        void pause();
+
+        void resume();
 
         long samplesDone();
     }
@@ -97,6 +101,8 @@ final class RenderController {
     private boolean cameraPending;
     private boolean glance;
     private boolean waitingForDisplay;
+    /** The glance pass has shown while the window was not yet on screen: full resolution starts with it. */
+    private boolean fullAfterDisplay;
     private Runnable cancelSettle;
     private long settleToken;
     private long activeNanos;
@@ -149,16 +155,21 @@ final class RenderController {
     /** The window is on screen: full-resolution rendering may start. */
     synchronized void displayReady() {
         waitingForDisplay = false;
-        notifyAll();
+        if (fullAfterDisplay && state != State.CLOSED) {
+            startJob(Mode.FULL);
+        }
     }
 
     /** Pauses a running render, or resumes a paused one; a finished one stays finished. */
     synchronized void togglePause() {
         if (state == State.RUNNING) {
             state = State.PAUSED;
+            hold();
         } else if (state == State.PAUSED) {
             state = reachedStop() ? State.DONE : State.RUNNING;
-            notifyAll();
+            if (state == State.RUNNING) {
+                goOn();
+            }
         }
     }
 
@@ -174,7 +185,7 @@ final class RenderController {
         stopAt = checkStopAt(n);
         if (state == State.DONE && !reachedStop()) {
             state = State.RUNNING;
-            notifyAll();
+            goOn();
         }
     }
 
@@ -236,7 +247,7 @@ final class RenderController {
         moving();
     }
 
-    /** Stops rendering for good: the workers stop after the row they are on; held threads are released. */
+    /** Stops rendering for good: the workers stop after the row they are on, also when paused. */
     synchronized void close() {
         state = State.CLOSED;
         generation++;
@@ -247,7 +258,6 @@ final class RenderController {
         if (cancelSettle != null) {
             cancelSettle.run();
         }
-        notifyAll();
         scheduler.shutdown();
     }
 
@@ -319,7 +329,7 @@ final class RenderController {
         if (job != null) {
             job.cancel();
         }
-        notifyAll();                         // releases the old job's coordinator if it is held
+        fullAfterDisplay = false;
         if (mode != Mode.PREVIEW && cancelSettle != null) {
             cancelSettle.run();
             cancelSettle = null;
@@ -353,7 +363,7 @@ final class RenderController {
         return Math.max(1, Math.round(size / (float) PREVIEW_DIVISOR));
     }
 
-    /** Called by job {@code g}'s coordinator thread after each pass; holds it while paused or done. */
+    /** Called by job {@code g}'s coordinator thread after each pass; pauses the job while the viewer holds. */
     private void onPass(long g, int spp, Image image) {
         Frame frame;
         synchronized (this) {
@@ -374,15 +384,10 @@ final class RenderController {
                 return;
             }
             if (glance) {
-                try {
-                    while (g == generation && waitingForDisplay) {
-                        wait();
-                    }
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                    return;
-                }
-                if (g == generation) {
+                if (waitingForDisplay) {
+                    fullAfterDisplay = true;         // displayReady() starts it
+                    job.pause();
+                } else {
                     startJob(Mode.FULL);
                 }
                 return;
@@ -391,19 +396,26 @@ final class RenderController {
                 state = State.DONE;
             }
             if (holds()) {
-                stopClock();
-                try {
-                    while (g == generation && holds()) {
-                        wait();
-                    }
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();   // the job is being torn down
-                    return;
-                }
-                if (g == generation) {
-                    runningSince = nanoTime.getAsLong();
-                }
+                hold();
             }
+        }
+    }
+
+    /** Pauses the job and the clock. */
+    private void hold() {
+        if (job != null) {
+            job.pause();
+        }
+        stopClock();
+    }
+
+    /** Resumes the job and the clock. */
+    private void goOn() {
+        if (job != null) {
+            job.resume();
+        }
+        if (runningSince < 0) {
+            runningSince = nanoTime.getAsLong();
         }
     }
 

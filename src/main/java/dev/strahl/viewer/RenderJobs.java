@@ -14,13 +14,23 @@ final class RenderJobs {
     private RenderJobs() {
     }
 
-    /** Starts a {@link RenderJob}; the controller only ever cancels it and reads its sample count. */
+    /** Starts a {@link RenderJob}; the controller cancels, pauses and resumes it and reads its sample count. */
     static RenderController.Job start(Scene scene, RenderSettings settings, RenderListener listener) {
         RenderJob job = RenderJob.start(scene, settings, listener);
         return new RenderController.Job() {
             @Override
             public void cancel() {
                 job.cancel();
+            }
+
+            @Override
+            public void pause() {
+                job.pause();
+            }
+
+            @Override
+            public void resume() {
+                job.resume();
             }
 
             @Override

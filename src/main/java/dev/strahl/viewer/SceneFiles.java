@@ -3,7 +3,7 @@ package dev.strahl.viewer;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.json.SceneFile;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Files;
@@ -39,10 +39,10 @@ final class SceneFiles {
      */
     static Opened open(Path file, ViewerOptions options, Viewer.FilmCheck filmCheck) throws SceneException {
         Path f = file != null ? file : defaultScene();
-        Scene scene = SceneLoader.load(f);
-        RenderSettings settings = options.settingsFor(f, scene.settings());
+        SceneFile loaded = SceneFile.load(f);
+        RenderSettings settings = options.settingsFor(loaded.settings());
         filmCheck.check(settings.width(), settings.height());
-        return new Opened(f, scene, settings);
+        return new Opened(f, loaded.scene(), settings);
     }
 
     /** The file of the default scene. */

@@ -1,7 +1,7 @@
 package dev.strahl.viewer;
 
-import dev.strahl.integrator.IntegratorKind;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.render.IntegratorKind;
+import dev.strahl.render.HemisphereSampling;
 import java.awt.FlowLayout;
 import java.util.Locale;
 import javax.swing.BorderFactory;

@@ -1,7 +1,7 @@
 package dev.strahl.viewer;
 
-import dev.strahl.integrator.IntegratorKind;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.render.IntegratorKind;
+import dev.strahl.render.HemisphereSampling;
 import java.awt.event.ActionEvent;
 import java.awt.event.ActionListener;
 import java.awt.event.InputEvent;

@@ -1,12 +1,12 @@
 package dev.strahl.viewer;
 
-import dev.strahl.integrator.IntegratorKind;
-import dev.strahl.integrator.PhotonParameters;
+import dev.strahl.render.IntegratorKind;
+import dev.strahl.render.PhotonParameters;
 import dev.strahl.render.RenderSettings;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.render.HemisphereSampling;
 import dev.strahl.scene.SceneException;
-import dev.strahl.scene.SceneSettings;
-import dev.strahl.scene.SceneSettings.Setting;
+import dev.strahl.io.json.SceneSettings;
+import dev.strahl.io.json.SceneSettings.Setting;
 import java.nio.file.Path;
 import java.util.EnumSet;
 import java.util.Objects;
@@ -78,21 +78,19 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
      * The render settings for a scene loaded from {@code file}: its film size, integrator, max
      * depth, hemisphere sampling, light samples and seed replace these options' values, and the
      * options in {@link #given} override the file again, as {@code strahl render} combines them
-     * ({@link RenderSettings#withSceneFile}, shared with it). The file's {@code spp} is not used
+     * ({@link SceneSettings#applyTo}, shared with it). The file's {@code spp} is not used
      * ({@link #NEVER_FROM_FILE}): the viewer renders until its own stop-at count.
-     *
-     * @throws SceneException naming {@code file} if the file asks for an unknown integrator
      */
-    RenderSettings settingsFor(Path file, SceneSettings sceneSettings) throws SceneException {
+    RenderSettings settingsFor(SceneSettings sceneSettings) {
         Set<Setting> kept = EnumSet.copyOf(NEVER_FROM_FILE);
         kept.addAll(given);
-        return renderSettings().withSceneFile(file, sceneSettings, kept);
+        return sceneSettings.applyTo(renderSettings(), kept);
     }
 
     private static RenderSettings renderSettings(int width, int height, int maxDepth, HemisphereSampling hemisphere, int threads, long seed,
                                                  IntegratorKind integrator, int lightSamples, int photons, double photonRadius) {
         return RenderSettings.defaults().withSize(width, height).withMaxDepth(maxDepth).withHemisphere(hemisphere)
                 .withThreads(threads).withSeed(seed).withIntegrator(integrator).withLightSamples(lightSamples).withSamplesPerPass(1)
-                .withPhotons(photons).withPhotonRadius(photonRadius);
+                .withPhotons(new PhotonParameters(photons, photonRadius));
     }
 }

@@ -1,10 +1,11 @@
 package dev.strahl.accel;
 
+import dev.strahl.testing.MeshGeometry;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.Sphere;
-import dev.strahl.geometry.TriangleMesh;
+import dev.strahl.scene.TriangleMesh;
 import java.security.MessageDigest;
 import java.util.SplittableRandom;
 import org.joml.Vector3d;
@@ -43,9 +44,9 @@ class BvhBuilderTest {
         for (int i = 0; i < idx.length; i++) {
             idx[i] = i;
         }
-        Geometry.Builder b = new Geometry.Builder().addMesh(new TriangleMesh(xyz, idx, null), new int[n], false);
+        MeshGeometry b = new MeshGeometry().addMesh(new TriangleMesh(xyz, idx, null), new int[n], false);
         for (int i = 0; i < spheres; i++) {
-            b.addSphere(new Sphere(new Vector3d(r.nextDouble(), r.nextDouble(), r.nextDouble()), 0.01), 0);
+            b.addSphere(new Vector3d(r.nextDouble(), r.nextDouble(), r.nextDouble()), 0.01, 0);
         }
         return b.build();
     }

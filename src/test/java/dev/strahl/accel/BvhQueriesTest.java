@@ -1,12 +1,14 @@
 package dev.strahl.accel;
 
+import dev.strahl.world.World;
+import dev.strahl.testing.MeshGeometry;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.scene.Scene;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.SceneLoader;
 import dev.strahl.testing.Meshes;
 import java.nio.file.Path;
 import java.util.SplittableRandom;
@@ -24,8 +26,8 @@ class BvhQueriesTest {
     @Test
     void anyHitIsExactlyAClosestHitBeforeTMax() throws Exception {
         Scene cornell = SceneLoader.load(Path.of("scenes/cornell-box.json"));
-        Geometry sphere = new Geometry.Builder().addMesh(Meshes.icosphere(3, 1, false), new int[1280], true).build();
-        for (Bvh base : new Bvh[] {cornell.bvh(), Bvh.build(sphere)}) {
+        Geometry sphere = new MeshGeometry().addMesh(Meshes.icosphere(3, 1, false), new int[1280], true).build();
+        for (Bvh base : new Bvh[] {World.of(cornell).bvh(), Bvh.build(sphere)}) {
             for (boolean simd : new boolean[] {false, true}) {
                 Bvh bvh = base.withSimd(simd);
                 TraversalStack stack = Bvh.newStack();
@@ -55,11 +57,11 @@ class BvhQueriesTest {
     @Test
     void raysGrazingTheCornellBoxWallsAgreeWithBruteForce() throws Exception {
         Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
-        Geometry g = scene.geometry();
+        Geometry g = World.of(scene).geometry();
         SplittableRandom random = new SplittableRandom(8);
         double[] walls = {-1.0, 0.0, 1.99, -1.04};               // x of the red wall, y of floor and ceiling, z of the back wall
         for (boolean simd : new boolean[] {false, true}) {
-            Bvh bvh = scene.bvh().withSimd(simd);
+            Bvh bvh = World.of(scene).bvh().withSimd(simd);
             TraversalStack stack = Bvh.newStack();
             for (int i = 0; i < 20_000; i++) {
                 int w = random.nextInt(walls.length);

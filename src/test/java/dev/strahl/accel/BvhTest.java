@@ -1,5 +1,6 @@
 package dev.strahl.accel;
 
+import dev.strahl.testing.MeshGeometry;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
@@ -9,7 +10,7 @@ import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.Sphere;
 import dev.strahl.geometry.SurfacePoint;
-import dev.strahl.geometry.TriangleMesh;
+import dev.strahl.scene.TriangleMesh;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
@@ -65,7 +66,7 @@ class BvhTest {
      */
     private static Scene soup(String name, int n, int s, long seed, TriangleMaker maker) {
         SplittableRandom random = new SplittableRandom(seed);
-        Geometry.Builder builder = new Geometry.Builder();
+        MeshGeometry builder = new MeshGeometry();
         if (maker == null && n == 0 && s == 0) {
             addGrid(builder);
         }
@@ -83,7 +84,7 @@ class BvhTest {
         }
         for (int i = 0; i < s; i++) {
             double r = i == 0 ? 0.45 : random.nextDouble(0.005, 0.1);      // one big sphere overlapping the rest
-            builder.addSphere(new Sphere(new Vector3d(random.nextDouble(), random.nextDouble(), random.nextDouble()), r), 0);
+            builder.addSphere(new Vector3d(random.nextDouble(), random.nextDouble(), random.nextDouble()), r, 0);
         }
         return new Scene(name, builder.build());
     }
@@ -140,7 +141,7 @@ class BvhTest {
     }
 
     /** A 16 × 16 grid of unit-fraction quads in the plane y = 0.25, vertices shared, like a tessellated floor. */
-    private static void addGrid(Geometry.Builder builder) {
+    private static void addGrid(MeshGeometry builder) {
         int cells = 16, side = cells + 1;
         float[] xyz = new float[3 * side * side];
         for (int i = 0; i < side; i++) {
@@ -417,8 +418,8 @@ class BvhTest {
 
     @Test
     void emptyGeometryHasNoNodesAndNoHits() {
-        Geometry empty = new Geometry.Builder().build();
-        Geometry onlyDegenerate = new Geometry.Builder()
+        Geometry empty = new MeshGeometry().build();
+        Geometry onlyDegenerate = new MeshGeometry()
                 .addMesh(mesh(new float[] {0, 0, 0, 1, 1, 1, 2, 2, 2}), new int[1], false).build();
         for (Geometry g : new Geometry[] {empty, onlyDegenerate}) {
             Bvh bvh = Bvh.build(g);

@@ -1,14 +1,18 @@
 package dev.strahl.camera;
 
+import dev.strahl.scene.TestScenes;
+import dev.strahl.testing.Meshes;
+import dev.strahl.testing.MeshGeometry;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
+import dev.strahl.scene.Camera;
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
-import dev.strahl.geometry.TriangleMesh;
+import dev.strahl.scene.TriangleMesh;
 import java.util.SplittableRandom;
 import org.joml.Vector3d;
 import org.joml.Vector3dc;
@@ -41,7 +45,7 @@ class CameraTest {
 
     private static Ray ray(Camera c, int w, int h, double px, double py) {
         Ray ray = new Ray();
-        c.rays(w, h).generate(px, py, ray);
+        Meshes.rays(c, w, h).generate(px, py, ray);
         return ray;
     }
 
@@ -143,7 +147,7 @@ class CameraTest {
     /** The light quad of Cornell Original as two triangles (the winding of the OBJ: facing down). */
     private static Geometry lightQuad() {
         float[] p = {-0.24f, 1.98f, 0.16f, -0.24f, 1.98f, -0.22f, 0.23f, 1.98f, -0.22f, 0.23f, 1.98f, 0.16f};
-        return new Geometry.Builder().addMesh(new TriangleMesh(p, new int[] {0, 1, 2, 0, 2, 3}, null), new int[] {0, 0}, false).build();
+        return new MeshGeometry().addMesh(new TriangleMesh(p, new int[] {0, 1, 2, 0, 2, 3}, null), new int[] {0, 0}, false).build();
     }
 
     private static boolean hits(Geometry g, Ray ray) {
@@ -165,7 +169,7 @@ class CameraTest {
     @Test
     void lightQuadOfCornellOriginalProjectsOntoTheDesignPixels() {
         Geometry light = lightQuad();
-        PinholeRays rays = ORIGINAL.rays(512, 512);
+        PinholeRays rays = Meshes.rays(ORIGINAL, 512, 512);
         Ray ray = new Ray();
         int minX = Integer.MAX_VALUE, maxX = -1, minY = Integer.MAX_VALUE, maxY = -1;
         for (int y = 0; y < 512; y++) {
@@ -186,7 +190,7 @@ class CameraTest {
     @Test
     void lightQuadCoversThirtyPercentOfRow71() {
         Geometry light = lightQuad();
-        PinholeRays rays = ORIGINAL.rays(512, 512);
+        PinholeRays rays = Meshes.rays(ORIGINAL, 512, 512);
         Ray ray = new Ray();
         int n = 64;
         double[] coverage = new double[4];
@@ -215,7 +219,7 @@ class CameraTest {
             -1, 0, 0.99f, -1, 1.99f, 0.99f, -1, 1.99f, -1.04f, -1, 0, -1.04f,
             1, 0, 0.99f, 1, 1.99f, 0.99f, 1, 1.99f, -1.04f, 1, 0, -1.04f};
         int[] idx = {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7};
-        Geometry walls = new Geometry.Builder().addMesh(new TriangleMesh(p, idx, null), new int[] {1, 1, 2, 2}, false).build();
+        Geometry walls = new MeshGeometry().addMesh(new TriangleMesh(p, idx, null), new int[] {1, 1, 2, 2}, false).build();
         assertThat(materialSeen(walls, ray(ORIGINAL, 512, 512, 60.5, 256.5))).as("left part of the image").isEqualTo(1);
         assertThat(materialSeen(walls, ray(ORIGINAL, 512, 512, 451.5, 256.5))).as("right part of the image").isEqualTo(2);
     }
@@ -268,7 +272,7 @@ class CameraTest {
             box(3, 3, 3, 3, 3, 3)};                    // a single point
         for (Aabb b : boxes) {
             for (double fov : new double[] {10, 40, 90, 170}) {
-                Camera c = Camera.framing(b, fov);
+                Camera c = TestScenes.framing(b, fov);
                 for (int[] size : new int[][] {{512, 512}, {1920, 1080}}) {
                     for (int corner = 0; corner < 8; corner++) {
                         Vector3d p = v((corner & 1) == 0 ? b.minX : b.maxX, (corner & 2) == 0 ? b.minY : b.maxY,
@@ -290,7 +294,7 @@ class CameraTest {
 
     @Test
     void framingAnEmptyBoxGivesAValidCamera() {
-        Camera c = Camera.framing(new Aabb(), 40);
+        Camera c = TestScenes.framing(new Aabb(), 40);
         assertThat(c.fovDegrees()).isEqualTo(40);
         assertThat(c.lookFrom().isFinite()).isTrue();
     }
@@ -339,8 +343,8 @@ class CameraTest {
 
     @Test
     void refusesEmptyFilm() {
-        assertThatThrownBy(() -> ORIGINAL.rays(0, 10)).isInstanceOf(IllegalArgumentException.class);
-        assertThatThrownBy(() -> ORIGINAL.rays(10, -1)).isInstanceOf(IllegalArgumentException.class);
+        assertThatThrownBy(() -> Meshes.rays(ORIGINAL, 0, 10)).isInstanceOf(IllegalArgumentException.class);
+        assertThatThrownBy(() -> Meshes.rays(ORIGINAL, 10, -1)).isInstanceOf(IllegalArgumentException.class);
     }
 
     @Test

@@ -3,9 +3,9 @@ package dev.strahl.cli;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import dev.strahl.render.Checkpoint;
+import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderSettings;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.SceneLoader;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -193,7 +193,7 @@ class BadInputTest {
             refused("JSON transform steps that overflow", files("s.json", "{ \"materials\": { \"m\": { \"type\": \"diffuse\" } },\n"
                     + " \"shapes\": [ { \"type\": \"triangles\", \"positions\": [0,0,0, 1,0,0, 0,1,0], \"indices\": [0,1,2], \"material\": \"m\",\n"
                     + "  \"transform\": [ { \"scale\": 1e200 }, { \"scale\": 1e200 } ] } ] }\n"), scene("$IN/s.json"), "$IN/s.json:3: ",
-                    "bad 'shapes[].transform': the steps multiply to a matrix beyond the range of numbers"),
+                    "bad 'shapes[].transform[].scale': the steps multiply to a matrix beyond the range of numbers"),
             refused("unknown scene format", files("t.txt", SQUARE), scene("$IN/t.txt"), "$IN/t.txt: ", "unknown scene format"),
             // ---- options ----
             refused("unknown option", files(), scene(CORNELL, "--frobnicate"), "Unknown option: '--frobnicate'"),
@@ -253,8 +253,10 @@ class BadInputTest {
     void checkpointOfOtherSettingsOrSceneIsRefused(String name, String sceneFile, List<String> options, String fragment) throws Exception {
         Path ck = in.resolve("a.ck");
         RenderSettings settings = RenderSettings.defaults().withSize(8, 8).withSamplesPerPixel(1);
-        var film = new dev.strahl.film.Film(8, 8);
-        Checkpoint.of(SceneLoader.load(Path.of(CORNELL)), settings).save(ck, film, 0, 0);
+        try (RenderJob job = RenderJob.start(SceneLoader.load(Path.of(CORNELL)), settings)) {
+            job.awaitStats();
+            job.saveCheckpoint(ck);
+        }
         List<String> extra = new ArrayList<>(List.of("--resume", ck.toString()));
         extra.addAll(options);
         List<String> a = scene(sceneFile, extra.toArray(String[]::new));

@@ -2,8 +2,8 @@ package dev.strahl.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.film.Image;
-import dev.strahl.film.PfmReader;
+import dev.strahl.image.Image;
+import dev.strahl.io.image.PfmReader;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;

@@ -2,7 +2,7 @@ package dev.strahl.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.scene.SceneSettings.Setting;
+import dev.strahl.io.json.SceneSettings.Setting;
 import java.util.EnumSet;
 import java.util.HashSet;
 import org.junit.jupiter.api.Test;

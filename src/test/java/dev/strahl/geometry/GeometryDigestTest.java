@@ -1,7 +1,9 @@
 package dev.strahl.geometry;
 
+import dev.strahl.testing.MeshGeometry;
 import static org.assertj.core.api.Assertions.assertThat;
 
+import dev.strahl.scene.TriangleMesh;
 import java.security.MessageDigest;
 import org.joml.Vector3d;
 import org.junit.jupiter.api.Test;
@@ -11,8 +13,8 @@ class GeometryDigestTest {
     private static Geometry geometry(float z, float normalZ, int material, double radius) {
         TriangleMesh mesh = new TriangleMesh(new float[] {0, 0, 0, 1, 0, 0, 0, 1, z}, new int[] {0, 1, 2},
                 new float[] {0, 0, 1, 0, 0, 1, 0, 0, normalZ});
-        return new Geometry.Builder().addMesh(mesh, new int[] {material}, false)
-                .addSphere(new Sphere(new Vector3d(0, 0, 2), radius), 0).build();
+        return new MeshGeometry().addMesh(mesh, new int[] {material}, false)
+                .addSphere(new Vector3d(0, 0, 2), radius, 0).build();
     }
 
     private static byte[] digest(Geometry g) throws Exception {

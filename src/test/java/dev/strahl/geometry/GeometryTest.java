@@ -1,8 +1,10 @@
 package dev.strahl.geometry;
 
+import dev.strahl.testing.MeshGeometry;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
+import dev.strahl.scene.TriangleMesh;
 import dev.strahl.testing.ChiSquare;
 import java.util.SplittableRandom;
 import org.joml.Vector3d;
@@ -21,7 +23,7 @@ class GeometryTest {
 
     /** One triangle per 9 floats, each with its own vertices; material of triangle i is 10 + i. */
     private static Geometry triangles(boolean closed, float... xyz) {
-        return new Geometry.Builder().addMesh(mesh(xyz), materials(xyz.length / 9), closed).build();
+        return new MeshGeometry().addMesh(mesh(xyz), materials(xyz.length / 9), closed).build();
     }
 
     private static TriangleMesh mesh(float... xyz) {
@@ -44,7 +46,7 @@ class GeometryTest {
     private static final float[] UNIT = {0, 0, 0, 1, 0, 0, 0, 1, 0};
 
     private static Geometry sphere(double cx, double cy, double cz, double r) {
-        return new Geometry.Builder().addSphere(new Sphere(new Vector3d(cx, cy, cz), r), 7).build();
+        return new MeshGeometry().addSphere(new Vector3d(cx, cy, cz), r, 7).build();
     }
 
     private static Ray ray(double ox, double oy, double oz, double dx, double dy, double dz) {
@@ -263,7 +265,7 @@ class GeometryTest {
             3, 3, 3, 3, 3, 3, 3, 3, 3,        // a point
             0, 0, 5, 1, 0, 5, 0, 1, 5,        // fine
         };
-        Geometry.Builder builder = new Geometry.Builder().addMesh(mesh(xyz), new int[] {0, 1, 2, 3, 4}, false);
+        MeshGeometry builder = new MeshGeometry().addMesh(mesh(xyz), new int[] {0, 1, 2, 3, 4}, false);
         assertThat(builder.degenerateCount()).isEqualTo(3);
         builder.addMesh(mesh(0, 0, 0, 0, 0, 0, 1, 1, 1), new int[] {5}, false);
         assertThat(builder.degenerateCount()).isEqualTo(4);
@@ -278,9 +280,9 @@ class GeometryTest {
 
     @Test
     void meshesAreAppendedWithTheirOwnVertices() {
-        Geometry g = new Geometry.Builder()
+        Geometry g = new MeshGeometry()
                 .addMesh(mesh(UNIT), new int[] {3}, false)
-                .addSphere(new Sphere(new Vector3d(0, 0, -10), 1), 9)
+                .addSphere(new Vector3d(0, 0, -10), 1, 9)
                 .addMesh(new TriangleMesh(new float[] {5, 5, 1, 6, 5, 1, 5, 6, 1, 9, 9, 9}, new int[] {0, 1, 2}, null), new int[] {4}, true)
                 .build();
         assertThat(g.triangleCount()).isEqualTo(2);
@@ -406,7 +408,7 @@ class GeometryTest {
     @Test
     void shadingNormalInterpolatesVertexNormals() {
         float[] n = {0, 0, 1, 1, 0, 1, 0, 1, 2};     // not unit: only their interpolation's direction counts
-        Geometry g = new Geometry.Builder().addMesh(new TriangleMesh(UNIT, new int[] {0, 1, 2}, n), new int[] {0}, false).build();
+        Geometry g = new MeshGeometry().addMesh(new TriangleMesh(UNIT, new int[] {0, 1, 2}, n), new int[] {0}, false).build();
         Ray r = ray(0.25, 0.5, 1, 0, 0, -1);
         Hit hit = new Hit().reset();
         g.intersect(0, r, hit, false);
@@ -421,7 +423,7 @@ class GeometryTest {
     @Test
     void missingOrCancellingVertexNormalsFallBackToTheGeometricNormal() {
         float nan = Float.NaN;
-        Geometry g = new Geometry.Builder()
+        Geometry g = new MeshGeometry()
                 .addMesh(mesh(UNIT), new int[] {0}, false)                                    // no normals at all
                 .addMesh(new TriangleMesh(UNIT, new int[] {0, 1, 2}, new float[] {0, 0, 1, nan, nan, nan, 0, 0, 1}), new int[] {1}, false)
                 .addMesh(new TriangleMesh(UNIT, new int[] {0, 1, 2}, new float[] {0, 0, 1, 0, 0, -1, 1, 0, 0}), new int[] {2}, false)
@@ -474,8 +476,8 @@ class GeometryTest {
     @Test
     void sampledPointsLieOnTheirPrimitive() {
         float[] xyz = {1, 2, 3, 4, -1, 2, 0.5f, 0, 7};
-        Geometry g = new Geometry.Builder().addMesh(mesh(xyz), new int[] {5}, false)
-                .addSphere(new Sphere(new Vector3d(-3, 1, 4), 0.75), 6).build();
+        Geometry g = new MeshGeometry().addMesh(mesh(xyz), new int[] {5}, false)
+                .addSphere(new Vector3d(-3, 1, 4), 0.75, 6).build();
         Vector3d v0 = vertex(xyz, 0, 0), v1 = vertex(xyz, 0, 1), v2 = vertex(xyz, 0, 2);
         Vector3d ng = geometricNormal(v0, v1, v2);
         Vector3d e1 = new Vector3d(v1).sub(v0), e2 = new Vector3d(v2).sub(v0);
@@ -507,8 +509,8 @@ class GeometryTest {
 
     @Test
     void sampledPointsAreUniformByArea() {
-        Geometry g = new Geometry.Builder().addMesh(mesh(UNIT), new int[] {0}, false)
-                .addSphere(new Sphere(new Vector3d(5, 6, 7), 3), 0).build();
+        Geometry g = new MeshGeometry().addMesh(mesh(UNIT), new int[] {0}, false)
+                .addSphere(new Vector3d(5, 6, 7), 3, 0).build();
         SurfacePoint sp = new SurfacePoint();
         double alpha = ChiSquare.sidak(0.01, 2);
         // On the unit triangle p = (b1, b2, 0): uniform means density 2 over the (b1, b2) triangle.

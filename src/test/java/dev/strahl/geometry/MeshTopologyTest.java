@@ -2,6 +2,7 @@ package dev.strahl.geometry;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import dev.strahl.scene.TriangleMesh;
 import dev.strahl.testing.Meshes;
 import java.io.IOException;
 import java.nio.file.Files;

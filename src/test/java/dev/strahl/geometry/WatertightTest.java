@@ -1,7 +1,9 @@
 package dev.strahl.geometry;
 
+import dev.strahl.testing.MeshGeometry;
 import static org.assertj.core.api.Assertions.assertThat;
 
+import dev.strahl.scene.TriangleMesh;
 import dev.strahl.testing.Meshes;
 import java.util.SplittableRandom;
 import org.joml.Vector3d;
@@ -18,7 +20,7 @@ import org.junit.jupiter.api.Test;
 class WatertightTest {
 
     private static Geometry closed(TriangleMesh mesh) {
-        return new Geometry.Builder().addMesh(mesh, new int[mesh.triangleCount()], true).build();
+        return new MeshGeometry().addMesh(mesh, new int[mesh.triangleCount()], true).build();
     }
 
     @Test
@@ -70,8 +72,8 @@ class WatertightTest {
             materials[t] = t % 5;
             flags[t] = (byte) (t % 2);
         }
-        Geometry g = new Geometry.Builder().addMesh(new TriangleMesh(extra, mesh.indices(), null), materials, flags)
-                .addSphere(new Sphere(new Vector3d(3, 0, 0), 0.5), 7).build();
+        Geometry g = new MeshGeometry().addMesh(new TriangleMesh(extra, mesh.indices(), null), materials, flags)
+                .addSphere(new Vector3d(3, 0, 0), 0.5, 7).build();
         int[] order = new int[g.primitiveCount()];
         for (int i = 0; i < n; i++) {
             order[i] = (7 * i + 3) % n;             // 7 is prime to 80 = n

@@ -2,10 +2,10 @@ package dev.strahl.golden;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.film.Image;
+import dev.strahl.image.Image;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.scene.Scene;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.SceneLoader;
 import dev.strahl.testing.Golden;
 import dev.strahl.testing.Golden.Region;
 import dev.strahl.testing.Renders;

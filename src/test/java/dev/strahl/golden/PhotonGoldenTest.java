@@ -2,13 +2,14 @@ package dev.strahl.golden;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.film.Image;
-import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.render.PhotonParameters;
+import dev.strahl.image.Image;
+import dev.strahl.render.IntegratorKind;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.scene.Scene;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.SceneLoader;
 import dev.strahl.testing.Golden;
 import dev.strahl.testing.Golden.Region;
 import java.nio.file.Path;
@@ -48,7 +49,7 @@ class PhotonGoldenTest {
         Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
         regions = Golden.faceRegions(scene, SIZE, SIZE);
         RenderSettings settings = RenderSettings.defaults().withSize(SIZE, SIZE).withSamplesPerPixel(ITERATIONS).withSeed(1)
-                .withIntegrator(IntegratorKind.PHOTON).withPhotons(PHOTONS);
+                .withIntegrator(IntegratorKind.PHOTON).withPhotons(new PhotonParameters(PHOTONS, 0));
         unbounded = renderKeeping(scene, settings);
         depth5 = renderKeeping(scene, settings.withMaxDepth(5));
     }

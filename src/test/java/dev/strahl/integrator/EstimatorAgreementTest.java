@@ -2,14 +2,16 @@ package dev.strahl.integrator;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.camera.Camera;
-import dev.strahl.film.Image;
+import dev.strahl.render.TestJobs;
+import dev.strahl.world.World;
+import dev.strahl.scene.Camera;
+import dev.strahl.image.Image;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.render.HemisphereSampling;
 import dev.strahl.scene.Scene;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.SceneLoader;
 import java.nio.file.Path;
 import org.joml.Vector3d;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -58,8 +60,8 @@ class EstimatorAgreementTest {
 
     static Image render(Scene scene, Integrator integrator, int spp, long seed) {
         RenderSettings settings = RenderSettings.defaults().withSize(SIZE, SIZE).withSamplesPerPixel(spp).withSeed(seed);
-        try (RenderJob job = RenderJob.start(scene, settings, integrator, new RenderListener() {})) {
-            return job.awaitCompletion().toImage();
+        try (RenderJob job = TestJobs.start(scene, settings, integrator, new RenderListener() {})) {
+            return job.awaitCompletion();
         } catch (InterruptedException e) {
             throw new AssertionError(e);
         }
@@ -117,7 +119,7 @@ class EstimatorAgreementTest {
     }
 
     private static PathTracer path(Scene scene, int depth, PathTracer.Strategy strategy) {
-        return new PathTracer(scene, depth, HemisphereSampling.COSINE, false, strategy);
+        return new PathTracer(World.of(scene), depth, false, false, strategy);
     }
 
     @ParameterizedTest(name = "{0}")
@@ -143,7 +145,7 @@ class EstimatorAgreementTest {
     void directLightingEqualsPathTracingAtDepthTwo(String name) throws Exception {
         Scene scene = variant(name);
         Estimate path = Estimate.of(scene, path(scene, 2, PathTracer.Strategy.MIS), 128);
-        Estimate direct = Estimate.of(scene, new DirectLighting(scene, HemisphereSampling.COSINE, false, 4), 64);
+        Estimate direct = Estimate.of(scene, new DirectLighting(World.of(scene), false, false, 4), 64);
         assertThat(worstZ(direct, path)).as("direct vs path at depth 2, %s", name).isLessThan(Z_MAX);
     }
 
@@ -152,7 +154,7 @@ class EstimatorAgreementTest {
     void uniformAndCosineHemisphereSamplingAgree(String name) throws Exception {
         Scene scene = variant(name);
         Estimate cosine = Estimate.of(scene, path(scene, 5, PathTracer.Strategy.MIS), 128);
-        Estimate uniform = Estimate.of(scene, new PathTracer(scene, 5, HemisphereSampling.UNIFORM, false, PathTracer.Strategy.MIS), 128);
+        Estimate uniform = Estimate.of(scene, new PathTracer(World.of(scene), 5, true, false, PathTracer.Strategy.MIS), 128);
         assertThat(worstZ(uniform, cosine)).as("uniform vs cosine, %s", name).isLessThan(Z_MAX);
         double seCosine = java.util.Arrays.stream(cosine.standardError()).sum();
         double seUniform = java.util.Arrays.stream(uniform.standardError()).sum();

@@ -3,14 +3,15 @@ package dev.strahl.integrator;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import dev.strahl.camera.Camera;
-import dev.strahl.film.Image;
+import dev.strahl.scene.TestScenes;
+import dev.strahl.scene.Camera;
+import dev.strahl.image.Image;
 import dev.strahl.geometry.Sphere;
 import dev.strahl.material.Lambert;
-import dev.strahl.material.Material;
-import dev.strahl.math.Rgb;
+import dev.strahl.scene.Material;
+import dev.strahl.image.Rgb;
 import dev.strahl.render.RenderSettings;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.render.HemisphereSampling;
 import dev.strahl.scene.Scene;
 import dev.strahl.testing.Meshes;
 import dev.strahl.testing.Renders;
@@ -28,7 +29,7 @@ class FurnaceTest {
     private static final double LE = 1.0;
 
     private static Scene closedFurnace(double albedo) {
-        Material wall = new Material("furnace", new Lambert(Rgb.gray(albedo)), Rgb.gray(LE));
+        Material wall = TestScenes.material("furnace", new Lambert(Rgb.gray(albedo)), Rgb.gray(LE));
         return Scene.builder()
                 .addMesh(Meshes.icosphere(2, 1.0, true), wall)
                 .camera(new Camera(new Vector3d(0.1, -0.2, 0.05), new Vector3d(0.3, 0.4, -1), new Vector3d(0, 1, 0), 60))
@@ -72,7 +73,7 @@ class FurnaceTest {
                 // Radius 0.9: seen from 3 units under 17.5°, inside every centre pixel and clear of the
                 // corner pixel, whose inner corner lies at 19.2° (a unit sphere, at 19.5°, reached into
                 // it: a stratified sampler, covering the pixel evenly, found that sliver).
-                .addSphere(new Sphere(new Vector3d(0, 0, 0), 0.9), Material.diffuse("grey", Rgb.gray(albedo)))
+                .addSphere(new Vector3d(0, 0, 0), 0.9, Material.diffuse("grey", Rgb.gray(albedo)))
                 .environment(new Rgb(1, 2, 0.5))
                 .camera(new Camera(new Vector3d(0, 0, 3), new Vector3d(0, 0, 0), new Vector3d(0, 1, 0), 30))
                 .build();

@@ -1,14 +1,17 @@
 package dev.strahl.integrator;
 
+import dev.strahl.world.World;
+import dev.strahl.testing.Meshes;
 import static org.assertj.core.api.Assertions.assertThat;
 
+import dev.strahl.math.MutableRgb;
 import dev.strahl.camera.PinholeRays;
 import dev.strahl.geometry.Ray;
-import dev.strahl.math.Rgb;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.image.Rgb;
+import dev.strahl.render.HemisphereSampling;
 import dev.strahl.sampling.Rng;
 import dev.strahl.scene.Scene;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.SceneLoader;
 import java.lang.management.ManagementFactory;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
@@ -23,11 +26,11 @@ class PathTracerAllocationTest {
     @Test
     void radianceAllocatesNothingPerSample() throws Exception {
         Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
-        Integrator.Worker worker = new PathTracer(scene, -1, HemisphereSampling.COSINE, false, PathTracer.Strategy.MIS).newWorker();
-        PinholeRays camera = scene.camera().rays(64, 64);
+        Integrator.Worker worker = new PathTracer(World.of(scene), -1, false, false, PathTracer.Strategy.MIS).newWorker();
+        PinholeRays camera = Meshes.rays(scene.camera(), 64, 64);
         Ray ray = new Ray();
         Rng rng = new Rng();
-        Rgb.Mutable out = new Rgb.Mutable();
+        MutableRgb out = new MutableRgb();
         var threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
         long allocated = Long.MAX_VALUE;
         double sum = 0;

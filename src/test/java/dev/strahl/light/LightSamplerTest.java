@@ -1,5 +1,6 @@
 package dev.strahl.light;
 
+import dev.strahl.testing.MeshGeometry;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
@@ -8,8 +9,8 @@ import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.Sphere;
 import dev.strahl.geometry.SurfacePoint;
-import dev.strahl.geometry.TriangleMesh;
-import dev.strahl.math.Rgb;
+import dev.strahl.scene.TriangleMesh;
+import dev.strahl.image.Rgb;
 import dev.strahl.testing.ChiSquare;
 import java.util.SplittableRandom;
 import org.joml.Vector3d;
@@ -49,7 +50,7 @@ class LightSamplerTest {
 
     private static final Vector3dc ORIGIN = new Vector3d();
 
-    private static Geometry triangles(Geometry.Builder builder) {
+    private static Geometry triangles(MeshGeometry builder) {
         int[] idx = new int[TRIANGLES.length / 3];
         for (int i = 0; i < idx.length; i++) {
             idx[i] = i;
@@ -58,7 +59,7 @@ class LightSamplerTest {
     }
 
     private static Geometry scene() {
-        return triangles(new Geometry.Builder());
+        return triangles(new MeshGeometry());
     }
 
     private static double totalPower() {
@@ -79,7 +80,7 @@ class LightSamplerTest {
         assertThat(lights.lightCount()).as("A, B, C, D; not E").isEqualTo(4);
         assertThat(lights.isEmpty()).isFalse();
 
-        Geometry withSphere = triangles(new Geometry.Builder().addSphere(new Sphere(new Vector3d(0, 0, -3), 0.3), 2));
+        Geometry withSphere = triangles(new MeshGeometry().addSphere(new Vector3d(0, 0, -3), 0.3, 2));
         LightSampler all = new LightSampler(withSphere, EMISSION);
         assertThat(all.totalPower()).isCloseTo(totalPower() + 4 * Math.PI * 0.09 * 3, within(1e-6));
         assertThat(all.lightCount()).isEqualTo(5);
@@ -92,7 +93,7 @@ class LightSamplerTest {
      */
     @Test
     void selectsLightsInProportionToAreaTimesMeanRadiance() {
-        Geometry geometry = triangles(new Geometry.Builder().addSphere(new Sphere(new Vector3d(0, 0, -3), 0.3), 2));
+        Geometry geometry = triangles(new MeshGeometry().addSphere(new Vector3d(0, 0, -3), 0.3, 2));
         LightSampler lights = new LightSampler(geometry, EMISSION);
         double sphereArea = 4 * Math.PI * 0.09;
         double[] power = {AREA[0] * 4, AREA[1] * 3, AREA[2] * 0.5, AREA[3] * 4, 0, sphereArea * 3};
@@ -313,7 +314,7 @@ class LightSamplerTest {
     @Test
     void lightsAreOneSided() {
         float[] a = java.util.Arrays.copyOf(TRIANGLES, 9);
-        Geometry geometry = new Geometry.Builder().addMesh(new TriangleMesh(a, new int[] {0, 1, 2}, null), new int[] {1}, false).build();
+        Geometry geometry = new MeshGeometry().addMesh(new TriangleMesh(a, new int[] {0, 1, 2}, null), new int[] {1}, false).build();
         LightSampler lights = new LightSampler(geometry, EMISSION);
         SurfacePoint scratch = new SurfacePoint();
         LightSample out = new LightSample();
@@ -342,7 +343,7 @@ class LightSamplerTest {
     void sphereIsSampledUniformlyByArea() {
         Vector3dc center = new Vector3d(1, 2, 3);
         double radius = 0.5;
-        Geometry geometry = new Geometry.Builder().addSphere(new Sphere(center, radius), 1).build();
+        Geometry geometry = new MeshGeometry().addSphere(center, radius, 1).build();
         LightSampler lights = new LightSampler(geometry, EMISSION);
         Vector3dc ref = new Vector3d(center).add(0, 0, 5 * radius);
         SplittableRandom lightChoice = new SplittableRandom(6);
@@ -366,7 +367,7 @@ class LightSamplerTest {
 
     @Test
     void nothingIsSampledFromInsideAnEmissiveSphere() {
-        Geometry geometry = new Geometry.Builder().addSphere(new Sphere(new Vector3d(), 1), 1).build();
+        Geometry geometry = new MeshGeometry().addSphere(new Vector3d(), 1, 1).build();
         LightSampler lights = new LightSampler(geometry, EMISSION);
         SurfacePoint scratch = new SurfacePoint();
         LightSample out = new LightSample();
@@ -383,8 +384,8 @@ class LightSamplerTest {
     @Test
     void emptySamplerSamplesNothing() {
         float[] e = java.util.Arrays.copyOfRange(TRIANGLES, 36, 45);
-        Geometry dark = new Geometry.Builder().addMesh(new TriangleMesh(e, new int[] {0, 1, 2}, null), new int[] {0}, false).build();
-        for (Geometry geometry : new Geometry[] {dark, new Geometry.Builder().build()}) {
+        Geometry dark = new MeshGeometry().addMesh(new TriangleMesh(e, new int[] {0, 1, 2}, null), new int[] {0}, false).build();
+        for (Geometry geometry : new Geometry[] {dark, new MeshGeometry().build()}) {
             LightSampler lights = new LightSampler(geometry, EMISSION);
             assertThat(lights.isEmpty()).isTrue();
             assertThat(lights.lightCount()).isZero();

@@ -4,7 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
-import dev.strahl.math.Rgb;
+import dev.strahl.math.MutableRgb;
+import dev.strahl.image.Rgb;
 import dev.strahl.testing.BsdfAssert;
 import java.lang.management.ManagementFactory;
 import java.util.SplittableRandom;
@@ -161,7 +162,7 @@ class DielectricTest {
 
     @Test
     void evalAndPdfAreZeroAndTheBsdfIsOneSidedDelta() {
-        Rgb.Mutable f = new Rgb.Mutable(1, 1, 1);
+        MutableRgb f = new MutableRgb(1, 1, 1);
         glass.eval(direction(20, 0, false), direction(30, 180, true), f);
         assertThat(f.isBlack()).isTrue();
         assertThat(glass.pdf(direction(20, 0, false), direction(20, 180, false))).isZero();

@@ -1,5 +1,6 @@
 package dev.strahl.material;
 
+import dev.strahl.testing.MeshGeometry;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
@@ -24,7 +25,7 @@ class GlassSphereRefractionTest {
     @ParameterizedTest(name = "h = {0}, eta = {1}")
     @CsvSource({"0.3, 1.5", "0.7, 1.5", "0.5, 2.5", "0.9, 1.33"})
     void rayThroughASphereLeavesWhereSnellsLawSays(double h, double eta) {
-        Geometry geometry = new Geometry.Builder().addSphere(new Sphere(new Vector3d(), 1), 0).build();
+        Geometry geometry = new MeshGeometry().addSphere(new Vector3d(), 1, 0).build();
         Dielectric glass = new Dielectric(eta);
         Ray ray = new Ray();
         ray.o.set(0, h, -5);

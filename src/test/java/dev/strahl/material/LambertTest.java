@@ -5,8 +5,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
-import dev.strahl.math.Rgb;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.math.MutableRgb;
+import dev.strahl.image.Rgb;
 import dev.strahl.testing.BsdfAssert;
 import dev.strahl.testing.ChiSquare;
 import java.util.SplittableRandom;
@@ -14,7 +14,7 @@ import org.joml.Vector3d;
 import org.joml.Vector3dc;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.EnumSource;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /** Lambertian reflection: closed form, sampling against pdf, reciprocity, energy. */
 class LambertTest {
@@ -25,7 +25,7 @@ class LambertTest {
     /** The outgoing directions every sampling property is checked for: normal, oblique and grazing. */
     private static final Vector3dc[] WO = {UP, direction(30, 40), direction(85, 200)};
 
-    private static Lambert lambert(HemisphereSampling mode) {
+    private static Lambert lambert(boolean mode) {
         return new Lambert(ALBEDO, mode);
     }
 
@@ -39,7 +39,7 @@ class LambertTest {
     @Test
     void evalIsAlbedoOverPiWhenBothDirectionsAreAbove() {
         Lambert bsdf = new Lambert(ALBEDO);
-        Rgb.Mutable f = new Rgb.Mutable();
+        MutableRgb f = new MutableRgb();
         SplittableRandom random = new SplittableRandom(1);
         for (int i = 0; i < 10_000; i++) {
             Vector3d wo = random(random), wi = random(random);
@@ -56,7 +56,7 @@ class LambertTest {
 
     @Test
     void evalIsZeroAtTheHorizon() {
-        Rgb.Mutable f = new Rgb.Mutable(1, 1, 1);
+        MutableRgb f = new MutableRgb(1, 1, 1);
         new Lambert(ALBEDO).eval(UP, direction(90, 0).setComponent(2, 0), f);
         assertThat(f.isBlack()).isTrue();
         f.set(1, 1, 1);
@@ -66,7 +66,7 @@ class LambertTest {
 
     @Test
     void pdfIsCosineOverPiOrUniform() {
-        Lambert cosine = lambert(HemisphereSampling.COSINE), uniform = lambert(HemisphereSampling.UNIFORM);
+        Lambert cosine = lambert(false), uniform = lambert(true);
         Vector3dc wo = direction(20, 0);
         for (double theta : new double[] {0, 10, 45, 80, 89.99}) {
             Vector3d wi = direction(theta, 123);
@@ -83,7 +83,7 @@ class LambertTest {
     @Test
     void defaultSamplingIsCosineAndTheLobeIsNotDeltaAndTwoSided() {
         Lambert bsdf = new Lambert(ALBEDO);
-        assertThat(bsdf.sampling()).isEqualTo(HemisphereSampling.COSINE);
+        assertThat(bsdf.uniform()).isEqualTo(false);
         assertThat(bsdf.isDelta()).isFalse();
         assertThat(bsdf.isTwoSided()).isTrue();
     }
@@ -92,24 +92,24 @@ class LambertTest {
     // Sampling
 
     @ParameterizedTest
-    @EnumSource(HemisphereSampling.class)
-    void samplingMatchesPdfChiSquare(HemisphereSampling mode) {
+    @ValueSource(booleans = {false, true})
+    void samplingMatchesPdfChiSquare(boolean mode) {
         for (int k = 0; k < WO.length; k++) {
             BsdfAssert.assertSamplingMatchesPdf(lambert(mode), WO[k], 1_000_000, 17 + k, ALPHA);
         }
     }
 
     @ParameterizedTest
-    @EnumSource(HemisphereSampling.class)
-    void pdfIntegratesToOne(HemisphereSampling mode) {
+    @ValueSource(booleans = {false, true})
+    void pdfIntegratesToOne(boolean mode) {
         for (Vector3dc wo : WO) {
             assertThat(BsdfAssert.pdfIntegral(lambert(mode), wo)).as("wo = %s", wo).isCloseTo(1, within(1e-9));
         }
     }
 
     @ParameterizedTest
-    @EnumSource(HemisphereSampling.class)
-    void weightIsEvalTimesCosineOverPdfForEverySample(HemisphereSampling mode) {
+    @ValueSource(booleans = {false, true})
+    void weightIsEvalTimesCosineOverPdfForEverySample(boolean mode) {
         for (Vector3dc wo : WO) {
             BsdfAssert.assertSampleConsistent(lambert(mode), wo, 100_000, 3);
             BsdfAssert.assertPdfCoversEval(lambert(mode), wo, 100_000, 4);
@@ -119,16 +119,16 @@ class LambertTest {
     @Test
     void weightIsTheClosedForm() {
         BsdfSample s = new BsdfSample();
-        assertThat(lambert(HemisphereSampling.COSINE).sample(WO[1], 0.5, 0.3, 0.7, s)).isTrue();
+        assertThat(lambert(false).sample(WO[1], 0.5, 0.3, 0.7, s)).isTrue();
         assertThat(s.weight.toRgb()).as("cosine sampling: weight = albedo").isEqualTo(ALBEDO);
         assertThat(s.delta).isFalse();
-        assertThat(lambert(HemisphereSampling.UNIFORM).sample(WO[1], 0.5, 0.3, 0.7, s)).isTrue();
+        assertThat(lambert(true).sample(WO[1], 0.5, 0.3, 0.7, s)).isTrue();
         assertThat(s.weight.r).as("uniform sampling: weight = 2·albedo·cosθ").isCloseTo(2 * 0.8 * s.wi.z, within(1e-15));
     }
 
     @ParameterizedTest
-    @EnumSource(HemisphereSampling.class)
-    void noSampleFromBelowTheSurface(HemisphereSampling mode) {
+    @ValueSource(booleans = {false, true})
+    void noSampleFromBelowTheSurface(boolean mode) {
         BsdfSample s = new BsdfSample();
         SplittableRandom random = new SplittableRandom(8);
         for (int i = 0; i < 1000; i++) {
@@ -147,16 +147,16 @@ class LambertTest {
     }
 
     @ParameterizedTest
-    @EnumSource(HemisphereSampling.class)
-    void conservesEnergy(HemisphereSampling mode) {
+    @ValueSource(booleans = {false, true})
+    void conservesEnergy(boolean mode) {
         BsdfAssert.assertEnergyAtMostOne(new Lambert(Rgb.WHITE, mode), 20, 20_000, 6);
         BsdfAssert.assertEnergyAtMostOne(lambert(mode), 20, 20_000, 7);
     }
 
     /** ∫ f cosθi dωi = albedo for every wo, estimated both by the BSDF's sampling and independently of it. */
     @ParameterizedTest
-    @EnumSource(HemisphereSampling.class)
-    void directionalAlbedoIsTheAlbedo(HemisphereSampling mode) {
+    @ValueSource(booleans = {false, true})
+    void directionalAlbedoIsTheAlbedo(boolean mode) {
         for (Vector3dc wo : WO) {
             BsdfAssert.Estimate bySampling = BsdfAssert.albedoBySampling(lambert(mode), wo, 200_000, 9);
             BsdfAssert.Estimate byEval = BsdfAssert.albedoByEval(lambert(mode), wo, 200_000, 10);
@@ -165,7 +165,7 @@ class LambertTest {
             assertThat(byEval.errR()).as("the estimate is precise enough to mean something").isLessThan(0.005);
         }
         // Cosine sampling is exact: every weight is the albedo.
-        BsdfAssert.Estimate exact = BsdfAssert.albedoBySampling(lambert(HemisphereSampling.COSINE), WO[2], 1000, 11);
+        BsdfAssert.Estimate exact = BsdfAssert.albedoBySampling(lambert(false), WO[2], 1000, 11);
         assertThat(exact.r()).isCloseTo(0.8, within(1e-12));
         assertThat(exact.errR()).isCloseTo(0, within(1e-12));
     }
@@ -176,10 +176,10 @@ class LambertTest {
     @Test
     void withHemisphereSamplingReturnsALambertWithThatMode() {
         Lambert cosine = new Lambert(ALBEDO);
-        Bsdf uniform = cosine.withHemisphereSampling(HemisphereSampling.UNIFORM);
-        assertThat(uniform).isEqualTo(new Lambert(ALBEDO, HemisphereSampling.UNIFORM));
-        assertThat(uniform.withHemisphereSampling(HemisphereSampling.COSINE)).isEqualTo(cosine);
-        assertThat(cosine.withHemisphereSampling(HemisphereSampling.COSINE)).isSameAs(cosine);
+        Bsdf uniform = cosine.withUniformHemisphere(true);
+        assertThat(uniform).isEqualTo(new Lambert(ALBEDO, true));
+        assertThat(uniform.withUniformHemisphere(false)).isEqualTo(cosine);
+        assertThat(cosine.withUniformHemisphere(false)).isSameAs(cosine);
     }
 
     @Test
@@ -195,7 +195,6 @@ class LambertTest {
     /** A missing sampling mode must not silently mean uniform sampling. */
     @Test
     void refusesMissingArguments() {
-        assertThatThrownBy(() -> new Lambert(ALBEDO, null)).isInstanceOf(NullPointerException.class).hasMessageContaining("sampling");
         assertThatThrownBy(() -> new Lambert(null)).isInstanceOf(NullPointerException.class).hasMessageContaining("albedo");
     }
 }

@@ -4,8 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
-import dev.strahl.math.Rgb;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.math.MutableRgb;
+import dev.strahl.image.Rgb;
 import dev.strahl.testing.BsdfAssert;
 import java.util.SplittableRandom;
 import org.joml.Vector3d;
@@ -41,7 +41,7 @@ class MirrorTest {
     @Test
     void evalAndPdfAreZeroForEveryDirection() {
         SplittableRandom random = new SplittableRandom(2);
-        Rgb.Mutable f = new Rgb.Mutable(5, 5, 5);
+        MutableRgb f = new MutableRgb(5, 5, 5);
         for (int i = 0; i < 1000; i++) {
             Vector3d wo = BsdfAssert.direction(180 * random.nextDouble(), 360 * random.nextDouble());
             Vector3d wi = BsdfAssert.direction(180 * random.nextDouble(), 360 * random.nextDouble());
@@ -77,7 +77,7 @@ class MirrorTest {
     void isADeltaTwoSidedBsdf() {
         assertThat(mirror.isDelta()).isTrue();
         assertThat(mirror.isTwoSided()).isTrue();
-        assertThat(mirror.withHemisphereSampling(HemisphereSampling.UNIFORM)).isSameAs(mirror);
+        assertThat(mirror.withUniformHemisphere(true)).isSameAs(mirror);
     }
 
     @Test

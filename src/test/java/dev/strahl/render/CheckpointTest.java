@@ -3,10 +3,10 @@ package dev.strahl.render;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import dev.strahl.camera.Camera;
+import dev.strahl.scene.Camera;
 import dev.strahl.film.Film;
 import dev.strahl.scene.Scene;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.SceneLoader;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -35,7 +35,7 @@ class CheckpointTest {
     static void renderOnceThrough() throws Exception {
         cornell = SceneLoader.load(Path.of("scenes/cornell-box.json"));
         try (RenderJob job = RenderJob.start(cornell, SETTINGS)) {
-            uninterrupted = job.awaitCompletion();
+            uninterrupted = TestJobs.awaitFilm(job);
         }
     }
 
@@ -45,12 +45,12 @@ class CheckpointTest {
         Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
         Path file = dir.resolve("a.ck");
         try (RenderJob first = RenderJob.start(cornell, SETTINGS.withSamplesPerPixel(savedSpp))) {
-            cp.save(file, first.awaitCompletion(), 0, first.awaitStats().seconds());
+            cp.save(file, TestJobs.awaitFilm(first), 0, first.awaitStats().seconds());
         }
         Checkpoint.Restored restored = cp.restore(file);
         assertThat(restored.samplesPerPixel()).isEqualTo(savedSpp);
-        try (RenderJob second = RenderJob.resume(cornell, SETTINGS, restored.film(), new RenderListener() {})) {
-            assertSameBits(second.awaitCompletion(), uninterrupted);
+        try (RenderJob second = TestJobs.resume(cornell, SETTINGS, restored.film(), new RenderListener() {})) {
+            assertSameBits(TestJobs.awaitFilm(second), uninterrupted);
             assertThat(second.awaitStats().samplesPerPixel()).isEqualTo(24);
             assertThat(second.awaitStats().samples()).isEqualTo((24L - savedSpp) * 40 * 30);
         }
@@ -65,11 +65,11 @@ class CheckpointTest {
         try (RenderJob first = RenderJob.start(cornell, SETTINGS.withThreads(2))) {
             Thread.sleep(delayMillis);
             first.cancel();
-            cp.save(file, first.awaitCompletion(), first.invalidSamples(), first.elapsedSeconds());
+            cp.save(file, TestJobs.awaitFilm(first), first.invalidSamples(), first.elapsedSeconds());
         }
         Film restored = cp.restore(file).film();
-        try (RenderJob second = RenderJob.resume(cornell, SETTINGS.withThreads(1), restored, new RenderListener() {})) {
-            assertSameBits(second.awaitCompletion(), uninterrupted);
+        try (RenderJob second = TestJobs.resume(cornell, SETTINGS.withThreads(1), restored, new RenderListener() {})) {
+            assertSameBits(TestJobs.awaitFilm(second), uninterrupted);
         }
     }
 
@@ -90,14 +90,14 @@ class CheckpointTest {
                     Thread.onSpinWait();               // rows are counted as they finish: a count between passes' totals is mid-pass
                 }
                 first.cancel();
-                Film film = first.awaitCompletion();
+                Film film = TestJobs.awaitFilm(first);
                 midPass = maxSampleCount(film) > film.minSampleCount();
                 cp.save(file, film, first.invalidSamples(), first.elapsedSeconds());
             }
         }
         assertThat(midPass).as("a cancel in the middle of a pass in 5 attempts").isTrue();
-        try (RenderJob second = RenderJob.resume(cornell, SETTINGS.withThreads(1), cp.restore(file).film(), new RenderListener() {})) {
-            assertSameBits(second.awaitCompletion(), uninterrupted);
+        try (RenderJob second = TestJobs.resume(cornell, SETTINGS.withThreads(1), cp.restore(file).film(), new RenderListener() {})) {
+            assertSameBits(TestJobs.awaitFilm(second), uninterrupted);
         }
     }
 
@@ -117,8 +117,8 @@ class CheckpointTest {
         Path file = dir.resolve("c.ck");
         Film film = new Film(40, 30);
         for (int spp : new int[] {3, 11, 24}) {
-            try (RenderJob job = RenderJob.resume(cornell, SETTINGS.withSamplesPerPixel(spp), film, new RenderListener() {})) {
-                cp.save(file, job.awaitCompletion(), 0, 0);
+            try (RenderJob job = TestJobs.resume(cornell, SETTINGS.withSamplesPerPixel(spp), film, new RenderListener() {})) {
+                cp.save(file, TestJobs.awaitFilm(job), 0, 0);
             }
             film = cp.restore(file).film();
         }
@@ -126,32 +126,75 @@ class CheckpointTest {
     }
 
     @Test
-    void theListenerSeesAQuiescentFilmBetweenPasses() throws Exception {
+    void aCheckpointSavedFromTheListenerHoldsThatPass() throws Exception {
         Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
         Path file = dir.resolve("d.ck");
-        Film film = new Film(40, 30);
+        var job = new java.util.concurrent.atomic.AtomicReference<RenderJob>();
         int[] saves = {0};
         RenderListener saver = new RenderListener() {
             @Override
-            public void passCompleted(int spp, dev.strahl.film.Image image) {
+            public void passCompleted(int spp, dev.strahl.image.Image image) {
                 if (spp == 8) {
                     try {
-                        cp.save(file, film, 0, 0);
+                        job.get().saveCheckpoint(file);
                         saves[0]++;
-                    } catch (IOException e) {
+                    } catch (IOException | InterruptedException e) {
                         throw new AssertionError(e);
                     }
                 }
             }
         };
-        try (RenderJob job = RenderJob.resume(cornell, SETTINGS, film, saver)) {
-            job.awaitCompletion();
+        try (RenderJob j = RenderJob.start(cornell, SETTINGS.withSamplesPerPass(1).withThreads(2), new RenderListener() {
+            @Override
+            public void passCompleted(int spp, dev.strahl.image.Image image) {
+                while (job.get() == null) {
+                    Thread.onSpinWait();
+                }
+                saver.passCompleted(spp, image);
+            }
+        })) {
+            job.set(j);
+            j.awaitStats();
         }
         assertThat(saves[0]).isEqualTo(1);
         Checkpoint.Restored at8 = cp.restore(file);
         assertThat(at8.samplesPerPixel()).isEqualTo(8);
-        try (RenderJob job = RenderJob.resume(cornell, SETTINGS, at8.film(), new RenderListener() {})) {
-            assertSameBits(job.awaitCompletion(), uninterrupted);
+        try (RenderJob resumed = RenderJob.resumeFrom(file, cornell, SETTINGS, new RenderListener() {})) {
+            assertSameBits(TestJobs.awaitFilm(resumed), uninterrupted);
+        }
+    }
+
+    /** A checkpoint taken while the workers are in the middle of a pass, then resumed: the same bits. */
+    @Test
+    void aCheckpointSavedWhileRenderingResumesBitIdentically() throws Exception {
+        Path file = dir.resolve("w.ck");
+        try (RenderJob first = RenderJob.start(cornell, SETTINGS.withThreads(2))) {
+            while (first.samplesDone() == 0 && !first.isDone()) {
+                Thread.onSpinWait();
+            }
+            first.saveCheckpoint(file);
+            first.cancel();
+        }
+        try (RenderJob second = RenderJob.resumeFrom(file, cornell, SETTINGS.withThreads(1), new RenderListener() {})) {
+            assertSameBits(TestJobs.awaitFilm(second), uninterrupted);
+        }
+    }
+
+    /** Paused and resumed at any moment, the render gives the bits of one that ran through. */
+    @ParameterizedTest
+    @ValueSource(ints = {0, 5, 30})
+    void pausingAndResumingChangesNoBit(int delayMillis) throws Exception {
+        try (RenderJob job = RenderJob.start(cornell, SETTINGS.withThreads(2))) {
+            Thread.sleep(delayMillis);
+            job.pause();
+            assertThat(job.isPaused()).isTrue();
+            Thread.sleep(100);                     // each worker finishes the tile it is on
+            long held = job.samplesDone();
+            Thread.sleep(100);
+            assertThat(job.samplesDone()).as("no tile is started while paused").isEqualTo(held);
+            job.resume();
+            assertThat(job.isPaused()).isFalse();
+            assertSameBits(TestJobs.awaitFilm(job), uninterrupted);
         }
     }
 
@@ -163,7 +206,7 @@ class CheckpointTest {
         Checkpoint.Restored r = cp.restore(file);
         assertThat(r.invalidSamples()).isEqualTo(5);
         assertThat(r.seconds()).isEqualTo(1.5);
-        try (RenderJob job = RenderJob.resume(cornell, SETTINGS.withSamplesPerPixel(10), r.film(), new RenderListener() {})) {
+        try (RenderJob job = TestJobs.resume(cornell, SETTINGS.withSamplesPerPixel(10), r.film(), new RenderListener() {})) {
             assertThat(job.await(30, TimeUnit.SECONDS)).isTrue();
             assertThat(job.awaitStats().samples()).isZero();
             assertSameBits(job.film(), uninterrupted);
@@ -179,7 +222,7 @@ class CheckpointTest {
         assertRefused(Checkpoint.of(cornell, SETTINGS.withSeed(10)), file, "other settings", "seed 9 in the checkpoint, 10 now");
         assertRefused(Checkpoint.of(cornell, SETTINGS.withMaxDepth(5)), file, "maxDepth -1 in the checkpoint, 5 now");
         assertRefused(Checkpoint.of(cornell, SETTINGS.withSize(41, 30)), file, "width 40 in the checkpoint, 41 now");
-        assertRefused(Checkpoint.of(cornell, SETTINGS.withIntegrator(dev.strahl.integrator.IntegratorKind.DIRECT)), file, "integrator");
+        assertRefused(Checkpoint.of(cornell, SETTINGS.withIntegrator(dev.strahl.render.IntegratorKind.DIRECT)), file, "integrator");
         System.setProperty("strahl.sampler", "independent");
         try {
             assertRefused(Checkpoint.of(cornell, SETTINGS), file, "sampler stratified in the checkpoint, independent now");

@@ -2,10 +2,9 @@ package dev.strahl.render;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.film.Image;
-import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.image.Image;
 import dev.strahl.scene.Scene;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.SceneLoader;
 import dev.strahl.testing.Renders;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
@@ -43,7 +42,7 @@ class DeterminismTest {
     @Test
     void photonMappingGivesIdenticalBitsOnOneTwoAndThreeThreads() throws Exception {
         Scene scene = SceneLoader.load(Path.of("scenes/cornell-sphere.json"));      // glass and mirror: caustic photons
-        RenderSettings photon = SETTINGS.withSamplesPerPixel(3).withIntegrator(IntegratorKind.PHOTON).withPhotons(10_000);
+        RenderSettings photon = SETTINGS.withSamplesPerPixel(3).withIntegrator(IntegratorKind.PHOTON).withPhotons(new PhotonParameters(10_000, 0));
         Image one = Renders.render(scene, photon.withThreads(1));
         Image two = Renders.render(scene, photon.withThreads(2));
         Image three = Renders.render(scene, photon.withThreads(3));

@@ -2,12 +2,12 @@ package dev.strahl.render;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.film.Image;
+import dev.strahl.image.Image;
 import dev.strahl.film.Tonemap;
-import dev.strahl.material.Material;
-import dev.strahl.math.Rgb;
+import dev.strahl.scene.Material;
+import dev.strahl.image.Rgb;
 import dev.strahl.scene.Scene;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.SceneLoader;
 import dev.strahl.scene.Transform;
 import dev.strahl.testing.Meshes;
 import dev.strahl.testing.Renders;
@@ -28,7 +28,7 @@ class EmbeddingTest {
                 .addSphere(new Vector3d(0.6, 0.5, 0), 0.4, Material.dielectric("glass", 1.5))
                 .addSphere(new Vector3d(0, -100, 0), 99.9, Material.diffuse("floor", Rgb.gray(0.6)))
                 .addSphere(new Vector3d(0, 3, 1), 0.5, Material.emissive("lamp", Rgb.gray(0.5), Rgb.gray(12)))
-                .camera(new dev.strahl.camera.Camera(new Vector3d(0, 1, 4), new Vector3d(0, 0.5, 0), new Vector3d(0, 1, 0), 40))
+                .camera(new dev.strahl.scene.Camera(new Vector3d(0, 1, 4), new Vector3d(0, 0.5, 0), new Vector3d(0, 1, 0), 40))
                 .environment(new Rgb(0.05, 0.05, 0.1))
                 .build();
     }
@@ -44,16 +44,16 @@ class EmbeddingTest {
         Image togetherA;
         Image togetherB;
         try (RenderJob ja = RenderJob.start(cornell, a); RenderJob jb = RenderJob.start(spheres, b)) {
-            togetherA = ja.awaitCompletion().toImage();
-            togetherB = jb.awaitCompletion().toImage();
+            togetherA = ja.awaitCompletion();
+            togetherB = jb.awaitCompletion();
         }
         assertThat(togetherA).isEqualTo(aloneA);
         assertThat(togetherB).isEqualTo(aloneB);
         assertThat(aloneB.mean()[0]).isPositive();
         // the same scene in two jobs at once, too
         try (RenderJob j1 = RenderJob.start(spheres, b); RenderJob j2 = RenderJob.start(spheres, b)) {
-            assertThat(j1.awaitCompletion().toImage()).isEqualTo(aloneB);
-            assertThat(j2.awaitCompletion().toImage()).isEqualTo(aloneB);
+            assertThat(j1.awaitCompletion()).isEqualTo(aloneB);
+            assertThat(j2.awaitCompletion()).isEqualTo(aloneB);
         }
     }
 
@@ -123,9 +123,9 @@ class EmbeddingTest {
     }
 
     @Test
-    void theSnapshotAsBufferedImageIsTheToneMappedFloats() {
+    void theSnapshotToneMapsToTheDisplayImage() {
         Image img = Renders.render(inCode(), RenderSettings.defaults().withSize(16, 12).withSamplesPerPixel(2));
-        BufferedImage bi = img.toBufferedImage();
+        BufferedImage bi = Tonemap.toBufferedImage(img, 0);
         assertThat(bi.getWidth()).isEqualTo(16);
         assertThat(bi.getHeight()).isEqualTo(12);
         float[] rgb = img.rgb();

@@ -2,14 +2,15 @@ package dev.strahl.render;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.camera.Camera;
+import dev.strahl.math.MutableRgb;
+import dev.strahl.scene.Camera;
 import dev.strahl.film.Film;
-import dev.strahl.film.Image;
+import dev.strahl.image.Image;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.Sphere;
 import dev.strahl.integrator.Integrator;
-import dev.strahl.material.Material;
-import dev.strahl.math.Rgb;
+import dev.strahl.scene.Material;
+import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Rng;
 import dev.strahl.scene.Scene;
 import org.joml.Vector3d;
@@ -18,14 +19,14 @@ import org.junit.jupiter.api.Test;
 /** NaN and infinite radiance never reaches the film: such samples count as black and are counted. */
 class InvalidSampleTest {
     private static final Scene SPHERE = Scene.builder()
-            .addSphere(new Sphere(new Vector3d(), 1), Material.diffuse("grey", Rgb.gray(0.5)))
+            .addSphere(new Vector3d(), 1, Material.diffuse("grey", Rgb.gray(0.5)))
             .camera(new Camera(new Vector3d(0, 0, 4), new Vector3d(), new Vector3d(0, 1, 0), 40))
             .build();
 
     /** 0.5 everywhere, except NaN in one channel in the left half of column 0 and +∞ in the right half of column 1. */
     private static final Integrator POISONED = () -> new Integrator.Worker() {
         @Override
-        public void radiance(Ray ray, Rng rng, Rgb.Mutable out) {
+        public void radiance(Ray ray, Rng rng, MutableRgb out) {
             out.set(0.5, 0.5, 0.5);
             double px = ray.d.x;                     // the camera looks down -z: x of the direction grows to the right
             if (px < -0.2) {
@@ -45,7 +46,7 @@ class InvalidSampleTest {
     void nanAndInfiniteSamplesAreCountedAndAddedAsBlack() throws Exception {
         RenderSettings settings = RenderSettings.defaults().withSize(40, 10).withSamplesPerPixel(8);
         try (RenderJob job = RenderJob.start(SPHERE, settings, POISONED, new RenderListener() {})) {
-            Film film = job.awaitCompletion();
+            Film film = TestJobs.awaitFilm(job);
             RenderStats stats = job.awaitStats();
             Image img = film.toImage();
             long expectedBad = 0;

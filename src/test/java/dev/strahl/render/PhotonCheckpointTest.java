@@ -4,9 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import dev.strahl.film.Film;
-import dev.strahl.integrator.IntegratorKind;
 import dev.strahl.scene.Scene;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.SceneLoader;
 import java.nio.file.Path;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -19,7 +18,7 @@ import org.junit.jupiter.api.io.TempDir;
  */
 class PhotonCheckpointTest {
     private static final RenderSettings SETTINGS = RenderSettings.defaults().withSize(40, 30).withSamplesPerPixel(6).withSeed(9)
-            .withIntegrator(IntegratorKind.PHOTON).withPhotons(5000);
+            .withIntegrator(IntegratorKind.PHOTON).withPhotons(new PhotonParameters(5000, 0));
     private static Scene scene;
     private static Film uninterrupted;
 
@@ -30,7 +29,7 @@ class PhotonCheckpointTest {
     static void renderOnceThrough() throws Exception {
         scene = SceneLoader.load(Path.of("scenes/cornell-sphere.json"));
         try (RenderJob job = RenderJob.start(scene, SETTINGS)) {
-            uninterrupted = job.awaitCompletion();
+            uninterrupted = TestJobs.awaitFilm(job);
         }
     }
 
@@ -43,11 +42,11 @@ class PhotonCheckpointTest {
                 Thread.sleep(1);
             }
             first.cancel();
-            cp.save(file, first.awaitCompletion(), first.invalidSamples(), first.elapsedSeconds());
+            cp.save(file, TestJobs.awaitFilm(first), first.invalidSamples(), first.elapsedSeconds());
         }
         Film restored = cp.restore(file).film();
-        try (RenderJob second = RenderJob.resume(scene, SETTINGS.withThreads(1), restored, new RenderListener() {})) {
-            Film resumed = second.awaitCompletion();
+        try (RenderJob second = TestJobs.resume(scene, SETTINGS.withThreads(1), restored, new RenderListener() {})) {
+            Film resumed = TestJobs.awaitFilm(second);
             assertThat(resumed.toImage().rgb()).isEqualTo(uninterrupted.toImage().rgb());
         }
     }
@@ -56,7 +55,7 @@ class PhotonCheckpointTest {
     void otherPhotonParametersAreRefused() throws Exception {
         Path file = dir.resolve("q.ck");
         Checkpoint.of(scene, SETTINGS).save(file, uninterrupted, 0, 0);
-        assertThatThrownBy(() -> Checkpoint.of(scene, SETTINGS.withPhotons(6000)).restore(file)).hasMessageContaining("photons");
-        assertThatThrownBy(() -> Checkpoint.of(scene, SETTINGS.withPhotonRadius(0.05)).restore(file)).hasMessageContaining("photonRadius");
+        assertThatThrownBy(() -> Checkpoint.of(scene, SETTINGS.withPhotons(new PhotonParameters(6000, 0))).restore(file)).hasMessageContaining("photons");
+        assertThatThrownBy(() -> Checkpoint.of(scene, SETTINGS.withPhotons(new PhotonParameters(SETTINGS.photons().photonsPerIteration(), 0.05))).restore(file)).hasMessageContaining("initialRadius");
     }
 }

@@ -3,13 +3,14 @@ package dev.strahl.render;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.catchThrowable;
 
-import dev.strahl.camera.Camera;
+import dev.strahl.math.MutableRgb;
+import dev.strahl.scene.Camera;
 import dev.strahl.film.Film;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.Sphere;
 import dev.strahl.integrator.Integrator;
-import dev.strahl.material.Material;
-import dev.strahl.math.Rgb;
+import dev.strahl.scene.Material;
+import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Rng;
 import dev.strahl.scene.Scene;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -19,7 +20,7 @@ import org.junit.jupiter.api.Test;
 /** A render thread that fails ends the job with its error, and only once every other thread has stopped too. */
 class RenderJobFailureTest {
     private static final Scene SPHERE = Scene.builder()
-            .addSphere(new Sphere(new Vector3d(), 1), Material.diffuse("grey", Rgb.gray(0.5)))
+            .addSphere(new Vector3d(), 1, Material.diffuse("grey", Rgb.gray(0.5)))
             .camera(new Camera(new Vector3d(0, 0, 4), new Vector3d(), new Vector3d(0, 1, 0), 40))
             .build();
 
@@ -39,7 +40,7 @@ class RenderJobFailureTest {
                 int samples;
 
                 @Override
-                public void radiance(Ray ray, Rng rng, Rgb.Mutable out) {
+                public void radiance(Ray ray, Rng rng, MutableRgb out) {
                     if (fails && ++samples == 100) {
                         throw error;
                     }

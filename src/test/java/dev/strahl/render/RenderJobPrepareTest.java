@@ -3,14 +3,15 @@ package dev.strahl.render;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import dev.strahl.camera.Camera;
-import dev.strahl.film.Image;
+import dev.strahl.math.MutableRgb;
+import dev.strahl.scene.Camera;
+import dev.strahl.image.Image;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.Sphere;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Parallel;
-import dev.strahl.material.Material;
-import dev.strahl.math.Rgb;
+import dev.strahl.scene.Material;
+import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Rng;
 import dev.strahl.scene.Scene;
 import java.util.List;
@@ -24,7 +25,7 @@ import org.junit.jupiter.api.Test;
 /** The render job's side of {@link Integrator#prepareSample}: one sample index per pass, prepared first, on the job's threads. */
 class RenderJobPrepareTest {
     private static final Scene SPHERE = Scene.builder()
-            .addSphere(new Sphere(new Vector3d(), 1), Material.diffuse("grey", Rgb.gray(0.5)))
+            .addSphere(new Vector3d(), 1, Material.diffuse("grey", Rgb.gray(0.5)))
             .camera(new Camera(new Vector3d(0, 0, 4), new Vector3d(), new Vector3d(0, 1, 0), 40))
             .build();
     private static final int CHUNKS = 37;
@@ -64,7 +65,7 @@ class RenderJobPrepareTest {
         public Worker newWorker() {
             Worker w = new Worker() {
                 @Override
-                public void radiance(Ray ray, Rng rng, Rgb.Mutable out) {
+                public void radiance(Ray ray, Rng rng, MutableRgb out) {
                     out.set(current, 0, 0);
                 }
 
@@ -90,7 +91,7 @@ class RenderJobPrepareTest {
             }
         };
         try (RenderJob job = RenderJob.start(SPHERE, settings, integrator, listener)) {
-            Image img = job.awaitCompletion().toImage();
+            Image img = job.awaitCompletion();
             // Mean of the prepared indices 0..8: every sample used the iteration prepared for it.
             assertThat(img.mean()[0]).isEqualTo(4.0);
         }

@@ -3,12 +3,12 @@ package dev.strahl.render;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import dev.strahl.camera.Camera;
+import dev.strahl.scene.Camera;
 import dev.strahl.film.Film;
-import dev.strahl.film.Image;
+import dev.strahl.image.Image;
 import dev.strahl.geometry.Sphere;
-import dev.strahl.material.Material;
-import dev.strahl.math.Rgb;
+import dev.strahl.scene.Material;
+import dev.strahl.image.Rgb;
 import dev.strahl.scene.Scene;
 import java.util.ArrayList;
 import java.util.List;
@@ -19,7 +19,7 @@ import org.junit.jupiter.api.Test;
 
 class RenderJobTest {
     private static final Scene SPHERE = Scene.builder()
-            .addSphere(new Sphere(new Vector3d(), 1), Material.diffuse("grey", Rgb.gray(0.5)))
+            .addSphere(new Vector3d(), 1, Material.diffuse("grey", Rgb.gray(0.5)))
             .camera(new Camera(new Vector3d(0, 0, 4), new Vector3d(), new Vector3d(0, 1, 0), 40))
             .build();
 
@@ -34,7 +34,7 @@ class RenderJobTest {
     void manyPassesReachTheRequestedSampleCountExactly() throws Exception {
         RenderSettings settings = RenderSettings.defaults().withSize(3, 2).withSamplesPerPixel(1000);
         try (RenderJob job = RenderJob.start(SPHERE, settings)) {
-            Film film = job.awaitCompletion();
+            Film film = TestJobs.awaitFilm(job);
             for (int y = 0; y < 2; y++) {
                 for (int x = 0; x < 3; x++) {
                     assertThat(film.sampleCount(x, y)).isEqualTo(1000);
@@ -59,7 +59,7 @@ class RenderJobTest {
             }
         };
         try (RenderJob job = RenderJob.start(SPHERE, RenderSettings.defaults().withSize(8, 8).withSamplesPerPixel(40), listener)) {
-            job.awaitCompletion();
+            TestJobs.awaitFilm(job);
         }
         assertThat(passes).containsExactly(1, 2, 4, 8, 16, 32, 40);
     }

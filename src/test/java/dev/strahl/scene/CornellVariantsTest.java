@@ -3,8 +3,12 @@ package dev.strahl.scene;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import dev.strahl.camera.Camera;
-import dev.strahl.film.Image;
+import dev.strahl.world.World;
+import dev.strahl.io.SceneLoader;
+import dev.strahl.io.obj.MtlReader;
+import dev.strahl.io.obj.ObjReaderTest;
+import dev.strahl.io.obj.MtlMaterial;
+import dev.strahl.image.Image;
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.SurfacePoint;
@@ -12,11 +16,10 @@ import dev.strahl.material.Bsdf;
 import dev.strahl.material.Dielectric;
 import dev.strahl.material.Glossy;
 import dev.strahl.material.Lambert;
-import dev.strahl.material.Material;
 import dev.strahl.material.Mirror;
-import dev.strahl.math.Rgb;
+import dev.strahl.image.Rgb;
 import dev.strahl.render.RenderSettings;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.render.HemisphereSampling;
 import dev.strahl.testing.Renders;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -81,8 +84,8 @@ class CornellVariantsTest {
     void loadsWithoutNotes(Variant v) throws Exception {
         Scene scene = SceneLoader.load(v.json());
         assertThat(scene.notes()).isEmpty();
-        assertThat(scene.environment()).isEqualTo(Rgb.BLACK);
-        assertThat(scene.lights().isEmpty()).isFalse();
+        assertThat(World.of(scene).environment()).isEqualTo(Rgb.BLACK);
+        assertThat(World.of(scene).lights().isEmpty()).isFalse();
     }
 
     @ParameterizedTest(name = "{0}")
@@ -175,7 +178,7 @@ class CornellVariantsTest {
     @MethodSource("variants")
     void everySurfaceCoversTheDataSetsAreaAndBounds(Variant v) throws Exception {
         Scene scene = SceneLoader.load(v.json());
-        Geometry g = scene.geometry();
+        Geometry g = World.of(scene).geometry();
         DataObj data = DataObj.read(dataFile(v, ".obj"));
         assertThat(data.misindexedBottoms).as("box bottoms of the data that repeat a side face").isEqualTo(v.misindexedBottoms());
 
@@ -206,7 +209,7 @@ class CornellVariantsTest {
     @MethodSource("variants")
     void analyticSpheresFitTheDataSetsTessellatedOnes(Variant v) throws Exception {
         Scene scene = SceneLoader.load(v.json());
-        Geometry g = scene.geometry();
+        Geometry g = World.of(scene).geometry();
         DataObj data = DataObj.read(dataFile(v, ".obj"));
         assertThat(g.sphereCount()).isEqualTo(v.spheres().size());
         for (String name : v.spheres()) {
@@ -235,7 +238,7 @@ class CornellVariantsTest {
     @MethodSource("variants")
     void boxesAreClosedAndTheRoomAndLightAreNot(Variant v) throws Exception {
         Scene scene = SceneLoader.load(v.json());
-        Geometry g = scene.geometry();
+        Geometry g = World.of(scene).geometry();
         Set<String> closed = new TreeSet<>(), open = new TreeSet<>();
         for (int t = 0; t < g.triangleCount(); t++) {
             (g.isClosed(t) ? closed : open).add(nameOf(scene, t));
@@ -251,7 +254,7 @@ class CornellVariantsTest {
     @MethodSource("variants")
     void wallsFaceInwardsAndTheLightFacesDown(Variant v) throws Exception {
         Scene scene = SceneLoader.load(v.json());
-        Geometry g = scene.geometry();
+        Geometry g = World.of(scene).geometry();
         Vector3d middle = new Vector3d(0, v.ceiling() / 2, 0);
         SurfacePoint sp = new SurfacePoint();
         Set<String> seen = new HashSet<>();
@@ -334,7 +337,7 @@ class CornellVariantsTest {
         }
         double max = Math.max(m.kd().r() + m.ks().r(), Math.max(m.kd().g() + m.ks().g(), m.kd().b() + m.ks().b()));
         double scale = max > 1 ? 1 / max : 1;
-        return new Glossy(m.kd().scale(scale), m.ks().scale(scale), Math.sqrt(2 / (m.ns() + 2)), HemisphereSampling.COSINE);
+        return new Glossy(m.kd().scale(scale), m.ks().scale(scale), Math.sqrt(2 / (m.ns() + 2)), false);
     }
 
     /** Same kind of BSDF with the same parameters up to the round-off of parsing and scaling. */
@@ -370,12 +373,12 @@ class CornellVariantsTest {
     }
 
     private static String nameOf(Scene scene, int prim) {
-        return scene.materials().get(scene.geometry().material(prim)).name();
+        return scene.materials().get(World.of(scene).geometry().material(prim)).name();
     }
 
     private static int count(Scene scene, String name) {
         int n = 0;
-        for (int t = 0; t < scene.geometry().triangleCount(); t++) {
+        for (int t = 0; t < World.of(scene).geometry().triangleCount(); t++) {
             n += nameOf(scene, t).equals(name) ? 1 : 0;
         }
         return n;

@@ -3,10 +3,11 @@ package dev.strahl.scene;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import dev.strahl.camera.Camera;
-import dev.strahl.film.Image;
-import dev.strahl.geometry.TriangleMesh;
-import dev.strahl.material.Material;
+import dev.strahl.io.SceneLoader;
+import dev.strahl.io.obj.MtlMaterial;
+import dev.strahl.io.obj.ObjModel;
+import dev.strahl.io.obj.ObjReader;
+import dev.strahl.image.Image;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.testing.Renders;
 import java.nio.file.Path;
@@ -44,7 +45,7 @@ class FarFromOriginTest {
         Scene.Builder b = Scene.builder();
         List<Material> palette = new ArrayList<>();
         for (MtlMaterial m : model.materials()) {
-            palette.add(SceneLoader.toMaterial(m, b));
+            palette.add(m.toMaterial(b::note));
         }
         b.addMesh(moved, model.triangleMaterial(), palette);
         Vector3d shift = new Vector3d(offset, offset, offset);

@@ -5,7 +5,6 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
 import dev.strahl.geometry.Sphere;
-import dev.strahl.geometry.TriangleMesh;
 import org.joml.Vector3d;
 import org.junit.jupiter.api.Test;
 

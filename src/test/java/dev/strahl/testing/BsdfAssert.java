@@ -1,8 +1,9 @@
 package dev.strahl.testing;
 
+import dev.strahl.math.MutableRgb;
 import dev.strahl.material.Bsdf;
 import dev.strahl.material.BsdfSample;
-import dev.strahl.math.Rgb;
+import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Warp;
 import java.util.Locale;
 import java.util.SplittableRandom;
@@ -108,7 +109,7 @@ public final class BsdfAssert {
     public static void assertSampleConsistent(Bsdf bsdf, Vector3dc wo, int sampleCount, long seed) {
         SplittableRandom random = new SplittableRandom(seed);
         BsdfSample s = new BsdfSample();
-        Rgb.Mutable f = new Rgb.Mutable();
+        MutableRgb f = new MutableRgb();
         for (int i = 0; i < sampleCount; i++) {
             double uc = random.nextDouble(), u1 = random.nextDouble(), u2 = random.nextDouble();
             if (!bsdf.sample(wo, uc, u1, u2, s)) {
@@ -128,7 +129,7 @@ public final class BsdfAssert {
             bsdf.eval(wo, s.wi, f);
             double c = Math.abs(s.wi.z) / s.pdf;
             check(close(f.r * c, s.weight.r) && close(f.g * c, s.weight.g) && close(f.b * c, s.weight.b),
-                    () -> "weight differs from eval·|cosθi|/pdf = " + new Rgb.Mutable(f.r * c, f.g * c, f.b * c) + ": " + at.get());
+                    () -> "weight differs from eval·|cosθi|/pdf = " + new MutableRgb(f.r * c, f.g * c, f.b * c) + ": " + at.get());
         }
     }
 
@@ -136,7 +137,7 @@ public final class BsdfAssert {
     public static void assertPdfCoversEval(Bsdf bsdf, Vector3dc wo, int directions, long seed) {
         SplittableRandom random = new SplittableRandom(seed);
         Vector3d wi = new Vector3d();
-        Rgb.Mutable f = new Rgb.Mutable();
+        MutableRgb f = new MutableRgb();
         for (int i = 0; i < directions; i++) {
             Warp.uniformSphere(random.nextDouble(), random.nextDouble(), wi);
             bsdf.eval(wo, wi, f);
@@ -160,7 +161,7 @@ public final class BsdfAssert {
     public static void assertReciprocal(Bsdf bsdf, int pairs, long seed) {
         SplittableRandom random = new SplittableRandom(seed);
         Vector3d wo = new Vector3d(), wi = new Vector3d();
-        Rgb.Mutable a = new Rgb.Mutable(), b = new Rgb.Mutable();
+        MutableRgb a = new MutableRgb(), b = new MutableRgb();
         int checked = 0;
         while (checked < pairs) {
             Warp.uniformSphere(random.nextDouble(), random.nextDouble(), wo);
@@ -247,7 +248,7 @@ public final class BsdfAssert {
     public static Estimate albedoByEval(Bsdf bsdf, Vector3dc wo, int sampleCount, long seed) {
         SplittableRandom random = new SplittableRandom(seed);
         Vector3d wi = new Vector3d();
-        Rgb.Mutable f = new Rgb.Mutable();
+        MutableRgb f = new MutableRgb();
         Accumulator acc = new Accumulator();
         for (int i = 0; i < sampleCount; i++) {
             Warp.uniformSphere(random.nextDouble(), random.nextDouble(), wi);

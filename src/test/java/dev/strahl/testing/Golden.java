@@ -1,11 +1,12 @@
 package dev.strahl.testing;
 
+import dev.strahl.world.World;
 import dev.strahl.accel.Bvh;
 import dev.strahl.accel.TraversalStack;
 import dev.strahl.camera.PinholeRays;
-import dev.strahl.film.Image;
-import dev.strahl.film.ImageWriters;
-import dev.strahl.film.PfmReader;
+import dev.strahl.image.Image;
+import dev.strahl.io.ImageWriters;
+import dev.strahl.io.image.PfmReader;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.SurfacePoint;
@@ -51,8 +52,8 @@ public final class Golden {
     /** The face regions of the scene as seen by its camera at the given size. */
     public static List<Region> faceRegions(Scene scene, int width, int height) {
         int sub = 4;
-        PinholeRays rays = scene.camera().rays(width * sub, height * sub);
-        Bvh bvh = scene.bvh();
+        PinholeRays rays = Meshes.rays(scene.camera(), width * sub, height * sub);
+        Bvh bvh = World.of(scene).bvh();
         Ray ray = new Ray();
         Hit hit = new Hit();
         SurfacePoint sp = new SurfacePoint();
@@ -67,7 +68,7 @@ public final class Golden {
                     hit.reset();
                     String f = "background";
                     if (bvh.intersect(ray, hit, stack, false)) {
-                        scene.geometry().surface(ray, hit, sp);
+                        World.of(scene).geometry().surface(ray, hit, sp);
                         f = faceName(scene, sp);
                     }
                     if (face == null) {

@@ -1,6 +1,9 @@
 package dev.strahl.testing;
 
-import dev.strahl.geometry.TriangleMesh;
+import dev.strahl.camera.PinholeRays;
+import dev.strahl.geometry.Geometry;
+import dev.strahl.scene.Camera;
+import dev.strahl.scene.TriangleMesh;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -68,5 +71,22 @@ public final class Meshes {
     private static double[] normalize(double[] p) {
         double l = Math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
         return new double[] {p[0] / l, p[1] / l, p[2] / l};
+    }
+
+    /** Adds a mesh to a geometry under construction, all its triangles with one flag (closed or not). */
+    public static Geometry.Builder add(Geometry.Builder builder, TriangleMesh mesh, int[] materials, boolean closed) {
+        byte[] flags = new byte[mesh.triangleCount()];
+        java.util.Arrays.fill(flags, closed ? Geometry.CLOSED : 0);
+        return add(builder, mesh, materials, flags);
+    }
+
+    /** Adds a mesh to a geometry under construction with per-triangle flags. */
+    public static Geometry.Builder add(Geometry.Builder builder, TriangleMesh mesh, int[] materials, byte[] flags) {
+        return builder.addMesh(mesh.positions(), mesh.indices(), mesh.normals(), materials, flags);
+    }
+
+    /** The camera's ray generator for a film size. */
+    public static PinholeRays rays(Camera c, int width, int height) {
+        return new PinholeRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), width, height);
     }
 }

@@ -1,6 +1,6 @@
 package dev.strahl.testing;
 
-import dev.strahl.film.Image;
+import dev.strahl.image.Image;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.scene.Scene;
@@ -12,7 +12,7 @@ public final class Renders {
     /** Renders to completion and returns the mean image. */
     public static Image render(Scene scene, RenderSettings settings) {
         try (RenderJob job = RenderJob.start(scene, settings)) {
-            return job.awaitCompletion().toImage();
+            return job.awaitCompletion();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new AssertionError("interrupted", e);

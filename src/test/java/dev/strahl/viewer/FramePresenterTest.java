@@ -3,7 +3,7 @@ package dev.strahl.viewer;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import dev.strahl.film.Image;
+import dev.strahl.image.Image;
 import dev.strahl.film.Tonemap;
 import java.awt.image.BufferedImage;
 import java.util.concurrent.Semaphore;

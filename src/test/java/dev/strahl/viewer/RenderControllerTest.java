@@ -3,13 +3,13 @@ package dev.strahl.viewer;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import dev.strahl.film.Image;
-import dev.strahl.integrator.IntegratorKind;
+import dev.strahl.image.Image;
+import dev.strahl.render.IntegratorKind;
 import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
-import dev.strahl.sampling.HemisphereSampling;
+import dev.strahl.render.HemisphereSampling;
 import dev.strahl.scene.Scene;
-import dev.strahl.scene.SceneLoader;
+import dev.strahl.io.SceneLoader;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -29,6 +29,7 @@ class RenderControllerTest {
         final RenderSettings settings;
         final RenderListener listener;
         volatile boolean cancelled;
+        volatile boolean paused;
 
         FakeJob(Scene scene, RenderSettings settings, RenderListener listener) {
             this.scene = scene;
@@ -36,22 +37,24 @@ class RenderControllerTest {
             this.listener = listener;
         }
 
-        /** Reports a finished pass (on the calling thread, which the controller may hold). */
+        /** Reports a finished pass (on the calling thread: the controller never holds it). */
         void pass(int spp) {
             listener.passCompleted(spp, new Image(settings.width(), settings.height(), new float[3 * settings.width() * settings.height()]));
-        }
-
-        /** Reports a pass on a new thread and returns it, perhaps held by the controller. */
-        Thread passInBackground(int spp) throws InterruptedException {
-            Thread t = new Thread(() -> pass(spp));
-            t.start();
-            t.join(200);
-            return t;
         }
 
         @Override
         public void cancel() {
             cancelled = true;
+        }
+
+        @Override
+        public void pause() {
+            paused = true;
+        }
+
+        @Override
+        public void resume() {
+            paused = false;
         }
 
         @Override
@@ -151,17 +154,17 @@ class RenderControllerTest {
     }
 
     @Test
-    void pauseHoldsTheJobAfterItsPassAndResumeLetsItGoOn() throws Exception {
+    void pauseHoldsTheJobAndResumeLetsItGoOn() throws Exception {
         job().pass(1);
         controller.togglePause();
         assertThat(controller.status().state()).isEqualTo(RenderController.State.PAUSED);
-        Thread held = job().passInBackground(2);
-        assertThat(held.isAlive()).as("the job's thread is held at the pass boundary").isTrue();
+        assertThat(job().paused).as("the job is paused at once").isTrue();
+        job().pass(2);                          // a pass that was under way when the pause came
+        assertThat(job().paused).isTrue();
         assertThat(frames).hasSize(2);          // the pass that finished is still shown
         assertThat(jobs).hasSize(2);            // and its samples are kept: no new job
         controller.togglePause();
-        held.join(2000);
-        assertThat(held.isAlive()).isFalse();
+        assertThat(job().paused).isFalse();
         assertThat(controller.status().state()).isEqualTo(RenderController.State.RUNNING);
         assertThat(job().cancelled).isFalse();
     }
@@ -169,12 +172,11 @@ class RenderControllerTest {
     @Test
     void pausedTimeDoesNotCountAsRenderTime() throws Exception {
         now = TimeUnit.SECONDS.toNanos(2);
-        controller.togglePause();
-        Thread held = job().passInBackground(1);  // held from t = 2 s
+        controller.togglePause();               // paused from t = 2 s
+        job().pass(1);
         now = TimeUnit.SECONDS.toNanos(10);
         assertThat(controller.status().seconds()).isCloseTo(2, within(1e-9));
         controller.togglePause();
-        held.join(2000);
         now = TimeUnit.SECONDS.toNanos(11);
         assertThat(controller.status().seconds()).isCloseTo(3, within(1e-9));
     }
@@ -187,14 +189,14 @@ class RenderControllerTest {
             j.pass(spp);
         }
         assertThat(controller.status().state()).isEqualTo(RenderController.State.RUNNING);
-        Thread held = j.passInBackground(4);
-        assertThat(held.isAlive()).isTrue();
+        j.pass(4);
+        assertThat(j.paused).isTrue();
         assertThat(controller.status().state()).isEqualTo(RenderController.State.DONE);
         controller.togglePause();               // a finished render stays finished
         assertThat(controller.status().state()).isEqualTo(RenderController.State.DONE);
+        assertThat(j.paused).isTrue();
         controller.setStopAt(8);
-        held.join(2000);
-        assertThat(held.isAlive()).isFalse();
+        assertThat(j.paused).isFalse();
         assertThat(controller.status().state()).isEqualTo(RenderController.State.RUNNING);
         assertThat(job()).as("same job, samples kept").isSameAs(j);
         j.pass(5);
@@ -344,13 +346,11 @@ class RenderControllerTest {
     }
 
     @Test
-    void closeCancelsTheJobAndReleasesAHeldThread() throws Exception {
+    void closeCancelsTheJobAlsoWhenPaused() throws Exception {
         controller.togglePause();
-        Thread held = job().passInBackground(1);
-        assertThat(held.isAlive()).isTrue();
+        job().pass(1);
+        assertThat(job().paused).isTrue();
         controller.close();
-        held.join(2000);
-        assertThat(held.isAlive()).isFalse();
         assertThat(job().cancelled).isTrue();
         assertThat(controller.status().state()).isEqualTo(RenderController.State.CLOSED);
         controller.restart();
@@ -381,13 +381,11 @@ class RenderControllerTest {
                     return job;
                 }, frames::add, timer, () -> now);
         c.startBeforeDisplay();
-        Thread held = job().passInBackground(1);
-        assertThat(held.isAlive()).as("the glance waits for the window").isTrue();
+        job().pass(1);
+        assertThat(job().paused).as("the glance waits for the window").isTrue();
         assertThat(jobs).hasSize(1);
         assertThat(frames).as("but its image is shown").hasSize(1);
         c.displayReady();
-        held.join(2000);
-        assertThat(held.isAlive()).isFalse();
         assertThat(jobs).hasSize(2);
         assertThat(job().settings.width()).isEqualTo(64);
         c.close();

@@ -3,9 +3,9 @@ package dev.strahl.viewer;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import dev.strahl.integrator.IntegratorKind;
-import dev.strahl.sampling.HemisphereSampling;
-import dev.strahl.scene.SceneSettings;
+import dev.strahl.render.IntegratorKind;
+import dev.strahl.render.HemisphereSampling;
+import dev.strahl.io.json.SceneSettings;
 import java.awt.Dimension;
 import java.awt.GraphicsEnvironment;
 import java.awt.Point;

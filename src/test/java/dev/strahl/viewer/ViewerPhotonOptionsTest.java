@@ -3,11 +3,11 @@ package dev.strahl.viewer;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import dev.strahl.integrator.IntegratorKind;
-import dev.strahl.integrator.PhotonParameters;
-import dev.strahl.sampling.HemisphereSampling;
-import dev.strahl.scene.SceneSettings;
-import dev.strahl.scene.SceneSettings.Setting;
+import dev.strahl.render.IntegratorKind;
+import dev.strahl.render.PhotonParameters;
+import dev.strahl.render.HemisphereSampling;
+import dev.strahl.io.json.SceneSettings;
+import dev.strahl.io.json.SceneSettings.Setting;
 import java.nio.file.Path;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
@@ -20,23 +20,23 @@ class ViewerPhotonOptionsTest {
     void photonParametersReachTheRenderSettings() throws Exception {
         ViewerOptions o = new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PHOTON, 1, Theme.LIGHT, Set.of(), 5000, 0.03);
         assertThat(o.renderSettings().integrator()).isEqualTo(IntegratorKind.PHOTON);
-        assertThat(o.renderSettings().photonParameters()).isEqualTo(new PhotonParameters(5000, 0.03));
-        assertThat(ViewerOptions.defaults().renderSettings().photonParameters()).isEqualTo(PhotonParameters.defaults());
+        assertThat(o.renderSettings().photons()).isEqualTo(new PhotonParameters(5000, 0.03));
+        assertThat(ViewerOptions.defaults().renderSettings().photons()).isEqualTo(PhotonParameters.defaults());
         // A scene file's settings keep the photon parameters of the options.
-        assertThat(o.settingsFor(java.nio.file.Path.of("s.json"), dev.strahl.scene.SceneSettings.NONE).photonParameters())
+        assertThat(o.settingsFor(dev.strahl.io.json.SceneSettings.NONE).photons())
                 .isEqualTo(new PhotonParameters(5000, 0.03));
     }
 
     @Test
     void aSceneFilesPhotonKeysReplaceTheOptionsUnlessGiven() throws Exception {
-        SceneSettings file = new SceneSettings(null, null, null, null, null, "photon", null, null, 20_000, 0.125);
+        SceneSettings file = new SceneSettings(null, null, null, null, null, IntegratorKind.PHOTON, null, null, 20_000, 0.125);
         ViewerOptions none = new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT,
                 Set.of(), 5000, 0.03);
-        assertThat(none.settingsFor(SCENE, file).photonParameters()).isEqualTo(new PhotonParameters(20_000, 0.125));
-        assertThat(none.settingsFor(SCENE, file).integrator()).isEqualTo(IntegratorKind.PHOTON);
+        assertThat(none.settingsFor(file).photons()).isEqualTo(new PhotonParameters(20_000, 0.125));
+        assertThat(none.settingsFor(file).integrator()).isEqualTo(IntegratorKind.PHOTON);
         ViewerOptions given = new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT,
                 Set.of(Setting.PHOTONS, Setting.PHOTON_RADIUS), 5000, 0.03);
-        assertThat(given.settingsFor(SCENE, file).photonParameters()).as("--photons and --photon-radius given")
+        assertThat(given.settingsFor(file).photons()).as("--photons and --photon-radius given")
                 .isEqualTo(new PhotonParameters(5000, 0.03));
     }
 

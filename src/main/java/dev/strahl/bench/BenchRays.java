@@ -1,0 +1,202 @@
+package dev.strahl.bench;
+
+import dev.strahl.accel.Bvh;
+import dev.strahl.accel.TraversalStack;
+import dev.strahl.scene.Camera;
+import dev.strahl.camera.PinholeRays;
+import dev.strahl.geometry.Aabb;
+import dev.strahl.geometry.Geometry;
+import dev.strahl.geometry.Hit;
+import dev.strahl.geometry.Ray;
+import dev.strahl.geometry.SurfacePoint;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Future;
+import org.joml.Vector3d;
+
+/**
+ * The ray sets and kernels of {@code strahl bench}: rays made in advance (so that making them is
+ * not timed), traced on a pool of threads, and a brute-force check of a subset so that a broken
+ * fast path cannot win.
+ */
+public final class BenchRays {
+    private BenchRays() {}
+
+    /** Rays in flat arrays: origin, direction, tMax (7 doubles per ray); shadow rays ask only for any hit. */
+    public record RaySet(String name, double[] data, int count, boolean anyHit) {}
+
+    /** What tracing a set gave: wall time, hits, and an order-independent checksum of the hit primitives. */
+    public record Result(double seconds, long hits, long checksum) {}
+
+    /** Camera rays through jittered points of a width × height film, {@code spp} per pixel. */
+    public static RaySet primary(Camera camera, int width, int height, int spp, long seed) {
+        PinholeRays rays = new PinholeRays(camera.lookFrom(), camera.lookAt(), camera.up(), camera.fovDegrees(), width, height);
+        SplittableRandom random = new SplittableRandom(seed);
+        int n = width * height * spp;
+        double[] data = new double[7 * n];
+        Ray ray = new Ray();
+        int k = 0;
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                for (int s = 0; s < spp; s++) {
+                    rays.generate(x + random.nextDouble(), y + random.nextDouble(), ray);
+                    k = put(data, k, ray.o, ray.d, Double.POSITIVE_INFINITY);
+                }
+            }
+        }
+        return new RaySet("primary", data, n, false);
+    }
+
+    /** Origins uniform in the box, directions uniform on the sphere. */
+    public static RaySet incoherent(Aabb box, int n, long seed) {
+        SplittableRandom random = new SplittableRandom(seed);
+        double[] data = new double[7 * n];
+        Vector3d o = new Vector3d(), d = new Vector3d();
+        int k = 0;
+        for (int i = 0; i < n; i++) {
+            o.set(box.minX + random.nextDouble() * (box.maxX - box.minX), box.minY + random.nextDouble() * (box.maxY - box.minY),
+                    box.minZ + random.nextDouble() * (box.maxZ - box.minZ));
+            double z = 1 - 2 * random.nextDouble(), r = Math.sqrt(Math.max(0, 1 - z * z)), phi = 2 * Math.PI * random.nextDouble();
+            d.set(r * Math.cos(phi), r * Math.sin(phi), z);
+            k = put(data, k, o, d, Double.POSITIVE_INFINITY);
+        }
+        return new RaySet("incoherent", data, n, false);
+    }
+
+    /**
+     * Shadow rays between pairs of random surface points (primitives chosen uniformly, points
+     * uniform on them), both ends moved off their surfaces as the renderer does.
+     */
+    public static RaySet shadow(Geometry g, int n, long seed) {
+        SplittableRandom random = new SplittableRandom(seed);
+        double[] data = new double[7 * n];
+        SurfacePoint a = new SurfacePoint(), b = new SurfacePoint();
+        Vector3d o = new Vector3d(), target = new Vector3d(), d = new Vector3d(), back = new Vector3d();
+        int k = 0;
+        for (int i = 0; i < n; i++) {
+            double dist;
+            do {
+                g.samplePoint(random.nextInt(g.primitiveCount()), random.nextDouble(), random.nextDouble(), a);
+                g.samplePoint(random.nextInt(g.primitiveCount()), random.nextDouble(), random.nextDouble(), b);
+                d.set(b.p).sub(a.p).normalize();
+                a.spawnOrigin(d, o);
+                back.set(d).negate();
+                b.spawnOrigin(back, target);
+                dist = target.distance(o);
+            } while (!(dist > 0));
+            d.set(target).sub(o).div(dist);
+            k = put(data, k, o, d, dist);
+        }
+        return new RaySet("shadow", data, n, true);
+    }
+
+    private static int put(double[] data, int k, Vector3d o, Vector3d d, double tMax) {
+        data[k] = o.x;
+        data[k + 1] = o.y;
+        data[k + 2] = o.z;
+        data[k + 3] = d.x;
+        data[k + 4] = d.y;
+        data[k + 5] = d.z;
+        data[k + 6] = tMax;
+        return k + 7;
+    }
+
+    private static void load(double[] data, int i, Ray ray) {
+        int k = 7 * i;
+        ray.o.set(data[k], data[k + 1], data[k + 2]);
+        ray.d.set(data[k + 3], data[k + 4], data[k + 5]);
+        ray.tMax = data[k + 6];
+    }
+
+    /** Traces the set on {@code threads} threads of the pool, each a contiguous share. */
+    public static Result trace(Bvh bvh, RaySet set, int threads, ExecutorService pool) throws InterruptedException {
+        List<Callable<long[]>> tasks = new ArrayList<>();
+        for (int t = 0; t < threads; t++) {
+            int from = (int) ((long) set.count() * t / threads), to = (int) ((long) set.count() * (t + 1) / threads);
+            tasks.add(() -> traceRange(bvh, set, from, to));
+        }
+        long start = System.nanoTime();
+        List<Future<long[]>> futures = pool.invokeAll(tasks);
+        double seconds = (System.nanoTime() - start) * 1e-9;
+        long hits = 0, checksum = 0;
+        for (Future<long[]> f : futures) {
+            try {
+                hits += f.get()[0];
+                checksum += f.get()[1];
+            } catch (ExecutionException e) {
+                throw new IllegalStateException("ray kernel failed: " + e.getCause(), e.getCause());
+            }
+        }
+        return new Result(seconds, hits, checksum);
+    }
+
+    private static long[] traceRange(Bvh bvh, RaySet set, int from, int to) {
+        Ray ray = new Ray();
+        Hit hit = new Hit();
+        TraversalStack stack = Bvh.newStack();
+        double[] data = set.data();
+        long hits = 0, checksum = 0;
+        if (set.anyHit()) {
+            for (int i = from; i < to; i++) {
+                load(data, i, ray);
+                if (bvh.occluded(ray, stack)) {
+                    hits++;
+                    checksum += i;
+                }
+            }
+        } else {
+            for (int i = from; i < to; i++) {
+                load(data, i, ray);
+                hit.reset();
+                if (bvh.intersect(ray, hit, stack, false)) {
+                    hits++;
+                    checksum += hit.prim + 1;
+                }
+            }
+        }
+        return new long[] {hits, checksum};
+    }
+
+    /**
+     * Compares the BVH with a loop over every primitive on {@code samples} rays spread over the
+     * set: the same hit or miss, the same primitive (or one at the same distance, a tie), the same
+     * occlusion answer. Returns a description of the first difference, or null.
+     */
+    public static String check(Bvh bvh, RaySet set, int samples) {
+        Geometry g = bvh.geometry();
+        TraversalStack stack = Bvh.newStack();
+        Ray r = new Ray(), rb = new Ray();
+        Hit hit = new Hit(), brute = new Hit();
+        int step = Math.max(1, set.count() / Math.max(1, samples));
+        for (int i = 0; i < set.count(); i += step) {
+            load(set.data(), i, r);
+            load(set.data(), i, rb);
+            if (set.anyHit()) {
+                boolean expected = g.occludes(0, g.triangleCount(), rb)
+                        || (g.sphereCount() > 0 && g.occludes(g.triangleCount(), g.sphereCount(), rb));
+                if (bvh.occluded(r, stack) != expected) {
+                    return set.name() + " ray " + i + ": BVH says " + !expected + ", brute force " + expected;
+                }
+                continue;
+            }
+            hit.reset();
+            brute.reset();
+            boolean found = bvh.intersect(r, hit, stack, false);
+            boolean expected = g.intersect(0, g.triangleCount(), rb, brute, false);
+            if (g.sphereCount() > 0) {
+                expected |= g.intersect(g.triangleCount(), g.sphereCount(), rb, brute, false);
+            }
+            if (found != expected) {
+                return set.name() + " ray " + i + ": BVH " + (found ? "hits" : "misses") + ", brute force " + (expected ? "hits" : "misses");
+            }
+            if (found && hit.prim != brute.prim && Math.abs(hit.t - brute.t) > 1e-12 * brute.t) {
+                return set.name() + " ray " + i + ": BVH hits primitive " + hit.prim + " at " + hit.t + ", brute force " + brute.prim + " at " + brute.t;
+            }
+        }
+        return null;
+    }
+}

@@ -1,0 +1,48 @@
+package dev.strahl.io;
+
+import dev.strahl.io.json.SceneFile;
+import dev.strahl.render.RenderSettings;
+import dev.strahl.scene.Scene;
+import dev.strahl.scene.SceneException;
+import java.nio.file.Path;
+
+/**
+ * Loads a scene from a file: a strahl scene file ({@code .json}, see docs/scene-format.md), a
+ * Wavefront OBJ with its MTL materials ({@code .obj}) or a PLY mesh ({@code .ply}, ASCII or
+ * binary, grey diffuse). An OBJ or PLY has no camera: the scene is framed from +Z.
+ *
+ * <pre>{@code
+ * Path file = Path.of("scenes/cornell-box.json");
+ * Scene scene = SceneLoader.load(file);
+ * RenderSettings settings = SceneLoader.settings(file, RenderSettings.defaults());  // the file's film and integrator keys
+ * }</pre>
+ */
+public final class SceneLoader {
+    private SceneLoader() {}
+
+    /**
+     * Loads and builds the scene in {@code file}; the format follows the file's extension, in any case.
+     *
+     * @param file a {@code .json}, {@code .obj} or {@code .ply} file
+     * @return the scene
+     * @throws SceneException if the file is missing, unreadable or malformed: the message names
+     *                        the file and, where known, the line
+     */
+    public static Scene load(Path file) throws SceneException {
+        return SceneFile.load(file).scene();
+    }
+
+    /**
+     * Render settings with what a scene file says about rendering (its {@code film} and
+     * {@code integrator} keys) on top of {@code base}; a mesh file says nothing and gives
+     * {@code base}. Reads the file again: load the scene first.
+     *
+     * @param file a {@code .json}, {@code .obj} or {@code .ply} file
+     * @param base the settings to start from, e.g. {@link RenderSettings#defaults()}
+     * @return the combined settings
+     * @throws SceneException if the file is missing, unreadable or malformed
+     */
+    public static RenderSettings settings(Path file, RenderSettings base) throws SceneException {
+        return SceneFile.load(file).settings().applyTo(base);
+    }
+}

@@ -1,0 +1,321 @@
+package dev.strahl.io.json;
+
+import dev.strahl.scene.Transform;
+import dev.strahl.io.text.TextLines;
+import dev.strahl.scene.Scene;
+import dev.strahl.scene.SceneException;
+import dev.strahl.scene.Camera;
+import dev.strahl.scene.TriangleMesh;
+import dev.strahl.image.Rgb;
+import dev.strahl.render.HemisphereSampling;
+import dev.strahl.render.RenderSettings;
+import dev.strahl.render.PhotonParameters;
+import dev.strahl.render.IntegratorKind;
+import dev.strahl.io.json.SceneDescription.MaterialSpec;
+import dev.strahl.io.json.SceneDescription.ShapeSpec;
+import java.io.IOException;
+import java.nio.charset.CharacterCodingException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import org.joml.Vector3d;
+
+/**
+ * Reads a strahl scene file (JSON; every key is documented in docs/scene-format.md and described
+ * by docs/scene.schema.json) into a {@link SceneDescription}, then builds the scene. Strict:
+ * unknown keys, wrong types, missing required keys, out-of-range values, unknown material names
+ * and missing mesh files are errors naming the file, the line and the key.
+ */
+public final class JsonSceneReader {
+    /** The material types of the scene file and the keys each accepts. */
+    static final Map<String, Set<String>> MATERIAL_KEYS = Map.of(
+            "diffuse", Set.of("type", "albedo", "emission"),
+            "mirror", Set.of("type", "reflectance"),
+            "dielectric", Set.of("type", "ior"),
+            "glossy", Set.of("type", "diffuse", "specular", "exponent", "emission"));
+    /** The shape types and the keys each accepts. */
+    static final Map<String, Set<String>> SHAPE_KEYS = Map.of(
+            "sphere", Set.of("type", "center", "radius", "material", "transform"),
+            "mesh", Set.of("type", "file", "material", "transform"),
+            "triangles", Set.of("type", "positions", "indices", "normals", "material", "transform"));
+    static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment");
+    static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov");
+    static final Set<String> FILM_KEYS = Set.of("width", "height");
+    static final Set<String> INTEGRATOR_KEYS = Set.of("type", "spp", "maxDepth", "seed", "lightSamples", "hemisphere", "photons",
+            "photonRadius");
+
+    private final Path file;
+    private final JsonValues v;
+    /** Material names used by shapes, with the line of the use, checked once all materials are known. */
+    private final List<Map.Entry<String, Integer>> materialUses = new ArrayList<>();
+
+    private JsonSceneReader(Path file) {
+        this.file = file;
+        this.v = new JsonValues(file);
+    }
+
+    /** Reads and builds the scene in {@code file}, with what it says about rendering. */
+    public static SceneFile read(Path file) throws SceneException {
+        SceneDescription d = parse(file);
+        return new SceneFile(d.build(folder(file)), d.settings());
+    }
+
+    /** Reads the scene file into its description, checking everything but the contents of mesh files. */
+    static SceneDescription parse(Path file) throws SceneException {
+        String text;
+        try {
+            text = Files.readString(file, StandardCharsets.UTF_8);
+        } catch (CharacterCodingException e) {
+            throw new SceneException(file, TextLines.lineOfInvalidUtf8(file, 1), "not a text scene file (invalid UTF-8)");
+        } catch (IOException e) {
+            throw TextLines.cannotRead(file, e);
+        }
+        return new JsonSceneReader(file).scene(JsonNode.parse(file, text));
+    }
+
+    static Path folder(Path file) {
+        return file.toAbsolutePath().getParent();
+    }
+
+    private SceneDescription scene(JsonNode root) throws SceneException {
+        Map<String, JsonNode> top = v.object(root, "scene");
+        v.allowOnly(top, "scene", TOP_KEYS);
+        Map<String, MaterialSpec> materials = new LinkedHashMap<>();
+        if (top.containsKey("materials")) {
+            for (var e : v.object(top.get("materials"), "materials").entrySet()) {
+                materials.put(e.getKey(), material(e.getKey(), e.getValue()));
+            }
+        }
+        JsonNode shapesNode = v.require(top, "shapes", root);
+        List<JsonNode> list = v.array(shapesNode, "shapes");
+        if (list.isEmpty()) {
+            throw new SceneException(file, shapesNode.line, "'shapes' is empty: the scene has no geometry");
+        }
+        List<ShapeSpec> shapes = new ArrayList<>();
+        for (JsonNode shape : list) {
+            shapes.add(shape(shape));
+        }
+        for (var use : materialUses) {
+            if (!materials.containsKey(use.getKey())) {
+                throw new SceneException(file, use.getValue(), "unknown material '" + use.getKey() + "' (define it under 'materials')");
+            }
+        }
+        Camera camera = top.containsKey("camera") ? camera(top.get("camera")) : null;
+        Rgb environment = top.containsKey("environment") ? v.color(top.get("environment"), "environment") : null;
+        SceneSettings settings = settings(top.get("film"), top.get("integrator"));
+        return new SceneDescription(camera, settings, materials, shapes, environment);
+    }
+
+    // ---- materials -----------------------------------------------------------------------------
+
+    private MaterialSpec material(String name, JsonNode node) throws SceneException {
+        String key = "materials." + name;
+        Map<String, JsonNode> m = v.object(node, key);
+        String type = v.string(v.require(m, "type", node), key + ".type");
+        Set<String> keys = MATERIAL_KEYS.get(type);
+        if (keys == null) {
+            throw new SceneException(file, m.get("type").line, "unknown material type '" + type + "' for '" + key
+                    + "' (known: " + JsonValues.sorted(MATERIAL_KEYS.keySet()) + ")");
+        }
+        if (m.containsKey("emission") && !keys.contains("emission")) {
+            throw new SceneException(file, m.get("emission").line, "'" + key + ".emission': a " + type
+                    + " material cannot emit light; emission is allowed on diffuse and glossy materials (a one-sided area light)");
+        }
+        v.allowOnly(m, key + " of type " + type, keys);
+        switch (type) {
+            case "mirror":
+                return new SceneDescription.Mirror(m.containsKey("reflectance") ? v.unitColor(m.get("reflectance"), key + ".reflectance") : Rgb.WHITE);
+            case "dielectric": {
+                double ior = 1.5;
+                if (m.containsKey("ior")) {
+                    ior = v.number(m.get("ior"), key + ".ior");
+                    if (!(ior > 0)) {
+                        throw new SceneException(file, m.get("ior").line, "'" + key + ".ior' must be positive, got " + JsonValues.format(ior));
+                    }
+                }
+                return new SceneDescription.Dielectric(ior);
+            }
+            case "glossy": {
+                Rgb kd = m.containsKey("diffuse") ? v.unitColor(m.get("diffuse"), key + ".diffuse") : Rgb.BLACK;
+                Rgb ks = v.unitColor(v.require(m, "specular", node), key + ".specular");
+                double ns = v.number(v.require(m, "exponent", node), key + ".exponent");
+                if (!(ns >= 0)) {
+                    throw new SceneException(file, m.get("exponent").line, "'" + key + ".exponent' must be >= 0, got " + JsonValues.format(ns));
+                }
+                return new SceneDescription.Glossy(kd, ks, ns, emission(m, key));
+            }
+            default:
+                return new SceneDescription.Diffuse(m.containsKey("albedo") ? v.unitColor(m.get("albedo"), key + ".albedo") : Rgb.gray(0.8),
+                        emission(m, key));
+        }
+    }
+
+    private Rgb emission(Map<String, JsonNode> m, String key) throws SceneException {
+        return m.containsKey("emission") ? v.color(m.get("emission"), key + ".emission") : Rgb.BLACK;
+    }
+
+    // ---- shapes --------------------------------------------------------------------------------
+
+    private ShapeSpec shape(JsonNode node) throws SceneException {
+        Map<String, JsonNode> s = v.object(node, "shapes[]");
+        String type = v.string(v.require(s, "type", node), "shapes[].type");
+        Set<String> keys = SHAPE_KEYS.get(type);
+        if (keys == null) {
+            throw new SceneException(file, s.get("type").line, "unknown shape type '" + type + "' (known: "
+                    + JsonValues.sorted(SHAPE_KEYS.keySet()) + ")");
+        }
+        v.allowOnly(s, "shapes[] of type " + type, keys);
+        Transform transform = s.containsKey("transform") ? TransformReader.read(v, s.get("transform")) : Transform.IDENTITY;
+        switch (type) {
+            case "mesh": {
+                JsonNode fileNode = v.require(s, "file", node);
+                String name = v.string(fileNode, "shapes[].file");
+                Path mesh;
+                try {
+                    mesh = folder(file).resolve(name);
+                } catch (java.nio.file.InvalidPathException e) {
+                    throw new SceneException(file, fileNode.line, "'shapes[].file' is not a valid path: " + name);
+                }
+                String lower = name.toLowerCase(Locale.ROOT);
+                if (!lower.endsWith(".obj") && !lower.endsWith(".ply")) {
+                    throw new SceneException(file, fileNode.line, "'shapes[].file' must name an .obj or .ply file, got '" + name + "'");
+                }
+                if (!Files.isRegularFile(mesh)) {
+                    throw new SceneException(file, fileNode.line, "mesh file not found: " + mesh);
+                }
+                return new SceneDescription.MeshShape(name, s.containsKey("material") ? materialName(s.get("material")) : null, transform);
+            }
+            case "sphere": {
+                Vector3d center = v.vector(v.require(s, "center", node), "shapes[].center");
+                double radius = v.number(v.require(s, "radius", node), "shapes[].radius");
+                if (!(radius > 0)) {
+                    throw new SceneException(file, s.get("radius").line, "'shapes[].radius' must be positive, got " + JsonValues.format(radius));
+                }
+                String material = materialName(v.require(s, "material", node));
+                if (!transform.isSimilarity()) {
+                    var m = transform.matrix();
+                    var axis = new Vector3d();
+                    throw new SceneException(file, s.get("transform").line, "'shapes[].transform': a sphere can only be translated,"
+                            + " rotated and scaled uniformly; this transform scales its axes by " + (float) m.getColumn(0, axis).length()
+                            + ", " + (float) m.getColumn(1, axis).length() + " and " + (float) m.getColumn(2, axis).length());
+                }
+                return new SceneDescription.SphereShape(center, radius, material, transform);
+            }
+            default:
+                return triangles(s, node, transform);
+        }
+    }
+
+    private ShapeSpec triangles(Map<String, JsonNode> s, JsonNode node, Transform transform) throws SceneException {
+        float[] positions = v.floats(v.require(s, "positions", node), "shapes[].positions");
+        JsonNode indexNode = v.require(s, "indices", node);
+        int[] indices = v.ints(indexNode, "shapes[].indices");
+        float[] normals = s.containsKey("normals") ? v.floats(s.get("normals"), "shapes[].normals") : null;
+        String material = materialName(v.require(s, "material", node));
+        if (positions.length % 3 != 0) {
+            throw new SceneException(file, s.get("positions").line, "'shapes[].positions' must hold x, y, z triples, got " + positions.length + " numbers");
+        }
+        if (indices.length == 0 || indices.length % 3 != 0) {
+            throw new SceneException(file, indexNode.line, "'shapes[].indices' must hold three vertex indices per triangle, got " + indices.length);
+        }
+        if (normals != null && normals.length != positions.length) {
+            throw new SceneException(file, s.get("normals").line, "'shapes[].normals' must have one x, y, z triple per vertex: "
+                    + normals.length + " numbers for " + positions.length / 3 + " vertices");
+        }
+        for (int i = 0; i < indices.length; i++) {
+            if (indices[i] < 0 || indices[i] >= positions.length / 3) {
+                throw new SceneException(file, indexNode.line, "'shapes[].indices[" + i + "]' = " + indices[i]
+                        + " is out of range (there are " + positions.length / 3 + " vertices)");
+            }
+        }
+        for (float p : positions) {
+            if (!Float.isFinite(p)) {
+                throw new SceneException(file, s.get("positions").line, "'shapes[].positions' must fit into floats, got " + p);
+            }
+        }
+        try {
+            transform.apply(new TriangleMesh(positions, indices, normals));   // the mesh itself is valid after the checks above
+        } catch (IllegalArgumentException e) {
+            throw new SceneException(file, s.get("transform").line, "'shapes[].transform': " + e.getMessage());
+        }
+        return new SceneDescription.TrianglesShape(positions, indices, normals, material, transform);
+    }
+
+    private String materialName(JsonNode node) throws SceneException {
+        String name = v.string(node, "shapes[].material");
+        materialUses.add(Map.entry(name, node.line));
+        return name;
+    }
+
+    // ---- camera, film, integrator ----------------------------------------------------------------
+
+    private Camera camera(JsonNode node) throws SceneException {
+        Map<String, JsonNode> c = v.object(node, "camera");
+        v.allowOnly(c, "camera", CAMERA_KEYS);
+        Vector3d from = v.vector(v.require(c, "lookFrom", node), "camera.lookFrom");
+        Vector3d at = v.vector(v.require(c, "lookAt", node), "camera.lookAt");
+        Vector3d up = c.containsKey("up") ? v.vector(c.get("up"), "camera.up") : new Vector3d(0, 1, 0);
+        double fov = c.containsKey("fov") ? v.number(c.get("fov"), "camera.fov") : 40;
+        try {
+            return new Camera(from, at, up, fov);
+        } catch (IllegalArgumentException e) {
+            throw new SceneException(file, node.line, "bad 'camera': " + e.getMessage());
+        }
+    }
+
+    private SceneSettings settings(JsonNode film, JsonNode integrator) throws SceneException {
+        Integer width = null, height = null, spp = null, maxDepth = null, lightSamples = null, photons = null;
+        Long seed = null;
+        Double photonRadius = null;
+        IntegratorKind type = null;
+        HemisphereSampling hemisphere = null;
+        if (film != null) {
+            Map<String, JsonNode> f = v.object(film, "film");
+            v.allowOnly(f, "film", FILM_KEYS);
+            width = f.containsKey("width") ? v.integer(f.get("width"), "film.width", 1, RenderSettings.MAX_SIZE) : null;
+            height = f.containsKey("height") ? v.integer(f.get("height"), "film.height", 1, RenderSettings.MAX_SIZE) : null;
+        }
+        if (integrator != null) {
+            Map<String, JsonNode> i = v.object(integrator, "integrator");
+            v.allowOnly(i, "integrator", INTEGRATOR_KEYS);
+            if (i.containsKey("type")) {
+                try {
+                    type = IntegratorKind.named(v.string(i.get("type"), "integrator.type"));
+                } catch (IllegalArgumentException e) {
+                    throw new SceneException(file, i.get("type").line, "'integrator.type': " + e.getMessage());
+                }
+            }
+            spp = i.containsKey("spp") ? v.integer(i.get("spp"), "integrator.spp", 1, Integer.MAX_VALUE) : null;
+            if (i.containsKey("maxDepth")) {
+                maxDepth = v.integer(i.get("maxDepth"), "integrator.maxDepth", -1, Integer.MAX_VALUE);
+                if (maxDepth == 0) {
+                    throw new SceneException(file, i.get("maxDepth").line, "'integrator.maxDepth' must be -1 (unbounded) or >= 1, got 0");
+                }
+            }
+            seed = i.containsKey("seed") ? v.longInteger(i.get("seed"), "integrator.seed") : null;
+            lightSamples = i.containsKey("lightSamples") ? v.integer(i.get("lightSamples"), "integrator.lightSamples", 1, Integer.MAX_VALUE) : null;
+            if (i.containsKey("hemisphere")) {
+                String h = v.string(i.get("hemisphere"), "integrator.hemisphere");
+                if (!h.equals("cosine") && !h.equals("uniform")) {
+                    throw new SceneException(file, i.get("hemisphere").line, "'integrator.hemisphere' must be \"cosine\" or \"uniform\", got '" + h + "'");
+                }
+                hemisphere = h.equals("cosine") ? HemisphereSampling.COSINE : HemisphereSampling.UNIFORM;
+            }
+            photons = i.containsKey("photons") ? v.integer(i.get("photons"), "integrator.photons", 1, PhotonParameters.MAX_PHOTONS) : null;
+            if (i.containsKey("photonRadius")) {
+                photonRadius = v.number(i.get("photonRadius"), "integrator.photonRadius");
+                if (!(photonRadius >= 0)) {
+                    throw new SceneException(file, i.get("photonRadius").line, "'integrator.photonRadius' must be >= 0 (0 = automatic), got "
+                            + JsonValues.format(photonRadius));
+                }
+            }
+        }
+        return new SceneSettings(width, height, spp, maxDepth, seed, type, lightSamples, hemisphere, photons, photonRadius);
+    }
+}

@@ -1,0 +1,148 @@
+package dev.strahl.io.json;
+
+import dev.strahl.io.mesh.MeshFiles;
+import dev.strahl.scene.Scene;
+import dev.strahl.scene.SceneException;
+import dev.strahl.scene.Transform;
+import dev.strahl.scene.Camera;
+import dev.strahl.scene.TriangleMesh;
+import dev.strahl.scene.Material;
+import dev.strahl.image.Rgb;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import org.joml.Vector3d;
+import org.joml.Vector3dc;
+
+/**
+ * A scene file as data: what {@link JsonSceneReader} parses (and the tests' SceneFileWriter writes),
+ * key for key, before anything is loaded or built. Two descriptions are equal when they say the
+ * same, so that a file written and read back can be compared with the original.
+ *
+ * @param camera      the camera, or null to frame the scene
+ * @param settings    the film and integrator keys
+ * @param materials   the named materials, in file order
+ * @param shapes      the shapes, in file order
+ * @param environment the environment radiance, or null for the default
+ */
+record SceneDescription(Camera camera, SceneSettings settings, Map<String, MaterialSpec> materials, List<ShapeSpec> shapes,
+                        Rgb environment) {
+
+    SceneDescription {
+        Objects.requireNonNull(settings, "settings");
+        materials = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(materials));
+        shapes = List.copyOf(shapes);
+    }
+
+    /** A material as the file gives it: its type and that type's keys. */
+    sealed interface MaterialSpec permits Diffuse, Mirror, Dielectric, Glossy {
+        Material toMaterial(String name);
+    }
+
+    record Diffuse(Rgb albedo, Rgb emission) implements MaterialSpec {
+        @Override
+        public Material toMaterial(String name) {
+            return Material.emissive(name, albedo, emission);
+        }
+    }
+
+    record Mirror(Rgb reflectance) implements MaterialSpec {
+        @Override
+        public Material toMaterial(String name) {
+            return Material.mirror(name, reflectance);
+        }
+    }
+
+    record Dielectric(double ior) implements MaterialSpec {
+        @Override
+        public Material toMaterial(String name) {
+            return Material.dielectric(name, ior);
+        }
+    }
+
+    record Glossy(Rgb diffuse, Rgb specular, double exponent, Rgb emission) implements MaterialSpec {
+        @Override
+        public Material toMaterial(String name) {
+            return Material.glossy(name, diffuse, specular, exponent).withEmission(emission);
+        }
+    }
+
+    /** A shape as the file gives it; {@code material} names an entry of {@code materials}. */
+    sealed interface ShapeSpec permits SphereShape, MeshShape, TrianglesShape {
+        Transform transform();
+    }
+
+    /** An analytic sphere. */
+    record SphereShape(Vector3dc center, double radius, String material, Transform transform) implements ShapeSpec {
+        SphereShape {
+            center = new Vector3d(center);
+        }
+    }
+
+    /**
+     * An OBJ or PLY file, as written (relative to the scene file's folder unless absolute); with
+     * a material name, every triangle is of that material, without one an OBJ uses its MTL
+     * materials and a PLY the grey default.
+     */
+    record MeshShape(String file, String material, Transform transform) implements ShapeSpec {}
+
+    /** Triangles given in the file: flat x, y, z arrays and three vertex indices per triangle. */
+    record TrianglesShape(float[] positions, int[] indices, float[] normals, String material, Transform transform) implements ShapeSpec {
+        TrianglesShape {
+            positions = positions.clone();
+            indices = indices.clone();
+            normals = normals == null ? null : normals.clone();
+        }
+
+        TriangleMesh mesh() {
+            return new TriangleMesh(positions, indices, normals);
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof TrianglesShape t && Arrays.equals(positions, t.positions) && Arrays.equals(indices, t.indices)
+                    && Arrays.equals(normals, t.normals) && material.equals(t.material) && transform.equals(t.transform);
+        }
+
+        @Override
+        public int hashCode() {
+            return Objects.hash(Arrays.hashCode(positions), Arrays.hashCode(indices), Arrays.hashCode(normals), material, transform);
+        }
+
+        @Override
+        public String toString() {
+            return "TrianglesShape[" + indices.length / 3 + " triangles, material " + material + ", " + transform + "]";
+        }
+    }
+
+    /**
+     * Loads the mesh files (relative to {@code folder}) and builds the scene. The reader has
+     * checked every reference and value, so only the mesh files themselves can still fail.
+     */
+    Scene build(Path folder) throws SceneException {
+        Map<String, Material> byName = new LinkedHashMap<>();
+        materials.forEach((name, spec) -> byName.put(name, spec.toMaterial(name)));
+        Scene.Builder builder = Scene.builder();
+        for (ShapeSpec shape : shapes) {
+            if (shape instanceof SphereShape s) {
+                builder.addSphere(s.center(), s.radius(), byName.get(s.material()), s.transform());
+            } else if (shape instanceof MeshShape m) {
+                Material material = m.material() == null ? null : byName.get(m.material());
+                MeshFiles.add(folder.resolve(m.file()), material, m.transform(), builder);
+            } else {
+                TrianglesShape t = (TrianglesShape) shape;
+                builder.addMesh(t.mesh(), byName.get(t.material()), t.transform());
+            }
+        }
+        if (camera != null) {
+            builder.camera(camera);
+        }
+        if (environment != null) {
+            builder.environment(environment);
+        }
+        return builder.build();
+    }
+}

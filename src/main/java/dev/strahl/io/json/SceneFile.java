@@ -1,0 +1,43 @@
+package dev.strahl.io.json;
+
+import dev.strahl.io.mesh.MeshFiles;
+import dev.strahl.scene.Scene;
+import dev.strahl.scene.SceneException;
+import dev.strahl.scene.Transform;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+/**
+ * A scene loaded from a file, with what the file says about rendering: a strahl scene file
+ * ({@code .json}), or a mesh file (OBJ with its MTL materials, PLY), which says nothing about
+ * rendering and has no camera (the scene is framed).
+ *
+ * @param scene    the scene
+ * @param settings the file's film and integrator keys; {@link SceneSettings#NONE} for a mesh file
+ */
+public record SceneFile(Scene scene, SceneSettings settings) {
+
+    /**
+     * Loads {@code file}; the format follows its extension, in any case.
+     *
+     * @throws SceneException if the file is missing, unreadable or malformed: the message names
+     *                        the file and, where known, the line
+     */
+    public static SceneFile load(Path file) throws SceneException {
+        if (Files.isDirectory(file)) {
+            throw new SceneException(file, "is a directory, not a scene file");
+        }
+        if (!Files.exists(file)) {
+            throw new SceneException(file, "file not found");
+        }
+        if (MeshFiles.lowerCaseName(file).endsWith(".json")) {
+            return JsonSceneReader.read(file);
+        }
+        if (MeshFiles.isMeshFile(file)) {
+            Scene.Builder builder = Scene.builder();
+            MeshFiles.add(file, null, Transform.IDENTITY, builder);
+            return new SceneFile(builder.build(), SceneSettings.NONE);
+        }
+        throw new SceneException(file, "unknown scene format (expected .json, .obj or .ply)");
+    }
+}

@@ -1,0 +1,90 @@
+package dev.strahl.io.json;
+
+import dev.strahl.render.HemisphereSampling;
+import dev.strahl.render.IntegratorKind;
+import dev.strahl.render.PhotonParameters;
+import dev.strahl.render.RenderSettings;
+import java.util.Set;
+
+/**
+ * How a scene file asks to be rendered: its {@code film} and {@code integrator} keys. Every field
+ * is null where the file says nothing. {@link #applyTo} puts the others on top of given settings,
+ * except the {@link Setting}s a command line gives itself, which win. The reader has checked every
+ * value against the limits of {@link RenderSettings}, so applying cannot fail.
+ *
+ * @param width           film width in pixels, or null
+ * @param height          film height in pixels, or null
+ * @param samplesPerPixel samples per pixel, or null
+ * @param maxDepth        path segments including the camera segment (-1 unbounded), or null
+ * @param seed            the random seed, or null
+ * @param integrator      the integrator, or null
+ * @param lightSamples    shadow rays per hit for the direct and Whitted integrators, or null
+ * @param hemisphere      how diffuse bounces are sampled, or null
+ * @param photons         photons per iteration for the photon mapper, or null
+ * @param photonRadius    the photon mapper's initial gather radius in scene units (0 = automatic), or null
+ */
+public record SceneSettings(Integer width, Integer height, Integer samplesPerPixel, Integer maxDepth, Long seed,
+                            IntegratorKind integrator, Integer lightSamples, HemisphereSampling hemisphere,
+                            Integer photons, Double photonRadius) {
+
+    /**
+     * The settings a scene file can give, one per field. A command line names the ones it gives
+     * itself, so that the file's value of those is not used.
+     */
+    public enum Setting {
+        WIDTH, HEIGHT, SAMPLES_PER_PIXEL, MAX_DEPTH, SEED, INTEGRATOR, LIGHT_SAMPLES, HEMISPHERE, PHOTONS, PHOTON_RADIUS
+    }
+
+    /** A file that says nothing about rendering (and every OBJ or PLY). */
+    public static final SceneSettings NONE = new SceneSettings(null, null, null, null, null, null, null, null, null, null);
+
+    public boolean isEmpty() {
+        return equals(NONE);
+    }
+
+    /** {@code base} with the file's values on top. */
+    public RenderSettings applyTo(RenderSettings base) {
+        return applyTo(base, Set.of());
+    }
+
+    /**
+     * {@code base} with the file's values on top, except those of the settings in {@code given}
+     * (options given on a command line), which keep their value in {@code base}. {@code strahl
+     * render} and {@code strahl view} both combine their options with a scene file here.
+     */
+    public RenderSettings applyTo(RenderSettings base, Set<Setting> given) {
+        RenderSettings s = base;
+        if (width != null && !given.contains(Setting.WIDTH)) {
+            s = s.withSize(width, s.height());
+        }
+        if (height != null && !given.contains(Setting.HEIGHT)) {
+            s = s.withSize(s.width(), height);
+        }
+        if (samplesPerPixel != null && !given.contains(Setting.SAMPLES_PER_PIXEL)) {
+            s = s.withSamplesPerPixel(samplesPerPixel);
+        }
+        if (maxDepth != null && !given.contains(Setting.MAX_DEPTH)) {
+            s = s.withMaxDepth(maxDepth);
+        }
+        if (seed != null && !given.contains(Setting.SEED)) {
+            s = s.withSeed(seed);
+        }
+        if (integrator != null && !given.contains(Setting.INTEGRATOR)) {
+            s = s.withIntegrator(integrator);
+        }
+        if (lightSamples != null && !given.contains(Setting.LIGHT_SAMPLES)) {
+            s = s.withLightSamples(lightSamples);
+        }
+        if (hemisphere != null && !given.contains(Setting.HEMISPHERE)) {
+            s = s.withHemisphere(hemisphere);
+        }
+        PhotonParameters p = s.photons();
+        if (photons != null && !given.contains(Setting.PHOTONS)) {
+            p = new PhotonParameters(photons, p.initialRadius());
+        }
+        if (photonRadius != null && !given.contains(Setting.PHOTON_RADIUS)) {
+            p = new PhotonParameters(p.photonsPerIteration(), photonRadius);
+        }
+        return s.withPhotons(p);
+    }
+}

@@ -1,0 +1,220 @@
+package dev.strahl.io.obj;
+
+import dev.strahl.io.text.LineCursor;
+import dev.strahl.io.text.TextLines;
+import dev.strahl.scene.SceneException;
+import dev.strahl.image.Rgb;
+import java.nio.file.Path;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * Reads a Wavefront MTL file into {@link MtlMaterial}s.
+ *
+ * <p>Understood: {@code newmtl NAME} (the rest of the line, so names may contain spaces),
+ * {@code Kd}, {@code Ks}, {@code Ke} (one number = grey, or three), {@code Ns}, {@code Ni},
+ * {@code illum}. Accepted and ignored: {@code Ka} (no ambient term in a path tracer), {@code d},
+ * {@code Tr}, {@code Tf} (transparency is what {@code illum 7} means, DESIGN.md §3). Texture
+ * statements ({@code map_*}, {@code bump}, {@code disp}, {@code decal}, {@code refl},
+ * {@code norm}) give one warning per file, any other key one warning per key; keys are matched
+ * without regard to case, because exporters disagree on it.
+ *
+ * <p>Errors (a {@link SceneException} at {@code file:line:}): numbers that do not parse, colours
+ * with 2 or more than 3 numbers, negative or non-finite colours, a negative {@code Ns}, an
+ * {@code illum} that is not an integer 0..10, material keys before the first {@code newmtl}.
+ * {@code Ni} &le; 0 (written by some exporters for opaque materials) is a warning and becomes 1.
+ */
+public final class MtlReader {
+
+    private MtlReader() {}
+
+    /**
+     * The materials of {@code mtl} by name, in file order. When a name is defined twice the first
+     * definition is kept, as in an OBJ reader's name lookup. Warnings are appended to
+     * {@code warnings}, each starting with the file name.
+     */
+    public static Map<String, MtlMaterial> read(Path mtl, List<String> warnings) throws SceneException {
+        Map<String, MtlMaterial> materials = new LinkedHashMap<>();
+        Set<String> warnedKeys = new HashSet<>();
+        boolean warnedTextures = false;
+        Block block = null;
+        var cur = new LineCursor(mtl);
+        try (var lines = TextLines.open(mtl, "MTL", false)) {
+            for (String line; (line = lines.next()) != null; ) {
+                cur.reset(line, lines.lineNumber());
+                if (!cur.next()) {
+                    continue;
+                }
+                String key = cur.token();
+                String lower = key.toLowerCase(Locale.ROOT);
+                if (lower.equals("newmtl")) {
+                    add(block, materials, mtl, warnings);
+                    String name = cur.rest();
+                    if (name.isEmpty()) {
+                        throw cur.error("newmtl without a material name");
+                    }
+                    block = new Block(name, cur.lineNumber);
+                    continue;
+                }
+                if (isTexture(lower)) {
+                    if (!warnedTextures) {
+                        warnedTextures = true;
+                        warnings.add(mtl + ": texture maps are not supported (first " + LineCursor.quote(key)
+                                + " at line " + cur.lineNumber + "): ignored");
+                    }
+                    continue;
+                }
+                if (!isMaterialKey(lower)) {
+                    if (warnedKeys.add(key)) {
+                        warnings.add(mtl + ": unknown key " + LineCursor.quote(key) + " (line "
+                                + cur.lineNumber + "): ignored");
+                    }
+                    continue;
+                }
+                if (block == null) {
+                    throw cur.error(LineCursor.quote(key) + " before any newmtl");
+                }
+                readKey(lower, key, cur, block, mtl, warnings);
+            }
+        }
+        add(block, materials, mtl, warnings);
+        return materials;
+    }
+
+    private static boolean isTexture(String lowerKey) {
+        return lowerKey.startsWith("map_") || switch (lowerKey) {
+            case "bump", "disp", "decal", "refl", "norm" -> true;
+            default -> false;
+        };
+    }
+
+    private static boolean isMaterialKey(String lowerKey) {
+        return switch (lowerKey) {
+            case "kd", "ks", "ke", "ka", "ns", "ni", "illum", "d", "tr", "tf" -> true;
+            default -> false;
+        };
+    }
+
+    private static void readKey(String lower, String key, LineCursor cur, Block block, Path mtl,
+            List<String> warnings) throws SceneException {
+        switch (lower) {
+            case "kd" -> block.kd = colour(key, cur, mtl, warnings, block.kd);
+            case "ks" -> block.ks = colour(key, cur, mtl, warnings, block.ks);
+            case "ke" -> block.ke = colour(key, cur, mtl, warnings, block.ke);
+            case "ns" -> {
+                double ns = single(key, cur);
+                if (!(ns >= 0) || !Double.isFinite(ns)) {
+                    throw cur.error("'Ns' must be a finite number >= 0, got " + ns);
+                }
+                block.ns = ns;
+            }
+            case "ni" -> {
+                double ni = single(key, cur);
+                if (!Double.isFinite(ni)) {
+                    throw cur.error("'Ni' must be finite, got " + ni);
+                }
+                if (ni > 0) {
+                    block.ni = ni;
+                } else {
+                    warnings.add(mtl + ": 'Ni " + ni + "' of material " + LineCursor.quote(block.name) + " (line "
+                            + cur.lineNumber + ") is not an index of refraction: using " + MtlMaterial.DEFAULT_NI);
+                    block.ni = MtlMaterial.DEFAULT_NI;
+                }
+            }
+            case "illum" -> {
+                double illum = single(key, cur);
+                if (!(illum >= 0 && illum <= MtlMaterial.MAX_ILLUM && illum == Math.rint(illum))) {
+                    throw cur.error("'illum' must be an integer 0.." + MtlMaterial.MAX_ILLUM + ", got " + illum);
+                }
+                block.illum = (int) illum;
+            }
+            default -> { } // Ka, d, Tr, Tf: accepted, not used (see the class comment)
+        }
+    }
+
+    /** A key with exactly one number. */
+    private static double single(String key, LineCursor cur) throws SceneException {
+        if (!cur.next()) {
+            throw cur.error(LineCursor.quote(key) + " needs 1 number, got 0");
+        }
+        double value = cur.number(key);
+        int n = 1;
+        while (cur.next()) {
+            n++;
+        }
+        if (n > 1) {
+            throw cur.error(LineCursor.quote(key) + " needs 1 number, got " + n);
+        }
+        return value;
+    }
+
+    /**
+     * {@code Kd r g b} or {@code Kd v} (grey). The {@code spectral} and {@code xyz} forms are not
+     * supported: a warning, and {@code previous} stays.
+     */
+    private static Rgb colour(String key, LineCursor cur, Path mtl, List<String> warnings, Rgb previous)
+            throws SceneException {
+        double[] c = new double[3];
+        int n = 0;
+        while (cur.next()) {
+            if (n == 0 && (cur.token().equalsIgnoreCase("spectral") || cur.token().equalsIgnoreCase("xyz"))) {
+                warnings.add(mtl + ": '" + key + " " + cur.token() + "' colours are not supported (line "
+                        + cur.lineNumber + "): ignored");
+                return previous;
+            }
+            double value = cur.number(key);
+            if (!(value >= 0) || !Double.isFinite(value)) {
+                throw cur.error("colour component " + LineCursor.quote(cur.token()) + " in "
+                        + LineCursor.quote(key) + " must be finite and >= 0");
+            }
+            if (n < 3) {
+                c[n] = value;
+            }
+            n++;
+        }
+        if (n == 1) {
+            return Rgb.gray(c[0]);
+        }
+        if (n != 3) {
+            throw cur.error(LineCursor.quote(key) + " needs 1 or 3 numbers, got " + n);
+        }
+        return new Rgb(c[0], c[1], c[2]);
+    }
+
+    private static void add(Block block, Map<String, MtlMaterial> materials, Path mtl, List<String> warnings) {
+        if (block == null) {
+            return;
+        }
+        if (materials.containsKey(block.name)) {
+            warnings.add(mtl + ": material " + LineCursor.quote(block.name) + " (line " + block.line
+                    + ") is defined again: keeping the first definition");
+            return;
+        }
+        materials.put(block.name, block.toMaterial());
+    }
+
+    /** The keys of one newmtl block as they are read, starting from the defaults. */
+    private static final class Block {
+        final String name;
+        final int line;
+        Rgb kd = MtlMaterial.DEFAULT_KD;
+        Rgb ks = Rgb.BLACK;
+        Rgb ke = Rgb.BLACK;
+        double ns = MtlMaterial.DEFAULT_NS;
+        double ni = MtlMaterial.DEFAULT_NI;
+        int illum = MtlMaterial.DEFAULT_ILLUM;
+
+        Block(String name, int line) {
+            this.name = name;
+            this.line = line;
+        }
+
+        MtlMaterial toMaterial() {
+            return new MtlMaterial(name, kd, ks, ke, ns, ni, illum);
+        }
+    }
+}

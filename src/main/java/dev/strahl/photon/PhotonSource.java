@@ -1,0 +1,104 @@
+package dev.strahl.photon;
+
+import dev.strahl.math.MutableRgb;
+import dev.strahl.geometry.Aabb;
+import dev.strahl.geometry.Ray;
+import dev.strahl.geometry.SurfacePoint;
+import dev.strahl.light.LightSampler;
+import dev.strahl.math.Frame;
+import dev.strahl.image.Rgb;
+import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.Warp;
+import dev.strahl.world.World;
+import org.joml.Vector3d;
+
+/**
+ * Where photons start: on the area lights, in proportion to their power, and from the scene's
+ * uniform environment, if it has one. Each photon carries the flux an estimator of the total
+ * emitted power gives it: emitting it with density p (over everything that is sampled), it
+ * carries Le·cosθ / p, so that the mean over photons is the total flux.
+ *
+ * <ul>
+ *   <li><b>Area lights.</b> {@link LightSampler#samplePoint} picks a light and a point by power
+ *       (area density p_A = mean(Le) / Σ area·mean(Le)); the direction is cosine-weighted in the
+ *       hemisphere of the light's geometric normal (pdf cosθ/π; the lights are one-sided). Flux
+ *       Le·cosθ / (p_A · cosθ/π) = π·Le / p_A; the mean over photons is Σ π·Le·area, the power of
+ *       Lambertian emitters.</li>
+ *   <li><b>Environment</b> of constant radiance L (pbrt-v4 §12.5, {@code UniformInfiniteLight::
+ *       SampleLe}): a travel direction d uniform on the sphere (pdf 1/4π) and a start point
+ *       uniform on the disk of radius R perpendicular to d that touches the scene's bounding
+ *       sphere (centre c, radius R) on the side d comes from (pdf 1/πR²). Flux L·4π·πR²:
+ *       the power that crosses the bounding sphere's cross-section from all directions.</li>
+ * </ul>
+ * When a scene has both, a photon comes from the lights with probability P_lights / (P_lights +
+ * P_env) by mean power, and its flux is divided by that probability. One per thread (scratch).
+ */
+final class PhotonSource {
+    private final LightSampler lights;
+    private final Rgb environment;
+    private final double lightProbability;       // 1 without environment, 0 without lights
+    private final Vector3d center = new Vector3d();
+    private final double radius;
+    private final SurfacePoint point = new SurfacePoint();
+    private final Frame frame = new Frame();
+    private final Vector3d local = new Vector3d();
+    private final Vector3d dir = new Vector3d();
+
+    PhotonSource(World world) {
+        this.lights = world.lights();
+        this.environment = world.environment();
+        Aabb box = world.geometry().bounds();
+        if (box.isEmpty()) {
+            this.radius = 1;
+        } else {
+            center.set(0.5 * (box.minX + box.maxX), 0.5 * (box.minY + box.maxY), 0.5 * (box.minZ + box.maxZ));
+            this.radius = Math.max(1e-6, 0.5 * box.diagonal() * (1 + 1e-6));
+        }
+        double lightPower = Math.PI * lights.totalPower();
+        double envPower = mean(environment) * 4 * Math.PI * Math.PI * radius * radius;
+        double total = lightPower + envPower;
+        this.lightProbability = total > 0 ? lightPower / total : 0;
+    }
+
+    /** Whether anything emits: without lights and environment there are no photons. */
+    boolean isEmpty() {
+        return lights.isEmpty() && environment.isBlack();
+    }
+
+    /** Radius of the bounding sphere from which environment photons start. */
+    double boundingRadius() {
+        return radius;
+    }
+
+    /**
+     * Emits one photon with random numbers from {@code rng}: its start point and direction into
+     * {@code ray} (the origin moved off the light), its flux into {@code flux}. Returns true for a
+     * photon of the environment (which no light sampling accounts for, so it is stored from its
+     * first hit on), false for one of an area light.
+     */
+    boolean emit(Rng rng, Ray ray, MutableRgb flux) {
+        double uChoice = rng.nextDouble();
+        if (uChoice < lightProbability) {
+            double pA = lights.samplePoint(rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), point);
+            Warp.cosineHemisphere(rng.nextDouble(), rng.nextDouble(), local);
+            frame.set(point.ng).toWorld(local, dir);
+            SurfacePoint.offset(point.p, point.ng, dir, ray.o);
+            ray.d.set(dir);
+            ray.tMax = Double.POSITIVE_INFINITY;
+            flux.set(lights.emission(point.material)).mul(Math.PI / (pA * lightProbability));
+            return false;
+        }
+        Warp.uniformSphere(rng.nextDouble(), rng.nextDouble(), dir);
+        Warp.concentricDisk(rng.nextDouble(), rng.nextDouble(), local);
+        frame.set(dir).toWorld(local.mul(radius), ray.o);
+        ray.o.add(center).fma(-radius, dir);
+        ray.d.set(dir);
+        ray.tMax = Double.POSITIVE_INFINITY;
+        flux.set(environment).mul(4 * Math.PI * Math.PI * radius * radius / (1 - lightProbability));
+        return true;
+    }
+
+    private static double mean(Rgb c) {
+        return (c.r() + c.g() + c.b()) / 3;
+    }
+}

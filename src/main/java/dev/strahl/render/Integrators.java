@@ -1,0 +1,24 @@
+package dev.strahl.render;
+
+import dev.strahl.integrator.DirectLighting;
+import dev.strahl.integrator.Integrator;
+import dev.strahl.integrator.PathTracer;
+import dev.strahl.integrator.Whitted;
+import dev.strahl.photon.PhotonMapper;
+import dev.strahl.world.World;
+
+/** Makes the integrator a render's settings choose, with all its parameters. */
+final class Integrators {
+    private Integrators() {}
+
+    static Integrator create(World world, RenderSettings s) {
+        boolean uniform = s.hemisphere() == HemisphereSampling.UNIFORM;
+        return switch (s.integrator()) {
+            case PATH -> new PathTracer(world, s.maxDepth(), uniform, s.cullBackFaces(), PathTracer.Strategy.MIS);
+            case DIRECT -> new DirectLighting(world, uniform, s.cullBackFaces(), s.lightSamples());
+            case WHITTED -> new Whitted(world, s.maxDepth(), s.cullBackFaces(), s.lightSamples());
+            case PHOTON -> new PhotonMapper(world, s.maxDepth(), uniform, s.cullBackFaces(), s.photons().photonsPerIteration(),
+                    s.photons().initialRadius());
+        };
+    }
+}

@@ -1,0 +1,120 @@
+package dev.strahl.world;
+
+import dev.strahl.accel.Bvh;
+import dev.strahl.geometry.Aabb;
+import dev.strahl.geometry.Geometry;
+import dev.strahl.image.Rgb;
+import dev.strahl.light.LightSampler;
+import dev.strahl.material.Bsdf;
+import java.util.Objects;
+import java.util.function.Function;
+
+/**
+ * The scene as the renderer sees it: every primitive in flat arrays with its BVH, the area lights
+ * over the emissive primitives, the BSDF and the emitted radiance of every material index (the one
+ * emission table, shared by shading and light sampling), and the environment radiance. Built once
+ * per {@code dev.strahl.scene.Scene} and shared read-only by every render job and thread.
+ *
+ * <p>The API's {@code Scene} holds its world privately; strahl's own packages reach it through
+ * {@link #of(Object)}, which the {@code Scene} class installs when it is loaded (the pattern of the
+ * JDK's {@code SharedSecrets}). So no public method of the API hands out an internal type, and the
+ * module system keeps this package out of reach of library users.
+ */
+public final class World {
+    private static volatile Function<Object, World> sceneAccess;
+
+    private final Geometry geometry;
+    private final Bvh bvh;
+    private final LightSampler lights;
+    private final Bsdf[] bsdfs;
+    private final Rgb[] emission;
+    private final Rgb environment;
+    private final double bvhBuildSeconds;
+
+    private World(Geometry geometry, Bvh bvh, Bsdf[] bsdfs, Rgb[] emission, Rgb environment, double bvhBuildSeconds) {
+        this.geometry = geometry;
+        this.bvh = bvh;
+        this.bsdfs = bsdfs;
+        this.emission = emission;
+        this.environment = environment;
+        this.bvhBuildSeconds = bvhBuildSeconds;
+        this.lights = new LightSampler(geometry, emission);
+    }
+
+    /**
+     * Builds the BVH over {@code geometry} and the light sampler over its emissive primitives.
+     *
+     * @param geometry    every primitive, material indices into the two tables
+     * @param bsdfs       the BSDF of each material index
+     * @param emission    the emitted radiance of each material index (black: not a light)
+     * @param environment radiance of rays that leave the scene
+     */
+    public static World build(Geometry geometry, Bsdf[] bsdfs, Rgb[] emission, Rgb environment) {
+        if (bsdfs.length != emission.length) {
+            throw new IllegalArgumentException(bsdfs.length + " BSDFs for " + emission.length + " emissions");
+        }
+        long start = System.nanoTime();
+        Bvh bvh = Bvh.build(geometry);
+        double seconds = (System.nanoTime() - start) * 1e-9;
+        // The BVH hands back the same primitives reordered into its leaves: hits refer to those.
+        return new World(bvh.geometry(), bvh, bsdfs.clone(), emission.clone(), Objects.requireNonNull(environment), seconds);
+    }
+
+    /** The world behind an API {@code Scene}. */
+    public static World of(Object scene) {
+        Objects.requireNonNull(scene, "scene");
+        return sceneAccess.apply(scene);
+    }
+
+    /** Called once, by the {@code Scene} class as it is loaded. */
+    public static void installSceneAccess(Function<Object, World> access) {
+        if (sceneAccess != null) {
+            throw new IllegalStateException("scene access installed twice");
+        }
+        sceneAccess = access;
+    }
+
+    /** The primitives in the order of the BVH's leaves; primitive ids of hits refer to it. */
+    public Geometry geometry() {
+        return geometry;
+    }
+
+    public Bvh bvh() {
+        return bvh;
+    }
+
+    public LightSampler lights() {
+        return lights;
+    }
+
+    public Rgb environment() {
+        return environment;
+    }
+
+    public int materialCount() {
+        return bsdfs.length;
+    }
+
+    public Bsdf bsdf(int material) {
+        return bsdfs[material];
+    }
+
+    public Rgb emission(int material) {
+        return emission[material];
+    }
+
+    /** The bounds of every primitive. */
+    public Aabb bounds() {
+        return geometry.bounds();
+    }
+
+    /** How long building the BVH took. */
+    public double bvhBuildSeconds() {
+        return bvhBuildSeconds;
+    }
+
+    /** Bytes held by the primitive and node arrays. */
+    public long byteSize() {
+        return geometry.byteSize() + bvh.byteSize();
+    }
+}

@@ -1,0 +1,66 @@
+package dev.strahl.io;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import dev.strahl.scene.SceneException;
+import dev.strahl.testing.Fuzzer;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * Every input that once broke a parser (found by {@link ParserFuzzTest} or by hand), kept in
+ * {@code src/test/resources/fuzz/KIND/}: each must now be accepted or rejected with a
+ * {@link SceneException}. A {@code .txt} beside an input says what it did.
+ */
+class FuzzRegressionTest {
+    private static final Path CORPUS = Path.of("src", "test", "resources", "fuzz");
+    private static Path work;
+
+    @BeforeAll
+    static void copyTheShippedScenes() throws IOException {
+        work = ParserFuzzTest.workDirectory();
+    }
+
+    @AfterAll
+    static void deleteTheCopies() throws IOException {
+        ParserFuzzTest.deleteTree(work);
+    }
+
+    static Stream<Path> regressionCases() throws IOException {
+        List<Path> cases = new ArrayList<>();
+        for (String kind : List.of("obj", "mtl", "ply", "json")) {
+            Path dir = CORPUS.resolve(kind);
+            if (Files.isDirectory(dir)) {
+                try (Stream<Path> files = Files.list(dir)) {
+                    files.filter(f -> !f.toString().endsWith(".txt")).sorted().forEach(cases::add);
+                }
+            }
+        }
+        return cases.stream();
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("regressionCases")
+    void regressionCasesStayFixed(Path input) throws IOException {
+        String kind = input.getParent().getFileName().toString();
+        Fuzzer.Target target = switch (kind) {
+            case "obj" -> ParserFuzzTest.objTarget();
+            case "mtl" -> ParserFuzzTest.mtlTarget();
+            case "ply" -> ParserFuzzTest.plyTarget();
+            default -> ParserFuzzTest.jsonTarget();
+        };
+        Fuzzer fuzzer = new Fuzzer("regression-" + kind, target, SceneException.class, work.resolve("regression." + kind));
+        // the verdict: null = accepted, "" = rejected with a SceneException, else what broke
+        assertThat(fuzzer.check(Files.readAllBytes(input))).as("%s: null = accepted, \"\" = SceneException", input)
+                .isIn(null, "");
+    }
+
+}

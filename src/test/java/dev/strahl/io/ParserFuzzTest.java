@@ -1,0 +1,120 @@
+package dev.strahl.io;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import dev.strahl.io.obj.MtlReader;
+import dev.strahl.scene.SceneException;
+import dev.strahl.testing.Fuzzer;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+import net.jqwik.api.Arbitraries;
+import net.jqwik.api.Arbitrary;
+import net.jqwik.api.Tuple;
+import net.jqwik.api.Example;
+import net.jqwik.api.lifecycle.AfterContainer;
+import net.jqwik.api.lifecycle.BeforeContainer;
+
+/**
+ * Fuzzing of the OBJ, MTL, PLY and scene-file readers: random and mutated files may be accepted or
+ * rejected with a {@link SceneException}, never end in another exception, a hang or running out
+ * of memory. Each parser gets a bounded budget ({@link Fuzzer#budget()}); every input that once
+ * broke a parser is kept in {@code src/test/resources/fuzz/} and replayed by
+ * {@link FuzzRegressionTest}. jqwik examples, since its generators run only inside jqwik.
+ */
+class ParserFuzzTest {
+    private static Path work;
+
+    /** The shipped scenes next to the fuzzed file, so that its mtllib and file references resolve. */
+    @BeforeContainer
+    static void copyTheShippedScenes() throws IOException {
+        work = workDirectory();
+    }
+
+    @AfterContainer
+    static void deleteTheCopies() throws IOException {
+        deleteTree(work);
+    }
+
+    static Path workDirectory() throws IOException {
+        Path dir = Files.createTempDirectory("strahl-fuzz");
+        try (Stream<Path> files = Files.list(Path.of("scenes"))) {
+            for (Path f : files.toList()) {
+                Files.copy(f, dir.resolve(f.getFileName()));
+            }
+        }
+        return dir;
+    }
+
+    static void deleteTree(Path dir) throws IOException {
+        if (dir == null) {
+            return;
+        }
+        try (Stream<Path> files = Files.walk(dir)) {
+            for (Path f : files.sorted(java.util.Comparator.reverseOrder()).toList()) {
+                Files.deleteIfExists(f);
+            }
+        }
+    }
+
+    static Fuzzer.Target objTarget() {
+        return SceneLoader::load;                   // reading, then building the scene and its BVH
+    }
+
+    static Fuzzer.Target mtlTarget() {
+        return file -> MtlReader.read(file, new ArrayList<>());
+    }
+
+    static Fuzzer.Target plyTarget() {
+        return SceneLoader::load;                   // reading, then building the scene and its BVH
+    }
+
+    static Fuzzer.Target jsonTarget() {
+        return SceneLoader::load;
+    }
+
+    @Example
+    void objReaderOnlyEverThrowsSceneException() throws IOException {
+        fuzz("obj", objTarget(), "fuzz.obj", mix(FuzzInputs.randomObj(),
+                FuzzInputs.mutated(FuzzInputs.shippedFiles(".obj"), FuzzInputs.OBJ_WORDS)));
+    }
+
+    @Example
+    void mtlReaderOnlyEverThrowsSceneException() throws IOException {
+        fuzz("mtl", mtlTarget(), "fuzz.mtl", mix(FuzzInputs.randomMtl(),
+                FuzzInputs.mutated(FuzzInputs.shippedFiles(".mtl"), FuzzInputs.MTL_WORDS)));
+    }
+
+    @Example
+    void sceneFileReaderOnlyEverThrowsSceneException() throws IOException {
+        fuzz("json", jsonTarget(), "fuzz.json", Arbitraries.frequencyOf(Tuple.of(1, FuzzInputs.randomJson()),
+                Tuple.of(2, FuzzInputs.randomScene()),
+                Tuple.of(2, FuzzInputs.mutated(FuzzInputs.shippedFiles(".json"), FuzzInputs.JSON_WORDS))));
+    }
+
+    @Example
+    void plyReaderOnlyEverThrowsSceneException() throws IOException {
+        fuzz("ply", plyTarget(), "fuzz.ply", mix(FuzzInputs.randomPly(), FuzzInputs.mutated(FuzzInputs.plySeeds(), FuzzInputs.PLY_WORDS)));
+    }
+
+    private static Arbitrary<byte[]> mix(Arbitrary<byte[]> random, Arbitrary<byte[]> mutated) {
+        return Arbitraries.frequencyOf(Tuple.of(1, random), Tuple.of(1, mutated));
+    }
+
+    private static void fuzz(String name, Fuzzer.Target target, String fileName, Arbitrary<byte[]> inputs) throws IOException {
+        Fuzzer.Report report = new Fuzzer(name, target, SceneException.class, work.resolve(fileName))
+                .run(inputs, Fuzzer.budget(), Fuzzer.seed());
+        System.out.println(report);
+        Path reports = Path.of("target", "fuzz-reports");
+        Files.createDirectories(reports);
+        Files.writeString(reports.resolve(name + ".txt"), report + "\n", StandardCharsets.UTF_8);
+        assertThat(report.findings()).as(report.toString()).isEmpty();
+        assertThat(report.inputs()).as("inputs run").isGreaterThan(100);
+        assertThat(report.rejected()).as("some inputs are rejected").isPositive();
+        assertThat(report.accepted()).as("some inputs are accepted").isPositive();
+    }
+}

@@ -1,0 +1,236 @@
+package dev.strahl.io.json;
+
+import dev.strahl.scene.TestScenes;
+import dev.strahl.scene.Transform;
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonGenerator;
+import com.fasterxml.jackson.core.util.DefaultPrettyPrinter;
+import dev.strahl.scene.Camera;
+import dev.strahl.image.Rgb;
+import dev.strahl.io.json.SceneDescription.MaterialSpec;
+import dev.strahl.io.json.SceneDescription.ShapeSpec;
+import java.io.IOException;
+import java.io.StringWriter;
+import java.io.UncheckedIOException;
+import org.joml.Vector3dc;
+
+/**
+ * Writes a {@link SceneDescription} as a scene file that {@link JsonSceneReader} reads back to an
+ * equal description: every key the description holds, and no default it does not.
+ */
+final class SceneFileWriter {
+    private final JsonGenerator g;
+
+    private SceneFileWriter(JsonGenerator g) {
+        this.g = g;
+    }
+
+    static String write(SceneDescription d) {
+        StringWriter out = new StringWriter();
+        try (JsonGenerator g = new JsonFactory().createGenerator(out)) {
+            g.setPrettyPrinter(new DefaultPrettyPrinter());
+            new SceneFileWriter(g).scene(d);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);              // a StringWriter does not fail
+        }
+        return out.append('\n').toString();
+    }
+
+    private void scene(SceneDescription d) throws IOException {
+        g.writeStartObject();
+        if (d.camera() != null) {
+            camera(d.camera());
+        }
+        settings(d.settings());
+        g.writeObjectFieldStart("materials");
+        for (var e : d.materials().entrySet()) {
+            g.writeFieldName(e.getKey());
+            material(e.getValue());
+        }
+        g.writeEndObject();
+        g.writeArrayFieldStart("shapes");
+        for (ShapeSpec s : d.shapes()) {
+            shape(s);
+        }
+        g.writeEndArray();
+        if (d.environment() != null) {
+            g.writeFieldName("environment");
+            rgb(d.environment());
+        }
+        g.writeEndObject();
+    }
+
+    private void camera(Camera c) throws IOException {
+        g.writeObjectFieldStart("camera");
+        g.writeFieldName("lookFrom");
+        vector(c.lookFrom());
+        g.writeFieldName("lookAt");
+        vector(c.lookAt());
+        g.writeFieldName("up");
+        vector(c.up());
+        g.writeNumberField("fov", c.fovDegrees());
+        g.writeEndObject();
+    }
+
+    private void settings(SceneSettings s) throws IOException {
+        if (s.width() != null || s.height() != null) {
+            g.writeObjectFieldStart("film");
+            if (s.width() != null) {
+                g.writeNumberField("width", s.width());
+            }
+            if (s.height() != null) {
+                g.writeNumberField("height", s.height());
+            }
+            g.writeEndObject();
+        }
+        if (s.integrator() == null && s.samplesPerPixel() == null && s.maxDepth() == null && s.seed() == null
+                && s.lightSamples() == null && s.hemisphere() == null && s.photons() == null && s.photonRadius() == null) {
+            return;
+        }
+        g.writeObjectFieldStart("integrator");
+        if (s.integrator() != null) {
+            g.writeStringField("type", s.integrator().id());
+        }
+        if (s.samplesPerPixel() != null) {
+            g.writeNumberField("spp", s.samplesPerPixel());
+        }
+        if (s.maxDepth() != null) {
+            g.writeNumberField("maxDepth", s.maxDepth());
+        }
+        if (s.seed() != null) {
+            g.writeNumberField("seed", s.seed());
+        }
+        if (s.lightSamples() != null) {
+            g.writeNumberField("lightSamples", s.lightSamples());
+        }
+        if (s.hemisphere() != null) {
+            g.writeStringField("hemisphere", s.hemisphere().name().toLowerCase(java.util.Locale.ROOT));
+        }
+        if (s.photons() != null) {
+            g.writeNumberField("photons", s.photons());
+        }
+        if (s.photonRadius() != null) {
+            g.writeNumberField("photonRadius", s.photonRadius());
+        }
+        g.writeEndObject();
+    }
+
+    private void material(MaterialSpec m) throws IOException {
+        g.writeStartObject();
+        if (m instanceof SceneDescription.Diffuse d) {
+            g.writeStringField("type", "diffuse");
+            g.writeFieldName("albedo");
+            rgb(d.albedo());
+            emission(d.emission());
+        } else if (m instanceof SceneDescription.Mirror r) {
+            g.writeStringField("type", "mirror");
+            g.writeFieldName("reflectance");
+            rgb(r.reflectance());
+        } else if (m instanceof SceneDescription.Dielectric d) {
+            g.writeStringField("type", "dielectric");
+            g.writeNumberField("ior", d.ior());
+        } else {
+            SceneDescription.Glossy gl = (SceneDescription.Glossy) m;
+            g.writeStringField("type", "glossy");
+            g.writeFieldName("diffuse");
+            rgb(gl.diffuse());
+            g.writeFieldName("specular");
+            rgb(gl.specular());
+            g.writeNumberField("exponent", gl.exponent());
+            emission(gl.emission());
+        }
+        g.writeEndObject();
+    }
+
+    private void emission(Rgb e) throws IOException {
+        if (!e.isBlack()) {
+            g.writeFieldName("emission");
+            rgb(e);
+        }
+    }
+
+    private void shape(ShapeSpec shape) throws IOException {
+        g.writeStartObject();
+        if (shape instanceof SceneDescription.SphereShape s) {
+            g.writeStringField("type", "sphere");
+            g.writeFieldName("center");
+            vector(s.center());
+            g.writeNumberField("radius", s.radius());
+            g.writeStringField("material", s.material());
+        } else if (shape instanceof SceneDescription.MeshShape m) {
+            g.writeStringField("type", "mesh");
+            g.writeStringField("file", m.file());
+            if (m.material() != null) {
+                g.writeStringField("material", m.material());
+            }
+        } else {
+            SceneDescription.TrianglesShape t = (SceneDescription.TrianglesShape) shape;
+            g.writeStringField("type", "triangles");
+            g.writeFieldName("positions");
+            floats(t.positions());
+            g.writeFieldName("indices");
+            g.writeArray(t.indices(), 0, t.indices().length);
+            if (t.normals() != null) {
+                g.writeFieldName("normals");
+                floats(t.normals());
+            }
+            g.writeStringField("material", t.material());
+        }
+        if (!shape.transform().isIdentity()) {
+            transform(shape.transform());
+        }
+        g.writeEndObject();
+    }
+
+    private void transform(Transform t) throws IOException {
+        g.writeArrayFieldStart("transform");
+        for (TestScenes.Step s : TestScenes.steps(t)) {
+            g.writeStartObject();
+            switch (s.kind()) {
+                case "translate" -> {
+                    g.writeFieldName("translate");
+                    g.writeArray(new double[] {s.x(), s.y(), s.z()}, 0, 3);
+                }
+                case "scale" -> {
+                    if (s.x() == s.y() && s.y() == s.z()) {
+                        g.writeNumberField("scale", s.x());
+                    } else {
+                        g.writeFieldName("scale");
+                        g.writeArray(new double[] {s.x(), s.y(), s.z()}, 0, 3);
+                    }
+                }
+                default -> {
+                    g.writeObjectFieldStart("rotate");
+                    g.writeFieldName("axis");
+                    g.writeArray(new double[] {s.x(), s.y(), s.z()}, 0, 3);
+                    g.writeNumberField("degrees", s.degrees());
+                    g.writeEndObject();
+                }
+            }
+            g.writeEndObject();
+        }
+        g.writeEndArray();
+    }
+
+    /** Floats in their shortest form where that reads back to the same float, else exactly. */
+    private void floats(float[] values) throws IOException {
+        g.writeStartArray();
+        for (float f : values) {
+            String shortest = Float.toString(f);
+            if ((float) Double.parseDouble(shortest) == f) {
+                g.writeNumber(shortest);
+            } else {
+                g.writeNumber((double) f);
+            }
+        }
+        g.writeEndArray();
+    }
+
+    private void vector(Vector3dc v) throws IOException {
+        g.writeArray(new double[] {v.x(), v.y(), v.z()}, 0, 3);
+    }
+
+    private void rgb(Rgb c) throws IOException {
+        g.writeArray(new double[] {c.r(), c.g(), c.b()}, 0, 3);
+    }
+}
