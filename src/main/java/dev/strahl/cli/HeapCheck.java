@@ -1,5 +1,6 @@
 package dev.strahl.cli;
 
+import dev.strahl.io.text.Units;
 import dev.strahl.film.Film;
 import java.util.Locale;
 import java.util.function.LongSupplier;
@@ -33,7 +34,7 @@ final class HeapCheck {
             throw new IllegalArgumentException(String.format(Locale.ROOT,
                     "a %dx%d image needs %s for its film and image buffers, but the Java heap has %s free of at most %s;"
                             + " render a smaller image or give Java more memory (java -Xmx...)",
-                    width, height, bytes(need), bytes(Math.max(0, free)), bytes(heapMax)));
+                    width, height, Units.bytes(need), Units.bytes(Math.max(0, free)), Units.bytes(heapMax)));
         }
     }
 
@@ -60,17 +61,5 @@ final class HeapCheck {
             collect.run();
         }
         checkFilm(width, height, heapMax, heapUsed.getAsLong());
-    }
-
-    /** 1536 → "1.5 KiB", binary units as -Xmx counts them. */
-    static String bytes(long n) {
-        String[] units = {"bytes", "KiB", "MiB", "GiB", "TiB"};
-        double v = n;
-        int u = 0;
-        while (v >= 1024 && u < units.length - 1) {
-            v /= 1024;
-            u++;
-        }
-        return u == 0 ? n + " bytes" : String.format(Locale.ROOT, "%.1f %s", v, units[u]);
     }
 }

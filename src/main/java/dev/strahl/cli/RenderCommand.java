@@ -130,7 +130,7 @@ final class RenderCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             return fail(err, e, e.getMessage(), 2);
         } catch (OutOfMemoryError e) {
-            return fail(err, e, "out of memory (the Java heap has at most " + HeapCheck.bytes(Runtime.getRuntime().maxMemory())
+            return fail(err, e, "out of memory (the Java heap has at most " + Units.bytes(Runtime.getRuntime().maxMemory())
                     + "): give Java more memory (java -Xmx...) or render a smaller scene or image", 1);
         } catch (RenderFailure e) {
             return fail(err, e.getCause(), e.getMessage(), 1);
@@ -186,7 +186,7 @@ final class RenderCommand implements Callable<Integer> {
             return SceneFile.load(scene);
         } catch (OutOfMemoryError e) {
             throw new IllegalArgumentException(scene + ": the scene does not fit in the Java heap (at most "
-                    + HeapCheck.bytes(Runtime.getRuntime().maxMemory()) + "): give Java more memory (java -Xmx...)", e);
+                    + Units.bytes(Runtime.getRuntime().maxMemory()) + "): give Java more memory (java -Xmx...)", e);
         }
     }
 

@@ -121,6 +121,17 @@ public final class Film {
         count[pixelIndex]++;
     }
 
+    /** Samples taken over all pixels. */
+    public long totalSamples() {
+        long n = 0;
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                n += sampleCount(x, y);
+            }
+        }
+        return n;
+    }
+
     /**
      * Number of samples pixel (x, y) has received.
      *

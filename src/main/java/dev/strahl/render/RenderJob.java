@@ -42,7 +42,6 @@ public final class RenderJob implements AutoCloseable {
     private final RenderListener listener;
     private final Film film;
     private final Integrator integrator;
-    private final int threads;
     private final RenderWorkers workers;
     private final Scene scene;
     /** What ties a checkpoint to this scene and these settings; digested when first needed. */
@@ -55,29 +54,23 @@ public final class RenderJob implements AutoCloseable {
     private final long restoredSamples;              // held by a resumed film before this job began
     /** The mean image at the end of the last completed pass: what {@link #snapshot()} returns. */
     private volatile Image lastPass;
-    private final long startNanos;
-    private final Object pauseLock = new Object();
-    private boolean paused;
-    private long pausedNanos;
-    private long pauseStart;
+    private final PauseClock clock = new PauseClock();
 
     private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener, Checkpoint identity,
                       Checkpoint.Restored restored) {
-        this.settings = settings;
-        this.listener = listener;
+        this.settings = Objects.requireNonNull(settings, "settings");
+        this.listener = Objects.requireNonNull(listener, "listener");
         this.film = restored != null ? restored.film() : new Film(settings.width(), settings.height());
-        this.integrator = integrator;
-        this.threads = settings.effectiveThreads();
-        this.scene = scene;
+        this.integrator = Objects.requireNonNull(integrator, "integrator");
+        this.scene = Objects.requireNonNull(scene, "scene");
         this.identity = identity;
         this.earlierInvalid = restored != null ? restored.invalidSamples() : 0;
         this.earlierSeconds = restored != null ? restored.seconds() : 0;
         Camera c = scene.camera();
         var rays = new PinholeRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), settings.width(), settings.height());
-        this.workers = new RenderWorkers(film, rays, integrator, settings.seed(), threads, "strahl-render-" + JOB_NUMBER.incrementAndGet());
+        this.workers = new RenderWorkers(film, rays, integrator, settings.seed(), settings.effectiveThreads(), "strahl-render-" + JOB_NUMBER.incrementAndGet());
         this.completedSpp = Math.min(film.minSampleCount(), settings.samplesPerPixel());   // 0, unless the film was restored
-        this.restoredSamples = samplesIn(film);
-        this.startNanos = System.nanoTime();
+        this.restoredSamples = film.totalSamples();
     }
 
     /**
@@ -100,17 +93,11 @@ public final class RenderJob implements AutoCloseable {
      * @return the running job; close it (or wait for it) when done
      */
     public static RenderJob start(Scene scene, RenderSettings settings, RenderListener listener) {
-        Objects.requireNonNull(scene, "scene");
-        Objects.requireNonNull(settings, "settings");
-        return start(scene, settings, Integrators.create(World.of(scene), settings), listener);
+        return start(scene, settings, Integrators.create(World.of(scene), Objects.requireNonNull(settings, "settings")), listener);
     }
 
     /** Starts rendering with a given integrator made for this scene; the settings' choice is ignored (tests). */
     static RenderJob start(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener) {
-        Objects.requireNonNull(scene, "scene");
-        Objects.requireNonNull(settings, "settings");
-        Objects.requireNonNull(integrator, "integrator");
-        Objects.requireNonNull(listener, "listener");
         return launch(new RenderJob(scene, settings, integrator, listener, null, null));
     }
 
@@ -132,9 +119,6 @@ public final class RenderJob implements AutoCloseable {
     public static RenderJob resumeFrom(Path checkpoint, Scene scene, RenderSettings settings, RenderListener listener)
             throws CheckpointException, IOException {
         Objects.requireNonNull(checkpoint, "checkpoint");
-        Objects.requireNonNull(scene, "scene");
-        Objects.requireNonNull(settings, "settings");
-        Objects.requireNonNull(listener, "listener");
         Checkpoint identity = Checkpoint.of(scene, settings);
         Checkpoint.Restored restored = identity.restore(checkpoint);
         return launch(new RenderJob(scene, settings, Integrators.create(World.of(scene), settings), listener, identity, restored));
@@ -212,10 +196,7 @@ public final class RenderJob implements AutoCloseable {
      * @return seconds
      */
     public double elapsedSeconds() {
-        synchronized (pauseLock) {
-            long now = System.nanoTime();
-            return (now - startNanos - pausedNanos - (paused ? now - pauseStart : 0)) * 1e-9;
-        }
+        return clock.seconds();
     }
 
     /**
@@ -232,24 +213,16 @@ public final class RenderJob implements AutoCloseable {
      * while paused does nothing. The render goes on, bit for bit as if never paused, after
      * {@link #resume()}.
      */
-    public void pause() {
-        synchronized (pauseLock) {
-            if (!paused) {
-                paused = true;
-                pauseStart = System.nanoTime();
-                workers.hold();
-            }
+    public synchronized void pause() {
+        if (clock.pause()) {
+            workers.hold();
         }
     }
 
     /** Lets paused workers go on; does nothing unless paused. */
-    public void resume() {
-        synchronized (pauseLock) {
-            if (paused) {
-                paused = false;
-                pausedNanos += System.nanoTime() - pauseStart;
-                workers.release();
-            }
+    public synchronized void resume() {
+        if (clock.resume()) {
+            workers.release();
         }
     }
 
@@ -259,9 +232,7 @@ public final class RenderJob implements AutoCloseable {
      * @return true between {@link #pause()} and {@link #resume()}
      */
     public boolean isPaused() {
-        synchronized (pauseLock) {
-            return paused;
-        }
+        return clock.isPaused();
     }
 
     /**
@@ -285,14 +256,6 @@ public final class RenderJob implements AutoCloseable {
         }
     }
 
-    /**
-     * The size of a checkpoint of this render.
-     *
-     * @return bytes
-     */
-    public long checkpointSize() {
-        return identity().fileSize();
-    }
 
     private synchronized Checkpoint identity() {
         if (identity == null) {
@@ -424,15 +387,6 @@ public final class RenderJob implements AutoCloseable {
         }
     }
 
-    static long samplesIn(Film film) {
-        long n = 0;
-        for (int y = 0; y < film.height(); y++) {
-            for (int x = 0; x < film.width(); x++) {
-                n += film.sampleCount(x, y);
-            }
-        }
-        return n;
-    }
 
     /** Passes of 1, 1, 2, 4, 8 and then 16 samples per pixel: a first image at once, little overhead later. */
     static int autoPassSize(int pass) {
@@ -440,7 +394,7 @@ public final class RenderJob implements AutoCloseable {
     }
 
     private RenderStats stats() {
-        return new RenderStats(elapsedSeconds(), workers.samplesDone(), workers.rayCount(), completedSpp, threads, workers.cancelled(),
+        return new RenderStats(elapsedSeconds(), workers.samplesDone(), workers.rayCount(), completedSpp, settings.effectiveThreads(), workers.cancelled(),
                 invalidSamples());
     }
 }

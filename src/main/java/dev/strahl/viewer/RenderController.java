@@ -47,29 +47,6 @@ final class RenderController {
     /** Stop-at value meaning "never stop". */
     static final int UNLIMITED = 0;
 
-    /** A running render as the controller sees it: a {@link RenderJob}, or a stand-in in tests. */
-    interface Job {
-        void cancel();
-
-        void pause();
-
-        void resume();
-
-        long samplesDone();
-    }
-
-    /** Starts a job that reports its passes to {@code listener}. */
-    interface JobStarter {
-        Job start(Scene scene, RenderSettings settings, RenderListener listener);
-    }
-
-    /** Runs a task after a delay on some other thread; the returned handle cancels it. */
-    interface Scheduler {
-        Runnable schedule(Runnable task, long delayMillis);
-
-        void shutdown();
-    }
-
     /** One image to show: the mean after {@code samplesPerPixel} samples of job number {@code generation}. */
     record Frame(Image image, int samplesPerPixel, boolean preview, long generation) {}
 
@@ -81,10 +58,10 @@ final class RenderController {
         }
     }
 
-    private final JobStarter starter;
+    private final RenderJobs.Starter starter;
     private final Consumer<Frame> sink;
-    private final Scheduler scheduler;
-    private final LongSupplier nanoTime;
+    private final RenderJobs.Scheduler scheduler;
+    private final ActiveTime clock;
 
     private Scene scene;
     private OrbitCamera home;
@@ -94,7 +71,7 @@ final class RenderController {
     private State state = State.RUNNING;
 
     private long generation;
-    private Job job;
+    private RenderJobs.Job job;
     private boolean preview;
     private int samplesPerPixel;
     private int passes;
@@ -105,11 +82,9 @@ final class RenderController {
     private boolean fullAfterDisplay;
     private Runnable cancelSettle;
     private long settleToken;
-    private long activeNanos;
-    private long runningSince = -1;
 
-    RenderController(Scene scene, RenderSettings settings, int stopAt,
-                     JobStarter starter, Consumer<Frame> sink, Scheduler scheduler, LongSupplier nanoTime) {
+    RenderController(Scene scene, RenderSettings settings, int stopAt, RenderJobs.Starter starter, Consumer<Frame> sink,
+                     RenderJobs.Scheduler scheduler, LongSupplier nanoTime) {
         this.scene = Objects.requireNonNull(scene, "scene");
         this.home = OrbitCamera.of(scene.camera());
         this.camera = home;
@@ -118,7 +93,7 @@ final class RenderController {
         this.starter = starter;
         this.sink = sink;
         this.scheduler = scheduler;
-        this.nanoTime = nanoTime;
+        this.clock = new ActiveTime(nanoTime);
     }
 
     /** A controller that runs real {@link RenderJob}s and times camera moves on its own daemon thread. */
@@ -175,9 +150,7 @@ final class RenderController {
 
     /** Throws away the samples and renders again from the first. */
     synchronized void restart() {
-        if (state != State.CLOSED) {
-            startJob(Mode.GLANCE);
-        }
+        renderAgain();
     }
 
     /** Samples per pixel at which to hold, or {@link #UNLIMITED}; raising it continues a finished render. */
@@ -204,9 +177,7 @@ final class RenderController {
     private void changeSettings(RenderSettings s) {
         if (!s.equals(settings)) {
             settings = s;
-            if (state != State.CLOSED) {
-                startJob(Mode.GLANCE);
-            }
+            renderAgain();
         }
     }
 
@@ -219,9 +190,7 @@ final class RenderController {
         settings = Objects.requireNonNull(newSettings, "settings");
         home = OrbitCamera.of(newScene.camera());
         camera = home;
-        if (state != State.CLOSED) {
-            startJob(Mode.GLANCE);
-        }
+        renderAgain();
     }
 
     /** Moves the camera (orbit, pan, dolly): preview now, full resolution once the moves stop. */
@@ -233,9 +202,7 @@ final class RenderController {
     /** Back to the scene's camera. */
     synchronized void resetCamera() {
         camera = home;
-        if (state != State.CLOSED) {
-            startJob(Mode.GLANCE);
-        }
+        renderAgain();
     }
 
     /** The film follows the window: a new size previews like a camera move. */
@@ -267,7 +234,7 @@ final class RenderController {
         long samples = job != null ? job.samplesDone() : 0;
         int w = preview ? previewSize(settings.width()) : settings.width();
         int h = preview ? previewSize(settings.height()) : settings.height();
-        return new Status(state, preview, samplesPerPixel, stopAt, seconds(), samples, w, h, settings.integrator(),
+        return new Status(state, preview, samplesPerPixel, stopAt, clock.seconds(), samples, w, h, settings.integrator(),
                 settings.maxDepth(), settings.hemisphere(), generation);
     }
 
@@ -340,8 +307,7 @@ final class RenderController {
         samplesPerPixel = 0;
         passes = 0;
         cameraPending = false;
-        activeNanos = 0;
-        runningSince = nanoTime.getAsLong();
+        clock.restart();
         if (state == State.DONE) {
             state = State.RUNNING;
         }
@@ -357,6 +323,13 @@ final class RenderController {
                 onPass(g, spp, image);
             }
         });
+    }
+
+    /** Unless closed: a glance at the change, then full resolution from the first sample. */
+    private void renderAgain() {
+        if (state != State.CLOSED) {
+            startJob(Mode.GLANCE);
+        }
     }
 
     static int previewSize(int size) {
@@ -406,7 +379,7 @@ final class RenderController {
         if (job != null) {
             job.pause();
         }
-        stopClock();
+        clock.stop();
     }
 
     /** Resumes the job and the clock. */
@@ -414,9 +387,7 @@ final class RenderController {
         if (job != null) {
             job.resume();
         }
-        if (runningSince < 0) {
-            runningSince = nanoTime.getAsLong();
-        }
+        clock.start();
     }
 
     private boolean holds() {
@@ -425,17 +396,5 @@ final class RenderController {
 
     private boolean reachedStop() {
         return !preview && stopAt != UNLIMITED && samplesPerPixel >= stopAt;
-    }
-
-    private void stopClock() {
-        if (runningSince >= 0) {
-            activeNanos += nanoTime.getAsLong() - runningSince;
-            runningSince = -1;
-        }
-    }
-
-    private double seconds() {
-        long running = runningSince >= 0 ? nanoTime.getAsLong() - runningSince : 0;
-        return (activeNanos + running) * 1e-9;
     }
 }

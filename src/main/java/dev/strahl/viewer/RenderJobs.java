@@ -9,15 +9,41 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 
-/** What {@link RenderController} runs on outside tests: real render jobs and a timer thread. */
+/**
+ * What {@link RenderController} runs: render jobs, started by a {@link Starter}, and a
+ * {@link Scheduler} for delayed tasks; outside tests, real {@link RenderJob}s and a timer thread.
+ */
 final class RenderJobs {
     private RenderJobs() {
     }
 
+    /** A running render as the controller sees it: a {@link RenderJob}, or a stand-in in tests. */
+    interface Job {
+        void cancel();
+
+        void pause();
+
+        void resume();
+
+        long samplesDone();
+    }
+
+    /** Starts a job that reports its passes to {@code listener}. */
+    interface Starter {
+        Job start(Scene scene, RenderSettings settings, RenderListener listener);
+    }
+
+    /** Runs a task after a delay on some other thread; the returned handle cancels it. */
+    interface Scheduler {
+        Runnable schedule(Runnable task, long delayMillis);
+
+        void shutdown();
+    }
+
     /** Starts a {@link RenderJob}; the controller cancels, pauses and resumes it and reads its sample count. */
-    static RenderController.Job start(Scene scene, RenderSettings settings, RenderListener listener) {
+    static Job start(Scene scene, RenderSettings settings, RenderListener listener) {
         RenderJob job = RenderJob.start(scene, settings, listener);
-        return new RenderController.Job() {
+        return new Job() {
             @Override
             public void cancel() {
                 job.cancel();
@@ -41,13 +67,13 @@ final class RenderJobs {
     }
 
     /** A scheduler on one daemon thread ("strahl-viewer-timer"). */
-    static RenderController.Scheduler timer() {
+    static Scheduler timer() {
         ScheduledExecutorService timer = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "strahl-viewer-timer");
             t.setDaemon(true);
             return t;
         });
-        return new RenderController.Scheduler() {
+        return new Scheduler() {
             @Override
             public Runnable schedule(Runnable task, long delayMillis) {
                 ScheduledFuture<?> f = timer.schedule(task, delayMillis, TimeUnit.MILLISECONDS);

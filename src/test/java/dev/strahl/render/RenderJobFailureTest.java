@@ -70,10 +70,10 @@ class RenderJobFailureTest {
             assertThat(failure).isInstanceOf(IllegalStateException.class).hasCause(error);   // the error itself, unwrapped
             assertThat(failure.getCause()).isSameAs(error);
             film = job.film();
-            samplesAtTheEnd = RenderJob.samplesIn(film);
+            samplesAtTheEnd = film.totalSamples();
         }
         assertThat(samplesAtTheEnd).as("the failure came long before the last tile").isLessThan(256L * 256 * 4);
         Thread.sleep(200);
-        assertThat(RenderJob.samplesIn(film)).as("samples written after the job ended").isEqualTo(samplesAtTheEnd);
+        assertThat(film.totalSamples()).as("samples written after the job ended").isEqualTo(samplesAtTheEnd);
     }
 }

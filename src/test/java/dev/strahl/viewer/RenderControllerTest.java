@@ -24,7 +24,7 @@ class RenderControllerTest {
     static Scene cornell;
 
     /** A job that renders nothing: the test reports its passes. */
-    static final class FakeJob implements RenderController.Job {
+    static final class FakeJob implements RenderJobs.Job {
         final Scene scene;
         final RenderSettings settings;
         final RenderListener listener;
@@ -64,7 +64,7 @@ class RenderControllerTest {
     }
 
     /** Runs scheduled tasks when the test says so. */
-    static final class ManualScheduler implements RenderController.Scheduler {
+    static final class ManualScheduler implements RenderJobs.Scheduler {
         final List<Runnable> tasks = new ArrayList<>();
 
         @Override

@@ -35,18 +35,6 @@ public final class HeapBudget {
             return null;
         }
         return String.format(Locale.ROOT, "the mesh needs at least %s (%d triangles so far, at least %d bytes each), more than"
-                + " the Java heap's %s: give Java more memory (java -Xmx...)", bytes(need), triangles, MIN_BYTES_PER_TRIANGLE, bytes(heap));
-    }
-
-    /** 1536 → "1.5 KiB", binary units as -Xmx counts them. */
-    static String bytes(long n) {
-        String[] units = {"bytes", "KiB", "MiB", "GiB", "TiB"};
-        double v = n;
-        int u = 0;
-        while (v >= 1024 && u < units.length - 1) {
-            v /= 1024;
-            u++;
-        }
-        return u == 0 ? n + " bytes" : String.format(Locale.ROOT, "%.1f %s", v, units[u]);
+                + " the Java heap's %s: give Java more memory (java -Xmx...)", Units.bytes(need), triangles, MIN_BYTES_PER_TRIANGLE, Units.bytes(heap));
     }
 }
