@@ -23,6 +23,18 @@ public final class ImageFormatException extends IOException {
     }
 
     /**
+     * For a text line of a file (a header line): the message starts {@code "file:line: "}, as
+     * the scene readers' do.
+     *
+     * @param file    the file being read
+     * @param line    the line, from 1
+     * @param message what is wrong, without the file name and line
+     */
+    public ImageFormatException(Path file, int line, String message) {
+        super(file + ":" + line + ": " + message);
+    }
+
+    /**
      * @param file    the file being read
      * @param message what is wrong and where, without the file name
      * @param cause   the decoder's own exception, kept for {@code --debug}
