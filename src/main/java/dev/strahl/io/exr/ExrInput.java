@@ -58,10 +58,14 @@ final class ExrInput {
         return new ImageFormatException(file, "byte " + at + ": " + message);
     }
 
+    private ImageFormatException truncated(String what) {
+        return error(position, "the file ends inside " + what + " (it has " + size + " bytes): it is truncated");
+    }
+
     /** Makes {@code n} bytes at the position available in the window, or fails naming {@code what}. */
     private void need(int n, String what) throws IOException {
         if (n > remaining()) {
-            throw error(position, "the file ends (at byte " + size + ") inside " + what + ": it is truncated");
+            throw truncated(what);
         }
         long offset = position - windowStart;
         if (offset >= 0 && offset + n <= window.limit()) {
@@ -110,7 +114,7 @@ final class ExrInput {
 
     void skip(long n, String what) throws IOException {
         if (n > remaining()) {
-            throw error(position, "the file ends (at byte " + size + ") inside " + what + ": it is truncated");
+            throw truncated(what);
         }
         position += n;
     }
@@ -118,7 +122,7 @@ final class ExrInput {
     /** {@code n} bytes, after checking that the file holds them (so a huge n allocates nothing). */
     byte[] bytes(int n, String what) throws IOException {
         if (n > remaining()) {
-            throw error(position, "the file ends (at byte " + size + ") inside " + what + ": it is truncated");
+            throw truncated(what);
         }
         byte[] b = new byte[n];
         ByteBuffer dst = ByteBuffer.wrap(b);
@@ -154,7 +158,7 @@ final class ExrInput {
     /** Reads chunk data at the current position into {@code dst} (whose length was checked against the file). */
     void readFully(byte[] dst, int length) throws IOException {
         if (length > remaining()) {
-            throw error(position, "the file ends (at byte " + size + ") inside pixel data: it is truncated");
+            throw truncated("pixel data");
         }
         ByteBuffer b = ByteBuffer.wrap(dst, 0, length);
         while (b.hasRemaining()) {

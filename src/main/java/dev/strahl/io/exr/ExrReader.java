@@ -199,8 +199,8 @@ public final class ExrReader {
                         + " bytes of pixel data; its " + lines + " line(s) need " + rawSize + " uncompressed");
             }
             if (size > in.remaining()) {
-                throw in.error(offset, "the file ends (at byte " + in.size() + ") inside chunk " + index + " (y = " + y
-                        + ", " + size + " bytes from byte " + in.position() + "): it is truncated");
+                throw in.error(offset, "the file ends inside chunk " + index + " (y = " + y + ", " + size + " bytes from byte "
+                        + in.position() + "; the file has " + in.size() + "): it is truncated");
             }
             if (size == rawSize) {                 // stored uncompressed (NONE, or compression did not pay)
                 in.readFully(raw, size);
