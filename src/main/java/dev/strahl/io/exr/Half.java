@@ -34,8 +34,9 @@ public final class Half {
     }
 
     /**
-     * The half nearest to {@code value}, ties to the even one (IEEE 754's default rounding, as the
-     * OpenEXR library's {@code half} and Java 20's {@code Float.floatToFloat16} round). Magnitudes
+     * The half nearest to {@code value}, ties to the even one (IEEE 754's default rounding, as
+     * Java 20's {@code Float.floatToFloat16} and numpy's float16 round; ExrOpenExrCrossCheckTest
+     * compares with numpy). Magnitudes
      * from 65520 up round to infinity, as IEEE 754 prescribes: a HALF channel cannot hold them, and
      * saying so with ∞ is better than a clamped value that looks plausible; write FLOAT channels
      * for data that large. Values below 2^-25 in magnitude round to ±0; NaN stays NaN (the top

@@ -16,8 +16,8 @@ import java.util.regex.Pattern;
  * <p><b>The format.</b> A text header: a first line starting with {@code #?} (usually
  * {@code #?RADIANCE} or {@code #?RGBE}), then lines of {@code NAME=value} or comments, ended by an
  * empty line; {@code FORMAT} must be {@code 32-bit_rle_rgbe} if present (XYZE pictures are refused),
- * other lines (EXPOSURE, GAMMA, PRIMARIES, ...) are ignored, as Mitsuba 3 and most renderers
- * ignore them. Then the resolution line, {@code -Y H +X W} for the usual top-to-bottom rows; the
+ * other lines (EXPOSURE, GAMMA, PRIMARIES, ...) are ignored: the pixels are taken as the
+ * radiance they store. Then the resolution line, {@code -Y H +X W} for the usual top-to-bottom rows; the
  * other seven orientations ({@code +Y H +X W} bottom-up, {@code -X}, and the transposed
  * {@code ±X W ±Y H}) are turned into the same top-row-first layout. Then the scanlines, each either
  * flat (four bytes per pixel: mantissas r, g, b and a shared exponent e) or, for scanlines of 8 to
@@ -25,7 +25,8 @@ import java.util.regex.Pattern;
  * big-endian number, then the r, g, b and e bytes of the scanline one component after the other,
  * each as counts c &gt; 128 (a run: the next byte c − 128 times) and 1 ≤ c ≤ 128 (c literal
  * bytes). Old-style run-length encoding (a pixel 1, 1, 1, n repeating the one before) is not
- * decoded: such pixels are read as they are, as Mitsuba 3 and stb_image do.
+ * decoded: such pixels are read as they are, as stb_image and Bruce Walter's widely copied
+ * {@code rgbe.c} do; a file that then comes out short says it may be that.
  *
  * <p><b>Values.</b> A pixel (r, g, b, e) is (r, g, b) · 2^(e − 136), and black if e = 0, exactly
  * as Mitsuba 3 decodes RGBE (DESIGN.md §3; Radiance itself adds ½ to each mantissa); every such
