@@ -14,7 +14,7 @@ import com.tngtech.archunit.lang.ArchRule;
  * The package map of docs/architecture.md, checked on the compiled main classes, so that a wrong
  * import fails the build instead of a review. Bottom to top (a layer may use the layers below it):
  * <pre>
- * image ← math ← sampling ← { geometry, material, film } ← { accel, light, camera, io.image } ← world
+ * image ← math ← sampling ← { geometry, material, film } ← { accel, light, camera, io.image ← io.exr } ← world
  *   ← integrator ← photon ← scene ← render ← io.text ← { io.obj, io.ply } ← io.mesh ← io.json ← io
  *   ← bench ← viewer ← cli
  * </pre>
@@ -41,7 +41,7 @@ class ArchitectureTest {
 
     /** The layers bottom to top; each may use only those before it. */
     private static final String[] LAYERS = {"image", "math", "sampling", "geometry", "material", "film", "accel", "light", "camera",
-        "io.image", "world", "integrator", "photon", "scene", "render", "io.text", "io.obj", "io.ply", "io.mesh", "io.json", "io",
+        "io.image", "io.exr", "world", "integrator", "photon", "scene", "render", "io.text", "io.obj", "io.ply", "io.mesh", "io.json", "io",
         "bench", "viewer", "cli"};
 
     @ArchTest

@@ -2,6 +2,10 @@ package dev.strahl.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import dev.strahl.io.exr.ExrReader;
+import dev.strahl.io.image.HdrReader;
+import dev.strahl.io.image.ImageFormatException;
+import dev.strahl.io.image.TextureImages;
 import dev.strahl.io.obj.MtlReader;
 import dev.strahl.scene.SceneException;
 import dev.strahl.testing.Fuzzer;
@@ -20,9 +24,10 @@ import net.jqwik.api.lifecycle.AfterContainer;
 import net.jqwik.api.lifecycle.BeforeContainer;
 
 /**
- * Fuzzing of the OBJ, MTL, PLY and scene-file readers: random and mutated files may be accepted or
- * rejected with a {@link SceneException}, never end in another exception, a hang or running out
- * of memory. Each parser gets a bounded budget ({@link Fuzzer#budget()}); every input that once
+ * Fuzzing of the OBJ, MTL, PLY and scene-file readers and of the image readers (EXR, Radiance HDR,
+ * PNG/JPEG textures): random and mutated files may be accepted or rejected with the reader's own
+ * error (a {@link SceneException}; an {@link ImageFormatException} for images), never end in
+ * another exception, a hang or running out of memory. Each parser gets a bounded budget ({@link Fuzzer#budget()}); every input that once
  * broke a parser is kept in {@code src/test/resources/fuzz/} and replayed by
  * {@link FuzzRegressionTest}. jqwik examples, since its generators run only inside jqwik.
  */
@@ -77,6 +82,18 @@ class ParserFuzzTest {
         return SceneLoader::load;
     }
 
+    static Fuzzer.Target exrTarget() {
+        return ExrReader::read;
+    }
+
+    static Fuzzer.Target hdrTarget() {
+        return HdrReader::read;
+    }
+
+    static Fuzzer.Target pngTarget() {
+        return TextureImages::read;                 // PNG or JPEG, told apart by content
+    }
+
     @Example
     void objReaderOnlyEverThrowsSceneException() throws IOException {
         fuzz("obj", objTarget(), "fuzz.obj", mix(FuzzInputs.randomObj(),
@@ -101,12 +118,35 @@ class ParserFuzzTest {
         fuzz("ply", plyTarget(), "fuzz.ply", mix(FuzzInputs.randomPly(), FuzzInputs.mutated(FuzzInputs.plySeeds(), FuzzInputs.PLY_WORDS)));
     }
 
+    @Example
+    void exrReaderOnlyEverThrowsImageFormatException() throws IOException {
+        fuzz("exr", exrTarget(), ImageFormatException.class, "fuzz.exr", mix(ImageFuzzInputs.randomExr(),
+                ImageFuzzInputs.mutated(ImageFuzzInputs.exrSeeds(), ImageFuzzInputs.EXR_WORDS)));
+    }
+
+    @Example
+    void hdrReaderOnlyEverThrowsImageFormatException() throws IOException {
+        fuzz("hdr", hdrTarget(), ImageFormatException.class, "fuzz.hdr", mix(ImageFuzzInputs.randomHdr(),
+                ImageFuzzInputs.mutated(ImageFuzzInputs.hdrSeeds(), ImageFuzzInputs.HDR_WORDS)));
+    }
+
+    @Example
+    void textureReaderOnlyEverThrowsImageFormatException() throws IOException {
+        fuzz("png", pngTarget(), ImageFormatException.class, "fuzz.png", mix(ImageFuzzInputs.randomPng(),
+                ImageFuzzInputs.mutated(ImageFuzzInputs.pngSeeds(), ImageFuzzInputs.PNG_WORDS)));
+    }
+
     private static Arbitrary<byte[]> mix(Arbitrary<byte[]> random, Arbitrary<byte[]> mutated) {
         return Arbitraries.frequencyOf(Tuple.of(1, random), Tuple.of(1, mutated));
     }
 
     private static void fuzz(String name, Fuzzer.Target target, String fileName, Arbitrary<byte[]> inputs) throws IOException {
-        Fuzzer.Report report = new Fuzzer(name, target, SceneException.class, work.resolve(fileName))
+        fuzz(name, target, SceneException.class, fileName, inputs);
+    }
+
+    private static void fuzz(String name, Fuzzer.Target target, Class<? extends Exception> allowed, String fileName,
+            Arbitrary<byte[]> inputs) throws IOException {
+        Fuzzer.Report report = new Fuzzer(name, target, allowed, work.resolve(fileName))
                 .run(inputs, Fuzzer.budget(), Fuzzer.seed());
         System.out.println(report);
         Path reports = Path.of("target", "fuzz-reports");
