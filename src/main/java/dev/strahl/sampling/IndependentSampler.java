@@ -9,14 +9,13 @@ package dev.strahl.sampling;
  * <p>{@link #startStream} starts a stream that is no pixel sample (the photon mapper's photon j
  * of iteration i): its dimensions count from 0, and {@link #getPixel2D} does not apply.
  */
-public final class IndependentSampler implements Sampler {
+public final class IndependentSampler extends StreamSampler {
     private final long seed;
-    private long stream;
-    private int dimension;
     private boolean pixelSample;
 
     /** A sampler for pixel samples of a render with this seed (the seed does not matter for {@link #startStream}). */
     public IndependentSampler(long seed) {
+        super(0);
         this.seed = seed;
     }
 
@@ -37,31 +36,18 @@ public final class IndependentSampler implements Sampler {
     @Override
     public Sample2D getPixel2D(Sample2D dest) {
         assert pixelSample : "getPixel2D in a stream started by startStream";
-        dest.u1 = value(0);
-        dest.u2 = value(1);
+        dest.u1 = streamValue(0);
+        dest.u2 = streamValue(1);
         return dest;
     }
 
     @Override
     public double get1D() {
-        return value(dimension++);
+        return streamValue(dimension++);
     }
 
     @Override
     public Sample2D get2D(Sample2D dest) {
-        int d = dimension;
-        dimension = d + 2;
-        dest.u1 = value(d);
-        dest.u2 = value(d + 1);
-        return dest;
-    }
-
-    /** The next dimension, for tests. */
-    int dimension() {
-        return dimension;
-    }
-
-    private double value(int d) {
-        return SplitMix64.toUnit(SplitMix64.at(stream, d + 1L));
+        return streamPair(dimension, dest);
     }
 }

@@ -18,22 +18,21 @@ package dev.strahl.sampling;
  * index), the same stream as {@link IndependentSampler}'s; there {@link #get2D} takes the next two
  * dimensions, since every dimension is independent anyway.
  */
-public final class StratifiedSampler implements Sampler {
+public final class StratifiedSampler extends StreamSampler {
     /** Dimensions drawn from stratified points: the pixel position and the path tracer's first vertex. */
     public static final int STRATIFIED_DIMENSIONS = 8;
     static final int STRATIFIED_PAIRS = STRATIFIED_DIMENSIONS / 2;
 
     private final long seed;
     private final long pixelSeedBase;
-    private long stream;
     private int pixelSeed;
     private int sampleIndex;
-    private int dimension;
     private int pair;              // the pair whose point is in pairX, pairY; -1 for none
     private int pairX, pairY;
 
     /** A sampler for the pixel samples of a render with this seed. */
     public StratifiedSampler(long seed) {
+        super(STRATIFIED_DIMENSIONS);
         this.seed = seed;
         this.pixelSeedBase = SplitMix64.mix64(seed + SplitMix64.GOLDEN_GAMMA);
     }
@@ -78,15 +77,7 @@ public final class StratifiedSampler implements Sampler {
                 return point(d >> 1, dest);
             }
         }
-        dimension = d + 2;
-        dest.u1 = streamValue(d);
-        dest.u2 = streamValue(d + 1);
-        return dest;
-    }
-
-    /** The next dimension, for tests. */
-    int dimension() {
-        return dimension;
+        return streamPair(d, dest);
     }
 
     private int pairSeed(int p) {
@@ -98,9 +89,5 @@ public final class StratifiedSampler implements Sampler {
         dest.u1 = OwenSobol.toUnit((int) (xy >>> 32));
         dest.u2 = OwenSobol.toUnit((int) xy);
         return dest;
-    }
-
-    private double streamValue(int d) {
-        return SplitMix64.toUnit(SplitMix64.at(stream, d - (STRATIFIED_DIMENSIONS - 1L)));
     }
 }
