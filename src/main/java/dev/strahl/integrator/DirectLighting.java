@@ -2,11 +2,9 @@ package dev.strahl.integrator;
 
 import dev.strahl.math.MutableRgb;
 import dev.strahl.geometry.Ray;
-import dev.strahl.light.LightSampler;
 import dev.strahl.material.BsdfSample;
 import dev.strahl.material.Bsdf;
 import dev.strahl.math.MathUtil;
-import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Sampler;
 import dev.strahl.world.World;
 
@@ -36,21 +34,14 @@ public final class DirectLighting implements Integrator {
 
     @Override
     public Worker newWorker() {
-        return new Worker() {
-            private final Tracer tracer = new Tracer(world, bsdfs, cullBackFaces);
-            private final LightSampler lights = world.lights();
+        return new TracingWorker(world, bsdfs, cullBackFaces) {
             private final Shading s = new Shading();
             private final MutableRgb beta = new MutableRgb();
 
             @Override
-            public long rayCount() {
-                return tracer.rayCount();
-            }
-
-            @Override
             public void radiance(Ray ray, Sampler sampler, MutableRgb out) {
                 if (tracer.trace(ray, s) < 0) {
-                    out.set(world.environment());
+                    out.set(environment);
                     return;
                 }
                 out.set(s.emitted);
@@ -68,7 +59,7 @@ public final class DirectLighting implements Integrator {
                 s.spawn(ray, s.wi);
                 double t = tracer.trace(ray, s);
                 if (t < 0) {
-                    out.addProduct(beta, world.environment(), 1);
+                    out.addProduct(beta, environment, 1);
                     return;
                 }
                 if (!s.emitted.isBlack()) {

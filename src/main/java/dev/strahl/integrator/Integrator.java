@@ -16,6 +16,14 @@ import dev.strahl.sampling.Sampler;
  */
 public interface Integrator {
 
+    /** Returns {@code maxDepth} if it is -1 (unbounded) or at least 1; throws otherwise. */
+    static int checkMaxDepth(int maxDepth) {
+        if (maxDepth == 0 || maxDepth < -1) {
+            throw new IllegalArgumentException("maxDepth must be -1 (unbounded) or >= 1, got " + maxDepth);
+        }
+        return maxDepth;
+    }
+
     /** A new per-thread worker; never share one between threads. */
     Worker newWorker();
 

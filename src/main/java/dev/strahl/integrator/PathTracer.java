@@ -2,11 +2,9 @@ package dev.strahl.integrator;
 
 import dev.strahl.math.MutableRgb;
 import dev.strahl.geometry.Ray;
-import dev.strahl.light.LightSampler;
 import dev.strahl.material.Bsdf;
 import dev.strahl.material.BsdfSample;
 import dev.strahl.math.MathUtil;
-import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Sampler;
 import dev.strahl.world.World;
 
@@ -48,11 +46,8 @@ public final class PathTracer implements Integrator {
     private final DirectLight.Use lightUse;
 
     public PathTracer(World world, int maxDepth, boolean uniformHemisphere, boolean cullBackFaces, Strategy strategy) {
-        if (maxDepth == 0 || maxDepth < -1) {
-            throw new IllegalArgumentException("maxDepth must be -1 (unbounded) or >= 1, got " + maxDepth);
-        }
         this.world = world;
-        this.maxDepth = maxDepth;
+        this.maxDepth = Integrator.checkMaxDepth(maxDepth);
         this.cullBackFaces = cullBackFaces;
         this.strategy = strategy;
         this.lightUse = switch (strategy) {
@@ -68,16 +63,12 @@ public final class PathTracer implements Integrator {
         return new PathWorker();
     }
 
-    private final class PathWorker implements Worker {
-        private final Tracer tracer = new Tracer(world, bsdfs, cullBackFaces);
-        private final LightSampler lights = world.lights();
-        private final Rgb environment = world.environment();
+    private final class PathWorker extends TracingWorker {
         private final Shading s = new Shading();
         private final MutableRgb beta = new MutableRgb();
 
-        @Override
-        public long rayCount() {
-            return tracer.rayCount();
+        PathWorker() {
+            super(world, bsdfs, cullBackFaces);
         }
 
         @Override

@@ -4,7 +4,6 @@ import dev.strahl.math.MutableRgb;
 import dev.strahl.geometry.Ray;
 import dev.strahl.material.Bsdf;
 import dev.strahl.material.BsdfSample;
-import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Sampler;
 import dev.strahl.world.World;
 import org.joml.Vector3d;
@@ -33,9 +32,7 @@ public final class Whitted implements Integrator {
     private final int lightSamples;
 
     public Whitted(World world, int maxDepth, boolean cullBackFaces, int lightSamples) {
-        if (maxDepth == 0 || maxDepth < -1) {
-            throw new IllegalArgumentException("maxDepth must be -1 (unbounded) or >= 1, got " + maxDepth);
-        }
+        Integrator.checkMaxDepth(maxDepth);
         if (lightSamples < 1) {
             throw new IllegalArgumentException("light samples must be >= 1, got " + lightSamples);
         }
@@ -51,8 +48,7 @@ public final class Whitted implements Integrator {
         return new WhittedWorker();
     }
 
-    private final class WhittedWorker implements Worker {
-        private final Tracer tracer = new Tracer(world, bsdfs, cullBackFaces);
+    private final class WhittedWorker extends TracingWorker {
         // Scratch per recursion level, so that a level's state survives its children.
         private final Shading[] shading = new Shading[maxDepth + 1];
         private final BsdfSample[][] lobes = new BsdfSample[maxDepth + 1][2];
@@ -60,17 +56,13 @@ public final class Whitted implements Integrator {
         private final Vector3d wi = new Vector3d();
 
         WhittedWorker() {
+            super(world, bsdfs, cullBackFaces);
             for (int i = 0; i <= maxDepth; i++) {
                 shading[i] = new Shading();
                 lobes[i][0] = new BsdfSample();
                 lobes[i][1] = new BsdfSample();
                 beta[i] = new MutableRgb();
             }
-        }
-
-        @Override
-        public long rayCount() {
-            return tracer.rayCount();
         }
 
         @Override
@@ -85,7 +77,7 @@ public final class Whitted implements Integrator {
             MutableRgb weight = beta[depth - 1];
             Shading s = shading[depth];
             if (tracer.trace(ray, s) < 0) {
-                out.addProduct(weight, world.environment(), 1);
+                out.addProduct(weight, environment, 1);
                 return;
             }
             out.addProduct(weight, s.emitted, 1);

@@ -2,17 +2,14 @@ package dev.strahl.photon;
 
 import dev.strahl.integrator.Parallel;
 import dev.strahl.integrator.PathTracer;
-import dev.strahl.integrator.Tracer;
+import dev.strahl.integrator.TracingWorker;
 import dev.strahl.math.MutableRgb;
 import dev.strahl.integrator.DirectLight;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Shading;
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Ray;
-import dev.strahl.light.LightSampler;
 import dev.strahl.material.Bsdf;
-import dev.strahl.material.BsdfSample;
-import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Sampler;
 import dev.strahl.world.World;
 import org.joml.Vector3d;
@@ -82,12 +79,9 @@ public final class PhotonMapper implements Integrator {
 
     public PhotonMapper(World world, int maxDepth, boolean uniformHemisphere, boolean cullBackFaces, int photonsPerIteration,
                         double initialRadius) {
-        if (maxDepth == 0 || maxDepth < -1) {
-            throw new IllegalArgumentException("maxDepth must be -1 (unbounded) or >= 1, got " + maxDepth);
-        }
         this.world = world;
         this.bsdfs = Shading.bsdfs(world, uniformHemisphere);
-        this.maxDepth = maxDepth;
+        this.maxDepth = Integrator.checkMaxDepth(maxDepth);
         this.cullBackFaces = cullBackFaces;
         this.photonsPerIteration = photonsPerIteration;
         this.initialRadius = initialRadius > 0 ? initialRadius : automaticRadius(world);
@@ -171,11 +165,8 @@ public final class PhotonMapper implements Integrator {
         return new PhotonWorker();
     }
 
-    private final class PhotonWorker implements Worker, PhotonMap.Visitor {
-        private final Tracer tracer = new Tracer(world, bsdfs, cullBackFaces);
+    private final class PhotonWorker extends TracingWorker implements PhotonMap.Visitor {
         final PhotonTracer photons = new PhotonTracer(tracer, new PhotonSource(world), maxDepth);
-        private final LightSampler lights = world.lights();
-        private final Rgb environment = world.environment();
         private final Shading s = new Shading();
         private final Vector3d wp = new Vector3d();
         private final Vector3d wpLocal = new Vector3d();
@@ -186,9 +177,8 @@ public final class PhotonMapper implements Integrator {
         private float[] photonData;
         private int maxSegments;
 
-        @Override
-        public long rayCount() {
-            return tracer.rayCount();
+        PhotonWorker() {
+            super(world, bsdfs, cullBackFaces);
         }
 
         @Override

@@ -8,7 +8,6 @@ import dev.strahl.geometry.SurfacePoint;
 import dev.strahl.material.Bsdf;
 import dev.strahl.material.Dielectric;
 import dev.strahl.material.Fresnel;
-import dev.strahl.image.Rgb;
 import dev.strahl.sampling.IndependentSampler;
 import dev.strahl.sampling.SplitMix64;
 import org.joml.Vector3d;
