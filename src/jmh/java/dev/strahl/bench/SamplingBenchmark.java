@@ -4,7 +4,10 @@ import dev.strahl.material.BsdfSample;
 import dev.strahl.material.Glossy;
 import dev.strahl.material.Lambert;
 import dev.strahl.image.Rgb;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.IndependentSampler;
+import dev.strahl.sampling.Sample2D;
+import dev.strahl.sampling.Sampler;
+import dev.strahl.sampling.StratifiedSampler;
 import java.util.concurrent.TimeUnit;
 import org.joml.Vector3d;
 import org.openjdk.jmh.annotations.Benchmark;
@@ -17,7 +20,7 @@ import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 
-/** A BSDF sample (Lambert, Glossy) and the random numbers of one path vertex (stream and stratified). */
+/** A BSDF sample (Lambert, Glossy) and the random numbers of a pixel sample's first vertex (independent and stratified). */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.AverageTime)
 @OutputTimeUnit(TimeUnit.NANOSECONDS)
@@ -29,40 +32,43 @@ public class SamplingBenchmark {
     private final Glossy glossy = Glossy.fromPhongExponent(Rgb.gray(0.3), Rgb.gray(0.5), 50);
     private final Vector3d wo = new Vector3d(0.3, 0.2, 0.9).normalize();
     private final BsdfSample out = new BsdfSample();
-    private final Rng rng = new Rng(1);
+    private final IndependentSampler independent = new IndependentSampler(1);
+    private final StratifiedSampler stratified = new StratifiedSampler(1);
+    private final Sample2D u = new Sample2D();
     private int sample;
 
     @Benchmark
     public double lambertSample() {
-        lambert.sample(wo, rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), out);
+        independent.get2D(u);
+        lambert.sample(wo, independent.get1D(), u.u1, u.u2, out);
         return out.wi.z;
     }
 
     @Benchmark
     public double glossySample() {
-        glossy.sample(wo, rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), out);
+        independent.get2D(u);
+        glossy.sample(wo, independent.get1D(), u.u1, u.u2, out);
         return out.wi.z;
     }
 
-    /** Eight draws of the plain stream. */
+    /** The eight numbers of a pixel sample's first vertex from independent streams. */
     @Benchmark
-    public double streamEightDraws() {
-        rng.seed(Rng.streamSeed(1, 2, 3, sample++));
-        double s = 0;
-        for (int i = 0; i < 8; i++) {
-            s += rng.nextDouble();
-        }
-        return s;
+    public double independentFirstVertex() {
+        return firstVertex(independent);
     }
 
-    /** Eight stratified dimensions of a sample (four Owen-scrambled Sobol pairs). */
+    /** The same from the stratified sampler: its eight stratified dimensions (four Owen-scrambled Sobol pairs). */
     @Benchmark
-    public double stratifiedEightDraws() {
-        rng.startSample(1, 2, 3, sample++);
-        double s = 0;
-        for (int i = 0; i < 8; i++) {
-            s += rng.nextDouble();
-        }
-        return s;
+    public double stratifiedFirstVertex() {
+        return firstVertex(stratified);
+    }
+
+    /** Pixel position, light sample (pair, choice), BSDF sample (lobe, pair): the path tracer's first vertex. */
+    private double firstVertex(Sampler sampler) {
+        sampler.startPixelSample(2, 3, sample++);
+        double s = sampler.getPixel2D(u).u1 + u.u2;
+        s += sampler.get2D(u).u1 + u.u2;
+        s += sampler.get1D() + sampler.get1D();
+        return s + sampler.get2D(u).u1 + u.u2;
     }
 }

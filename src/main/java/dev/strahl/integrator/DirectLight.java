@@ -8,19 +8,32 @@ import dev.strahl.geometry.SurfacePoint;
 import dev.strahl.light.LightSample;
 import dev.strahl.light.LightSampler;
 import dev.strahl.material.Bsdf;
-import dev.strahl.math.Frame;
 import dev.strahl.math.MathUtil;
-import dev.strahl.image.Rgb;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.Sample2D;
+import dev.strahl.sampling.Sampler;
 import org.joml.Vector3d;
-import org.joml.Vector3dc;
 
 /**
  * Next-event estimation: light arriving directly from the area lights at a surface point,
  * estimated with shadow rays to points sampled on the lights. One per worker thread (it owns its
- * scratch objects); shared by the path tracer, direct lighting and Whitted.
+ * scratch objects); shared by the path tracer, direct lighting, Whitted and the photon mapper.
+ *
+ * <p>Each light sample draws its numbers first, whatever follows: a pair for the point on the
+ * light, then one number for the choice of light. So a caller that calls {@link #add} at every
+ * vertex keeps the dimensions after it in place even where nothing can be estimated (a delta
+ * BSDF, no lights, or {@link Use#DRAW_ONLY}); it never has to count what it did not draw.
  */
 public final class DirectLight {
+    /** What {@link #add} does with its light samples. */
+    public enum Use {
+        /** Draws their numbers and adds nothing: a strategy without light sampling (the path tracer's BSDF-only one). */
+        DRAW_ONLY,
+        /** Light sampling alone: weight w = 1. */
+        LIGHT_ONLY,
+        /** Weighted against one BSDF sample at the same point by the power heuristic. */
+        MIS
+    }
+
     private final Bvh bvh;
     private final LightSampler lights;
     private final TraversalStack stack;
@@ -31,6 +44,7 @@ public final class DirectLight {
     private final Vector3d toSurface = new Vector3d();
     private final Vector3d target = new Vector3d();
     private final MutableRgb f = new MutableRgb();
+    private final Sample2D uPoint = new Sample2D();
     public long rays;
 
     DirectLight(Bvh bvh, LightSampler lights, TraversalStack stack) {
@@ -40,30 +54,31 @@ public final class DirectLight {
     }
 
     /**
-     * Adds beta · (1/n) Σ f(wo, wi)·Le·|cosθi|·w / pdf over n light samples to {@code out}.
-     *
-     * @param bsdfWeight 0 for pure light sampling (w = 1); otherwise the number of BSDF samples
-     *                   taken at this point, and w is the power heuristic with sample counts
-     *                   (Veach 1997, eq. 9.13): (n·pl)² / ((n·pl)² + (nb·pb)²)
+     * Draws n light samples and, where the BSDF at {@code s} is not a pure delta, there are lights
+     * and {@code use} is not {@link Use#DRAW_ONLY}, adds beta · (1/n) Σ f(wo, wi)·Le·|cosθi|·w / pdf
+     * over them to {@code out}: w = 1 for {@link Use#LIGHT_ONLY}; for {@link Use#MIS} the power
+     * heuristic with sample counts against one BSDF sample (Veach 1997, eq. 9.13),
+     * (n·pl)² / ((n·pl)² + pb²).
      */
-    public void add(Bsdf bsdf, SurfacePoint sp, Frame frame, Vector3dc woLocal, Rng rng, int n, int bsdfWeight,
-             MutableRgb beta, MutableRgb out) {
+    public void add(Shading s, Sampler sampler, int n, Use use, MutableRgb beta, MutableRgb out) {
+        Bsdf bsdf = s.bsdf;
+        boolean estimate = use != Use.DRAW_ONLY && !bsdf.isDelta() && !lights.isEmpty();
         double scale = 1.0 / n;
         for (int i = 0; i < n; i++) {
-            // The point on the light first: a pair of dimensions of a stratified sampler.
-            double u1 = rng.nextDouble(), u2 = rng.nextDouble(), uLight = rng.nextDouble();
-            if (!lights.sample(sp.p, uLight, u1, u2, lightPoint, ls)) {
+            sampler.get2D(uPoint);                 // the point on the light: one stratified pair
+            double uLight = sampler.get1D();
+            if (!estimate || !lights.sample(s.sp.p, uLight, uPoint.u1, uPoint.u2, lightPoint, ls)) {
                 continue;
             }
-            frame.toLocal(ls.wi, wiLocal);
-            if (ls.wi.dot(sp.ng) * wiLocal.z <= 0) {
+            s.frame.toLocal(ls.wi, wiLocal);
+            if (ls.wi.dot(s.sp.ng) * wiLocal.z <= 0) {
                 continue;                          // shading and geometric normal disagree: no leaks
             }
-            bsdf.eval(woLocal, wiLocal, f);
-            if (f.isBlack() || !visible(sp)) {
+            bsdf.eval(s.woLocal, wiLocal, f);
+            if (f.isBlack() || !visible(s.sp)) {
                 continue;
             }
-            double w = bsdfWeight == 0 ? 1 : MathUtil.powerHeuristic(n * ls.pdf, bsdfWeight * bsdf.pdf(woLocal, wiLocal));
+            double w = use == Use.LIGHT_ONLY ? 1 : MathUtil.powerHeuristic(n * ls.pdf, bsdf.pdf(s.woLocal, wiLocal));
             f.mul(ls.radiance);
             out.addProduct(beta, f, Math.abs(wiLocal.z) * w * scale / ls.pdf);
         }

@@ -2,20 +2,19 @@ package dev.strahl.integrator;
 
 import dev.strahl.math.MutableRgb;
 import dev.strahl.geometry.Ray;
-import dev.strahl.light.LightSampler;
 import dev.strahl.material.BsdfSample;
 import dev.strahl.material.Bsdf;
 import dev.strahl.math.MathUtil;
-import dev.strahl.image.Rgb;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.Sampler;
 import dev.strahl.world.World;
-import org.joml.Vector3d;
 
 /**
  * Direct lighting: emission seen by the camera plus light that reaches the first surface straight
  * from an emitter, estimated with {@code lightSamples} light samples and one BSDF sample combined
  * by multiple importance sampling (power heuristic with sample counts). It computes the same
  * quantity as the path tracer at max depth 2; soft shadows sharpen with more light samples.
+ * Random numbers: the light samples' (pair, then light choice, each), then the BSDF sample's (lobe,
+ * then direction pair), at every first hit, as at the path tracer's first vertex.
  */
 public final class DirectLighting implements Integrator {
     private final World world;
@@ -35,48 +34,32 @@ public final class DirectLighting implements Integrator {
 
     @Override
     public Worker newWorker() {
-        return new Worker() {
-            private final Tracer tracer = new Tracer(world, bsdfs, cullBackFaces);
-            private final LightSampler lights = world.lights();
+        return new TracingWorker(world, bsdfs, cullBackFaces) {
             private final Shading s = new Shading();
-            private final BsdfSample bs = new BsdfSample();
-            private final Vector3d wi = new Vector3d();
             private final MutableRgb beta = new MutableRgb();
 
             @Override
-            public long rayCount() {
-                return tracer.rayCount();
-            }
-
-            @Override
-            public void radiance(Ray ray, Rng rng, MutableRgb out) {
+            public void radiance(Ray ray, Sampler sampler, MutableRgb out) {
                 if (tracer.trace(ray, s) < 0) {
-                    out.set(world.environment());
+                    out.set(environment);
                     return;
                 }
                 out.set(s.emitted);
                 Bsdf bsdf = s.bsdf;
                 beta.set(1, 1, 1);
                 boolean lightSampling = !bsdf.isDelta() && !lights.isEmpty();
-                if (lightSampling) {
-                    tracer.direct.add(bsdf, s.sp, s.frame, s.woLocal, rng, lightSamples, 1, beta, out);
-                }
+                tracer.direct.add(s, sampler, lightSamples, DirectLight.Use.MIS, beta, out);
                 // One BSDF sample: the light it finds, weighted against the light samples.
-                if (!bsdf.sample(s.woLocal, rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), bs)) {
+                if (!s.sampleBsdf(sampler)) {
                     return;
                 }
-                s.frame.toWorld(bs.wi, wi);
-                if (wi.dot(s.sp.ng) * bs.wi.z <= 0) {
-                    return;
-                }
+                BsdfSample bs = s.bs;
                 double bsdfPdf = bs.pdf;
                 beta.set(bs.weight);
-                s.sp.spawnOrigin(wi, ray.o);
-                ray.d.set(wi);
-                ray.tMax = Double.POSITIVE_INFINITY;
+                s.spawn(ray, s.wi);
                 double t = tracer.trace(ray, s);
                 if (t < 0) {
-                    out.addProduct(beta, world.environment(), 1);
+                    out.addProduct(beta, environment, 1);
                     return;
                 }
                 if (!s.emitted.isBlack()) {

@@ -2,8 +2,7 @@ package dev.strahl.integrator;
 
 import dev.strahl.math.MutableRgb;
 import dev.strahl.geometry.Ray;
-import dev.strahl.image.Rgb;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.Sampler;
 
 /**
  * Computes the radiance arriving along camera rays. An integrator is shared by all threads; the
@@ -16,6 +15,14 @@ import dev.strahl.sampling.Rng;
  * {@link #prepareSample} before each pass, while no worker is computing radiance.
  */
 public interface Integrator {
+
+    /** Returns {@code maxDepth} if it is -1 (unbounded) or at least 1; throws otherwise. */
+    static int checkMaxDepth(int maxDepth) {
+        if (maxDepth == 0 || maxDepth < -1) {
+            throw new IllegalArgumentException("maxDepth must be -1 (unbounded) or >= 1, got " + maxDepth);
+        }
+        return maxDepth;
+    }
 
     /** A new per-thread worker; never share one between threads. */
     Worker newWorker();
@@ -41,10 +48,12 @@ public interface Integrator {
     interface Worker {
         /**
          * Writes the radiance arriving at the ray's origin along {@code -ray.d} into {@code out}.
-         * A pure function of the ray, the random stream and the prepared sample index; may
-         * modify {@code ray}.
+         * A pure function of the ray, the sampler's numbers and the prepared sample index; may
+         * modify {@code ray}. The sampler has been started for the sample (and the camera has
+         * taken the pixel position); what the integrator draws begins at dimension
+         * {@link Sampler#FIRST_INTEGRATOR_DIMENSION}.
          */
-        void radiance(Ray ray, Rng rng, MutableRgb out);
+        void radiance(Ray ray, Sampler sampler, MutableRgb out);
 
         /** Rays traced by this worker so far (camera, continuation and shadow rays, and any traced for {@link #prepareSample}). */
         long rayCount();

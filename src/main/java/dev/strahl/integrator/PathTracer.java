@@ -2,14 +2,11 @@ package dev.strahl.integrator;
 
 import dev.strahl.math.MutableRgb;
 import dev.strahl.geometry.Ray;
-import dev.strahl.light.LightSampler;
 import dev.strahl.material.Bsdf;
 import dev.strahl.material.BsdfSample;
 import dev.strahl.math.MathUtil;
-import dev.strahl.image.Rgb;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.Sampler;
 import dev.strahl.world.World;
-import org.joml.Vector3d;
 
 /**
  * Unidirectional path tracing with next-event estimation and multiple importance sampling
@@ -20,11 +17,16 @@ import org.joml.Vector3d;
  *
  * <p>{@code maxDepth} counts path segments including the camera segment: 1 shows only emitters
  * seen directly, 2 adds direct lighting, -1 is unbounded.
+ *
+ * <p><b>Random numbers.</b> Every vertex that scatters draws the same calls in the same order,
+ * whatever its surface: the light sample (a pair for the point on the light, one number for the
+ * choice of light, drawn by {@link DirectLight#add} even where no light sample is taken), the BSDF
+ * sample (one number for the lobe, a pair for the direction) and, from depth {@value #RR_DEPTH}
+ * on, one number for Russian roulette. With the stratified sampler the first vertex's numbers are
+ * its dimensions 2–7: the pairs (light point), (light choice, lobe choice), (BSDF direction).
  */
 public final class PathTracer implements Integrator {
     public static final int RR_DEPTH = 5;
-    /** Random numbers one light sample takes (point on the light, then the light's choice). */
-    private static final int LIGHT_DIMENSIONS = 3;
 
     /** How light reaching a surface directly from an emitter is estimated. */
     public enum Strategy {
@@ -41,15 +43,18 @@ public final class PathTracer implements Integrator {
     private final int maxDepth;
     private final boolean cullBackFaces;
     private final Strategy strategy;
+    private final DirectLight.Use lightUse;
 
     public PathTracer(World world, int maxDepth, boolean uniformHemisphere, boolean cullBackFaces, Strategy strategy) {
-        if (maxDepth == 0 || maxDepth < -1) {
-            throw new IllegalArgumentException("maxDepth must be -1 (unbounded) or >= 1, got " + maxDepth);
-        }
         this.world = world;
-        this.maxDepth = maxDepth;
+        this.maxDepth = Integrator.checkMaxDepth(maxDepth);
         this.cullBackFaces = cullBackFaces;
         this.strategy = strategy;
+        this.lightUse = switch (strategy) {
+            case MIS -> DirectLight.Use.MIS;
+            case BSDF -> DirectLight.Use.DRAW_ONLY;
+            case LIGHT -> DirectLight.Use.LIGHT_ONLY;
+        };
         this.bsdfs = Shading.bsdfs(world, uniformHemisphere);
     }
 
@@ -58,22 +63,16 @@ public final class PathTracer implements Integrator {
         return new PathWorker();
     }
 
-    private final class PathWorker implements Worker {
-        private final Tracer tracer = new Tracer(world, bsdfs, cullBackFaces);
-        private final LightSampler lights = world.lights();
-        private final Rgb environment = world.environment();
+    private final class PathWorker extends TracingWorker {
         private final Shading s = new Shading();
-        private final BsdfSample bs = new BsdfSample();
-        private final Vector3d wiWorld = new Vector3d();
         private final MutableRgb beta = new MutableRgb();
 
-        @Override
-        public long rayCount() {
-            return tracer.rayCount();
+        PathWorker() {
+            super(world, bsdfs, cullBackFaces);
         }
 
         @Override
-        public void radiance(Ray ray, Rng rng, MutableRgb out) {
+        public void radiance(Ray ray, Sampler sampler, MutableRgb out) {
             out.setZero();
             beta.set(1, 1, 1);
             double prevPdf = 0;
@@ -97,31 +96,21 @@ public final class PathTracer implements Integrator {
                 if (maxDepth > 0 && depth >= maxDepth) {
                     return;
                 }
-                Bsdf bsdf = s.bsdf;
-                if (!bsdf.isDelta() && !lights.isEmpty() && strategy != Strategy.BSDF) {
-                    tracer.direct.add(bsdf, s.sp, s.frame, s.woLocal, rng, 1, strategy == Strategy.MIS ? 1 : 0, beta, out);
-                } else {
-                    rng.skip(LIGHT_DIMENSIONS);        // keeps the BSDF sample on its pair of dimensions
-                }
+                tracer.direct.add(s, sampler, 1, lightUse, beta, out);
 
                 // Continue the path by sampling the BSDF.
-                if (!bsdf.sample(s.woLocal, rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), bs)) {
+                if (!s.sampleBsdf(sampler)) {
                     return;
                 }
-                s.frame.toWorld(bs.wi, wiWorld);
-                if (wiWorld.dot(s.sp.ng) * bs.wi.z <= 0) {
-                    return;                        // shading and geometric normal disagree: avoid light leaks
-                }
+                BsdfSample bs = s.bs;
                 beta.mul(bs.weight);
                 prevPdf = bs.pdf;
                 prevDelta = bs.delta;
-                s.sp.spawnOrigin(wiWorld, ray.o);
-                ray.d.set(wiWorld);
-                ray.tMax = Double.POSITIVE_INFINITY;
+                s.spawn(ray, s.wi);
 
                 if (depth >= RR_DEPTH) {
                     double q = Math.min(beta.max(), 0.95);
-                    if (!(rng.nextDouble() < q)) {     // also ends a path whose throughput became NaN
+                    if (!(sampler.get1D() < q)) {      // also ends a path whose throughput became NaN
                         return;
                     }
                     beta.mul(1 / q);

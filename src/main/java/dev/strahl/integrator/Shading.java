@@ -4,20 +4,30 @@ import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.SurfacePoint;
 import dev.strahl.material.Bsdf;
+import dev.strahl.material.BsdfSample;
 import dev.strahl.math.Frame;
 import dev.strahl.image.Rgb;
+import dev.strahl.sampling.Sample2D;
+import dev.strahl.sampling.Sampler;
 import dev.strahl.world.World;
 import org.joml.Vector3d;
+import org.joml.Vector3dc;
 
 /**
- * What every integrator needs at a hit: the surface point, its material's BSDF and emission, and
- * the local shading frame with wo in it. One per worker thread, reused at every hit.
+ * What every integrator needs at a hit: the surface point, its material's BSDF and emission, the
+ * local shading frame with wo in it, and the BSDF sample taken there. One per worker thread,
+ * reused at every hit.
  */
 public final class Shading {
     public final SurfacePoint sp = new SurfacePoint();
     public final Frame frame = new Frame();
     public final Vector3d woLocal = new Vector3d();
+    /** The last {@link #sampleBsdf} result; {@code bs.wi} is in the local frame. */
+    public final BsdfSample bs = new BsdfSample();
+    /** The last {@link #sampleBsdf} direction in world space. */
+    public final Vector3d wi = new Vector3d();
     private final Vector3d wo = new Vector3d();
+    private final Sample2D uDirection = new Sample2D();
     public Bsdf bsdf;
     /** Emitted radiance towards the ray's origin: black unless the front of an emitter was hit. */
     public Rgb emitted;
@@ -57,5 +67,28 @@ public final class Shading {
         }
         frame.set(sp.n);
         frame.toLocal(wo, woLocal);
+    }
+
+    /**
+     * Samples the BSDF here with one number for the lobe choice and a pair for the direction (drawn
+     * in that order, always both), into {@link #bs} and {@link #wi}. Returns false if the path is
+     * absorbed, or if wi lies on the other side of the geometric normal than the shading frame
+     * says (shading and geometric normal disagree: following it would leak light).
+     */
+    public boolean sampleBsdf(Sampler sampler) {
+        double uc = sampler.get1D();
+        sampler.get2D(uDirection);
+        if (!bsdf.sample(woLocal, uc, uDirection.u1, uDirection.u2, bs)) {
+            return false;
+        }
+        frame.toWorld(bs.wi, wi);
+        return !(wi.dot(sp.ng) * bs.wi.z <= 0);
+    }
+
+    /** Turns {@code ray} into the ray leaving this point in direction {@code dir} (its origin moved off the surface). */
+    public void spawn(Ray ray, Vector3dc dir) {
+        sp.spawnOrigin(dir, ray.o);
+        ray.d.set(dir);
+        ray.tMax = Double.POSITIVE_INFINITY;
     }
 }

@@ -2,11 +2,9 @@ package dev.strahl.integrator;
 
 import dev.strahl.math.MutableRgb;
 import dev.strahl.geometry.Ray;
-import dev.strahl.light.LightSampler;
 import dev.strahl.material.Bsdf;
 import dev.strahl.material.BsdfSample;
-import dev.strahl.image.Rgb;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.Sampler;
 import dev.strahl.world.World;
 import org.joml.Vector3d;
 
@@ -17,6 +15,8 @@ import org.joml.Vector3d;
  * (soft shadows whose noise falls as the count grows). Light that reaches a diffuse surface via
  * another diffuse surface is never followed, so this is not a converged global-illumination
  * image: corners and shadows are darker than the path tracer's, and there is no colour bleeding.
+ * Only the light samples draw random numbers (their pair, then the light choice, each); delta
+ * surfaces follow all their lobes and draw none.
  *
  * <p>{@code maxDepth} limits the recursion in path segments as for the path tracer; -1 means
  * {@value #UNBOUNDED_DEPTH} segments.
@@ -32,9 +32,7 @@ public final class Whitted implements Integrator {
     private final int lightSamples;
 
     public Whitted(World world, int maxDepth, boolean cullBackFaces, int lightSamples) {
-        if (maxDepth == 0 || maxDepth < -1) {
-            throw new IllegalArgumentException("maxDepth must be -1 (unbounded) or >= 1, got " + maxDepth);
-        }
+        Integrator.checkMaxDepth(maxDepth);
         if (lightSamples < 1) {
             throw new IllegalArgumentException("light samples must be >= 1, got " + lightSamples);
         }
@@ -50,9 +48,7 @@ public final class Whitted implements Integrator {
         return new WhittedWorker();
     }
 
-    private final class WhittedWorker implements Worker {
-        private final Tracer tracer = new Tracer(world, bsdfs, cullBackFaces);
-        private final LightSampler lights = world.lights();
+    private final class WhittedWorker extends TracingWorker {
         // Scratch per recursion level, so that a level's state survives its children.
         private final Shading[] shading = new Shading[maxDepth + 1];
         private final BsdfSample[][] lobes = new BsdfSample[maxDepth + 1][2];
@@ -60,6 +56,7 @@ public final class Whitted implements Integrator {
         private final Vector3d wi = new Vector3d();
 
         WhittedWorker() {
+            super(world, bsdfs, cullBackFaces);
             for (int i = 0; i <= maxDepth; i++) {
                 shading[i] = new Shading();
                 lobes[i][0] = new BsdfSample();
@@ -69,23 +66,18 @@ public final class Whitted implements Integrator {
         }
 
         @Override
-        public long rayCount() {
-            return tracer.rayCount();
-        }
-
-        @Override
-        public void radiance(Ray ray, Rng rng, MutableRgb out) {
+        public void radiance(Ray ray, Sampler sampler, MutableRgb out) {
             out.setZero();
             beta[0].set(1, 1, 1);
-            trace(ray, 1, rng, out);
+            trace(ray, 1, sampler, out);
         }
 
         /** Adds beta[depth-1]·L(ray) to out, where the ray is the depth-th segment of the path. */
-        private void trace(Ray ray, int depth, Rng rng, MutableRgb out) {
+        private void trace(Ray ray, int depth, Sampler sampler, MutableRgb out) {
             MutableRgb weight = beta[depth - 1];
             Shading s = shading[depth];
             if (tracer.trace(ray, s) < 0) {
-                out.addProduct(weight, world.environment(), 1);
+                out.addProduct(weight, environment, 1);
                 return;
             }
             out.addProduct(weight, s.emitted, 1);
@@ -94,9 +86,7 @@ public final class Whitted implements Integrator {
             }
             Bsdf bsdf = s.bsdf;
             if (!bsdf.isDelta()) {
-                if (!lights.isEmpty()) {
-                    tracer.direct.add(bsdf, s.sp, s.frame, s.woLocal, rng, lightSamples, 0, weight, out);
-                }
+                tracer.direct.add(s, sampler, lightSamples, DirectLight.Use.LIGHT_ONLY, weight, out);
                 return;
             }
             int count = deltaLobes(bsdf, s, lobes[depth]);
@@ -107,10 +97,8 @@ public final class Whitted implements Integrator {
                     continue;
                 }
                 beta[depth].set(weight).mul(lobe.weight);
-                s.sp.spawnOrigin(wi, ray.o);
-                ray.d.set(wi);
-                ray.tMax = Double.POSITIVE_INFINITY;
-                trace(ray, depth + 1, rng, out);
+                s.spawn(ray, wi);
+                trace(ray, depth + 1, sampler, out);
             }
         }
     }

@@ -9,7 +9,7 @@ import org.joml.Vector3dc;
  * the package documentation for the direction convention). Implementations are immutable and
  * shared between threads.
  */
-public sealed interface Bsdf permits Lambert, Mirror, Dielectric, Glossy {
+public sealed interface Bsdf permits Lambert, Glossy, DeltaBsdf {
 
     /** f(wo, wi) WITHOUT the cosine factor, into {@code dest}. Zero for delta lobes. */
     void eval(Vector3dc wo, Vector3dc wi, MutableRgb dest);

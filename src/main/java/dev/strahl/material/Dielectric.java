@@ -1,6 +1,5 @@
 package dev.strahl.material;
 
-import dev.strahl.math.MutableRgb;
 import dev.strahl.image.Rgb;
 import org.joml.Vector3dc;
 
@@ -31,7 +30,7 @@ import org.joml.Vector3dc;
  *
  * @param eta index of refraction of the inside relative to the outside, positive
  */
-public record Dielectric(double eta) implements Bsdf {
+public record Dielectric(double eta) implements DeltaBsdf {
 
     /**
      * Checks that eta is positive and finite.
@@ -42,16 +41,6 @@ public record Dielectric(double eta) implements Bsdf {
         if (!(eta > 0) || !Double.isFinite(eta)) {
             throw new IllegalArgumentException("index of refraction must be a positive finite number, got " + eta);
         }
-    }
-
-    @Override
-    public void eval(Vector3dc wo, Vector3dc wi, MutableRgb dest) {
-        dest.setZero();
-    }
-
-    @Override
-    public double pdf(Vector3dc wo, Vector3dc wi) {
-        return 0;
     }
 
     @Override
@@ -69,11 +58,6 @@ public record Dielectric(double eta) implements Bsdf {
         double scale = 1 / (etaRelative * etaRelative);
         out.weight.set(scale, scale, scale);
         out.pdf = 1 - reflectance;
-        return true;
-    }
-
-    @Override
-    public boolean isDelta() {
         return true;
     }
 

@@ -1,6 +1,5 @@
 package dev.strahl.material;
 
-import dev.strahl.math.MutableRgb;
 import dev.strahl.image.Rgb;
 import java.util.Objects;
 import org.joml.Vector3dc;
@@ -15,7 +14,7 @@ import org.joml.Vector3dc;
  *
  * @param reflectance Ks, each channel in [0, 1]
  */
-public record Mirror(Rgb reflectance) implements Bsdf {
+public record Mirror(Rgb reflectance) implements DeltaBsdf {
 
     /**
      * Checks that the reflectance lies in [0, 1].
@@ -30,16 +29,6 @@ public record Mirror(Rgb reflectance) implements Bsdf {
     }
 
     @Override
-    public void eval(Vector3dc wo, Vector3dc wi, MutableRgb dest) {
-        dest.setZero();
-    }
-
-    @Override
-    public double pdf(Vector3dc wo, Vector3dc wi) {
-        return 0;
-    }
-
-    @Override
     public boolean sample(Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
         if (wo.z() <= 0) {
             return false;
@@ -48,11 +37,6 @@ public record Mirror(Rgb reflectance) implements Bsdf {
         out.weight.set(reflectance);
         out.pdf = 1;
         out.delta = true;
-        return true;
-    }
-
-    @Override
-    public boolean isDelta() {
         return true;
     }
 }

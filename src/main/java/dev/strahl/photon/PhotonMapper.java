@@ -2,17 +2,15 @@ package dev.strahl.photon;
 
 import dev.strahl.integrator.Parallel;
 import dev.strahl.integrator.PathTracer;
-import dev.strahl.integrator.Tracer;
+import dev.strahl.integrator.TracingWorker;
 import dev.strahl.math.MutableRgb;
+import dev.strahl.integrator.DirectLight;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Shading;
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Ray;
-import dev.strahl.light.LightSampler;
 import dev.strahl.material.Bsdf;
-import dev.strahl.material.BsdfSample;
-import dev.strahl.image.Rgb;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.Sampler;
 import dev.strahl.world.World;
 import org.joml.Vector3d;
 
@@ -43,7 +41,9 @@ import org.joml.Vector3d;
  * </ul>
  * Caustics (light → specular → diffuse → camera) come from the photons, which makes them clean
  * long before a path tracer's, which finds them only when a BSDF sample happens to hit the light
- * through the specular chain.
+ * through the specular chain. Every vertex draws its numbers as the path tracer's do (the light
+ * sample's, even at a specular vertex, then the BSDF sample's), so a pixel's samples keep their
+ * stratified pairs whatever surface their first hit is on.
  *
  * <p><b>Max depth</b> counts segments of the whole light path as for the path tracer: a camera
  * path of k segments to its visible point plus a photon path of s segments from the light make
@@ -79,12 +79,9 @@ public final class PhotonMapper implements Integrator {
 
     public PhotonMapper(World world, int maxDepth, boolean uniformHemisphere, boolean cullBackFaces, int photonsPerIteration,
                         double initialRadius) {
-        if (maxDepth == 0 || maxDepth < -1) {
-            throw new IllegalArgumentException("maxDepth must be -1 (unbounded) or >= 1, got " + maxDepth);
-        }
         this.world = world;
         this.bsdfs = Shading.bsdfs(world, uniformHemisphere);
-        this.maxDepth = maxDepth;
+        this.maxDepth = Integrator.checkMaxDepth(maxDepth);
         this.cullBackFaces = cullBackFaces;
         this.photonsPerIteration = photonsPerIteration;
         this.initialRadius = initialRadius > 0 ? initialRadius : automaticRadius(world);
@@ -168,14 +165,9 @@ public final class PhotonMapper implements Integrator {
         return new PhotonWorker();
     }
 
-    private final class PhotonWorker implements Worker, PhotonMap.Visitor {
-        private final Tracer tracer = new Tracer(world, bsdfs, cullBackFaces);
+    private final class PhotonWorker extends TracingWorker implements PhotonMap.Visitor {
         final PhotonTracer photons = new PhotonTracer(tracer, new PhotonSource(world), maxDepth);
-        private final LightSampler lights = world.lights();
-        private final Rgb environment = world.environment();
         private final Shading s = new Shading();
-        private final BsdfSample bs = new BsdfSample();
-        private final Vector3d wiWorld = new Vector3d();
         private final Vector3d wp = new Vector3d();
         private final Vector3d wpLocal = new Vector3d();
         private final MutableRgb beta = new MutableRgb();
@@ -185,13 +177,12 @@ public final class PhotonMapper implements Integrator {
         private float[] photonData;
         private int maxSegments;
 
-        @Override
-        public long rayCount() {
-            return tracer.rayCount();
+        PhotonWorker() {
+            super(world, bsdfs, cullBackFaces);
         }
 
         @Override
-        public void radiance(Ray ray, Rng rng, MutableRgb out) {
+        public void radiance(Ray ray, Sampler sampler, MutableRgb out) {
             Iteration it = current;
             if (it == null) {
                 throw new IllegalStateException("prepareSample was not called before radiance");
@@ -207,30 +198,21 @@ public final class PhotonMapper implements Integrator {
                 if (maxDepth > 0 && depth >= maxDepth) {
                     return;
                 }
-                Bsdf bsdf = s.bsdf;
-                if (!bsdf.isDelta()) {
-                    if (!lights.isEmpty()) {
-                        tracer.direct.add(bsdf, s.sp, s.frame, s.woLocal, rng, 1, 0, beta, out);
-                    }
+                tracer.direct.add(s, sampler, 1, DirectLight.Use.LIGHT_ONLY, beta, out);
+                if (!s.bsdf.isDelta()) {
                     if (maxDepth < 0 || depth + minPhotonSegments <= maxDepth) {
                         gather(it, depth, out);
                     }
                     return;
                 }
-                if (!bsdf.sample(s.woLocal, rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), bs)) {
+                if (!s.sampleBsdf(sampler)) {
                     return;
                 }
-                s.frame.toWorld(bs.wi, wiWorld);
-                if (wiWorld.dot(s.sp.ng) * bs.wi.z <= 0) {
-                    return;
-                }
-                beta.mul(bs.weight);
-                s.sp.spawnOrigin(wiWorld, ray.o);
-                ray.d.set(wiWorld);
-                ray.tMax = Double.POSITIVE_INFINITY;
+                beta.mul(s.bs.weight);
+                s.spawn(ray, s.wi);
                 if (depth >= PathTracer.RR_DEPTH) {
                     double q = Math.min(beta.max(), 0.95);
-                    if (!(rng.nextDouble() < q)) {
+                    if (!(sampler.get1D() < q)) {
                         return;
                     }
                     beta.mul(1 / q);

@@ -7,7 +7,8 @@ import dev.strahl.geometry.SurfacePoint;
 import dev.strahl.light.LightSampler;
 import dev.strahl.math.Frame;
 import dev.strahl.image.Rgb;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.Sample2D;
+import dev.strahl.sampling.Sampler;
 import dev.strahl.sampling.Warp;
 import dev.strahl.world.World;
 import org.joml.Vector3d;
@@ -43,6 +44,7 @@ final class PhotonSource {
     private final Frame frame = new Frame();
     private final Vector3d local = new Vector3d();
     private final Vector3d dir = new Vector3d();
+    private final Sample2D u = new Sample2D();
 
     PhotonSource(World world) {
         this.lights = world.lights();
@@ -71,16 +73,19 @@ final class PhotonSource {
     }
 
     /**
-     * Emits one photon with random numbers from {@code rng}: its start point and direction into
+     * Emits one photon with random numbers from {@code sampler}: its start point and direction into
      * {@code ray} (the origin moved off the light), its flux into {@code flux}. Returns true for a
      * photon of the environment (which no light sampling accounts for, so it is stored from its
      * first hit on), false for one of an area light.
      */
-    boolean emit(Rng rng, Ray ray, MutableRgb flux) {
-        double uChoice = rng.nextDouble();
+    boolean emit(Sampler sampler, Ray ray, MutableRgb flux) {
+        double uChoice = sampler.get1D();
         if (uChoice < lightProbability) {
-            double pA = lights.samplePoint(rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), point);
-            Warp.cosineHemisphere(rng.nextDouble(), rng.nextDouble(), local);
+            double uLight = sampler.get1D();
+            sampler.get2D(u);
+            double pA = lights.samplePoint(uLight, u.u1, u.u2, point);
+            sampler.get2D(u);
+            Warp.cosineHemisphere(u.u1, u.u2, local);
             frame.set(point.ng).toWorld(local, dir);
             SurfacePoint.offset(point.p, point.ng, dir, ray.o);
             ray.d.set(dir);
@@ -88,8 +93,10 @@ final class PhotonSource {
             flux.set(lights.emission(point.material)).mul(Math.PI / (pA * lightProbability));
             return false;
         }
-        Warp.uniformSphere(rng.nextDouble(), rng.nextDouble(), dir);
-        Warp.concentricDisk(rng.nextDouble(), rng.nextDouble(), local);
+        sampler.get2D(u);
+        Warp.uniformSphere(u.u1, u.u2, dir);
+        sampler.get2D(u);
+        Warp.concentricDisk(u.u1, u.u2, local);
         frame.set(dir).toWorld(local.mul(radius), ray.o);
         ray.o.add(center).fma(-radius, dir);
         ray.d.set(dir);

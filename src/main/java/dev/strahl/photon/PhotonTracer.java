@@ -6,11 +6,10 @@ import dev.strahl.math.MutableRgb;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.SurfacePoint;
 import dev.strahl.material.Bsdf;
-import dev.strahl.material.BsdfSample;
 import dev.strahl.material.Dielectric;
 import dev.strahl.material.Fresnel;
-import dev.strahl.image.Rgb;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.IndependentSampler;
+import dev.strahl.sampling.SplitMix64;
 import org.joml.Vector3d;
 
 /**
@@ -55,13 +54,12 @@ final class PhotonTracer {
     private final PhotonSource source;
     private final int maxDepth;
     private final Shading s = new Shading();
-    private final BsdfSample bs = new BsdfSample();
-    private final Rng rng = new Rng();
+    /** Started per photon on the photon's own stream: no pixel sample, so no stratification either. */
+    private final IndependentSampler sampler = new IndependentSampler(0);
     private final Ray ray = new Ray();
     private final MutableRgb beta = new MutableRgb();
     private final MutableRgb next = new MutableRgb();
     private final Vector3d wo = new Vector3d();
-    private final Vector3d wi = new Vector3d();
 
     PhotonTracer(Tracer tracer, PhotonSource source, int maxDepth) {
         this.tracer = tracer;
@@ -71,7 +69,7 @@ final class PhotonTracer {
 
     /** The random stream of photon {@code photon} in iteration {@code iteration}: a function of these and the seed only. */
     static long streamSeed(long seed, int iteration, long photon) {
-        return Rng.mix64(Rng.mix64(Rng.mix64(seed ^ PHOTON_STREAM_SALT) ^ iteration * 0x9e3779b97f4a7c15L) ^ photon);
+        return SplitMix64.mix64(SplitMix64.mix64(SplitMix64.mix64(seed ^ PHOTON_STREAM_SALT) ^ iteration * SplitMix64.GOLDEN_GAMMA) ^ photon);
     }
 
     /**
@@ -81,8 +79,8 @@ final class PhotonTracer {
      */
     void trace(long seed, int iteration, int first, int end, double fluxScale, PhotonList out) {
         for (int j = first; j < end; j++) {
-            rng.seed(streamSeed(seed, iteration, j));
-            boolean fromEnvironment = source.emit(rng, ray, beta);
+            sampler.startStream(streamSeed(seed, iteration, j));
+            boolean fromEnvironment = source.emit(sampler, ray, beta);
             beta.mul(fluxScale);
             follow(fromEnvironment, out);
         }
@@ -101,22 +99,16 @@ final class PhotonTracer {
             if (maxDepth > 0 && segments + 2 > maxDepth) {
                 return;                            // a further landing could not be stored
             }
-            if (!bsdf.sample(s.woLocal, rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), bs)) {
-                return;
+            if (!s.sampleBsdf(sampler)) {
+                return;                            // absorbed, or a light leak where shading and geometric normal disagree
             }
-            s.frame.toWorld(bs.wi, wi);
-            if (wi.dot(sp.ng) * bs.wi.z <= 0) {
-                return;                            // shading and geometric normal disagree: no light leaks
-            }
-            next.set(beta).mul(bs.weight).mul(adjointFactor(bsdf, sp));
+            next.set(beta).mul(s.bs.weight).mul(adjointFactor(bsdf, sp));
             double q = Math.min(next.max() / beta.max(), MAX_CONTINUATION);
-            if (!(rng.nextDouble() < q)) {         // also ends a photon whose flux became NaN
+            if (!(sampler.get1D() < q)) {          // also ends a photon whose flux became NaN
                 return;
             }
             beta.set(next).mul(1 / q);
-            sp.spawnOrigin(wi, ray.o);
-            ray.d.set(wi);
-            ray.tMax = Double.POSITIVE_INFINITY;
+            s.spawn(ray, s.wi);
         }
     }
 
@@ -126,14 +118,14 @@ final class PhotonTracer {
      */
     private double adjointFactor(Bsdf bsdf, SurfacePoint sp) {
         double factor = 1;
-        if (bsdf instanceof Dielectric d && bs.wi.z * s.woLocal.z < 0) {
+        if (bsdf instanceof Dielectric d && s.bs.wi.z * s.woLocal.z < 0) {
             double eta = Fresnel.relativeEta(s.woLocal.z, d.eta());
             factor = eta * eta;
         }
         if (!sp.n.equals(sp.ng)) {
             wo.set(ray.d).negate();
-            double denominator = Math.abs(wo.dot(sp.ng)) * Math.abs(bs.wi.z);
-            factor *= denominator > 0 ? Math.abs(s.woLocal.z) * Math.abs(wi.dot(sp.ng)) / denominator : 0;
+            double denominator = Math.abs(wo.dot(sp.ng)) * Math.abs(s.bs.wi.z);
+            factor *= denominator > 0 ? Math.abs(s.woLocal.z) * Math.abs(s.wi.dot(sp.ng)) / denominator : 0;
         }
         return factor;
     }

@@ -6,7 +6,10 @@ import dev.strahl.film.Film;
 import dev.strahl.geometry.Ray;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Parallel;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.IndependentSampler;
+import dev.strahl.sampling.Sample2D;
+import dev.strahl.sampling.Sampler;
+import dev.strahl.sampling.StratifiedSampler;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ExecutionException;
@@ -31,8 +34,6 @@ import java.util.function.Consumer;
 final class RenderWorkers implements Parallel {
     private final Film film;
     private final PinholeRays cameraRays;
-    private final long seed;
-    private final boolean stratified = stratifiedSampler();
     private final ExecutorService pool;
     private final WorkerState[] workers;
     private final AtomicLong samplesDone = new AtomicLong();
@@ -44,7 +45,7 @@ final class RenderWorkers implements Parallel {
     /** Workers running a task and not waiting at the gate. */
     private int busy;
 
-    /** Stratified sample mode of {@link Rng} (the default), or plain streams with {@code -Dstrahl.sampler=independent}. */
+    /** The {@link StratifiedSampler} (the default), or the {@link IndependentSampler} with {@code -Dstrahl.sampler=independent}. */
     static boolean stratifiedSampler() {
         return !"independent".equals(System.getProperty("strahl.sampler"));
     }
@@ -52,7 +53,7 @@ final class RenderWorkers implements Parallel {
     RenderWorkers(Film film, PinholeRays cameraRays, Integrator integrator, long seed, int threads, String name) {
         this.film = film;
         this.cameraRays = cameraRays;
-        this.seed = seed;
+        boolean stratified = stratifiedSampler();
         AtomicInteger workerNumber = new AtomicInteger();
         this.pool = Executors.newFixedThreadPool(threads, r -> {
             Thread t = new Thread(r, name + "-" + workerNumber.incrementAndGet());
@@ -61,7 +62,7 @@ final class RenderWorkers implements Parallel {
         });
         this.workers = new WorkerState[threads];
         for (int i = 0; i < threads; i++) {
-            workers[i] = new WorkerState(integrator.newWorker());
+            workers[i] = new WorkerState(integrator.newWorker(), stratified ? new StratifiedSampler(seed) : new IndependentSampler(seed));
         }
     }
 
@@ -230,13 +231,10 @@ final class RenderWorkers implements Parallel {
                     int s0 = Math.max(firstSample, film.sampleCountAt(pixel));
                     rowSamples += Math.max(0, endSample - s0);
                     for (int s = s0; s < endSample; s++) {
-                        if (stratified) {
-                            w.rng.startSample(seed, x, y, s);
-                        } else {
-                            w.rng.seed(Rng.streamSeed(seed, x, y, s));
-                        }
-                        cameraRays.generate(x + w.rng.nextDouble(), y + w.rng.nextDouble(), w.ray);
-                        w.integrator.radiance(w.ray, w.rng, w.radiance);
+                        w.sampler.startPixelSample(x, y, s);
+                        w.sampler.getPixel2D(w.filmPosition);
+                        cameraRays.generate(x + w.filmPosition.u1, y + w.filmPosition.u2, w.ray);
+                        w.integrator.radiance(w.ray, w.sampler, w.radiance);
                         if (w.radiance.isFinite()) {
                             film.add(pixel, w.radiance.r, w.radiance.g, w.radiance.b);
                         } else {
@@ -257,12 +255,14 @@ final class RenderWorkers implements Parallel {
     /** What one worker thread owns: reused for every sample, so the loop allocates nothing. */
     private static final class WorkerState {
         final Integrator.Worker integrator;
-        final Rng rng = new Rng();
+        final Sampler sampler;
+        final Sample2D filmPosition = new Sample2D();
         final Ray ray = new Ray();
         final MutableRgb radiance = new MutableRgb();
 
-        WorkerState(Integrator.Worker integrator) {
+        WorkerState(Integrator.Worker integrator, Sampler sampler) {
             this.integrator = integrator;
+            this.sampler = sampler;
         }
     }
 }

@@ -10,7 +10,7 @@ package dev.strahl.sampling;
  * [a/2^k, (a+1)/2^k) × [b/2^(m−k), (b+1)/2^(m−k)) holds exactly one. That holds for every
  * power-of-two prefix, so a render stopped early is still stratified. Each point on its own is
  * uniformly distributed, so estimates stay unbiased; different seeds give independent point sets
- * (which is what decorrelates the dimension pairs of {@link Rng}'s sample mode).
+ * (which is what decorrelates the pairs of dimensions of {@link StratifiedSampler}).
  */
 public final class OwenSobol {
     private OwenSobol() {}

@@ -9,7 +9,8 @@ import dev.strahl.camera.PinholeRays;
 import dev.strahl.geometry.Ray;
 import dev.strahl.image.Rgb;
 import dev.strahl.render.HemisphereSampling;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.Sample2D;
+import dev.strahl.sampling.StratifiedSampler;
 import dev.strahl.scene.Scene;
 import dev.strahl.io.SceneLoader;
 import java.lang.management.ManagementFactory;
@@ -29,20 +30,26 @@ class PathTracerAllocationTest {
         Integrator.Worker worker = new PathTracer(World.of(scene), -1, false, false, PathTracer.Strategy.MIS).newWorker();
         PinholeRays camera = Meshes.rays(scene.camera(), 64, 64);
         Ray ray = new Ray();
-        Rng rng = new Rng();
+        Sample2D film = new Sample2D();
         MutableRgb out = new MutableRgb();
         var threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        StratifiedSampler[] samplers = new StratifiedSampler[30];
+        for (int round = 0; round < samplers.length; round++) {
+            samplers[round] = new StratifiedSampler(round);
+        }
         long allocated = Long.MAX_VALUE;
         double sum = 0;
         // Rounds until the hot code is compiled (the interpreter and C1 may box Vector API values);
         // the best round must be clean.
-        for (int round = 0; round < 30 && allocated > 0; round++) {
+        for (int round = 0; round < samplers.length && allocated > 0; round++) {
             long before = threads.getCurrentThreadAllocatedBytes();
             for (int i = 0; i < 20_000; i++) {
                 int x = i % 64, y = (i / 64) % 64;
-                rng.startSample(round, x, y, i / 4096);
-                camera.generate(x + rng.nextDouble(), y + rng.nextDouble(), ray);
-                worker.radiance(ray, rng, out);
+                StratifiedSampler sampler = samplers[round];
+                sampler.startPixelSample(x, y, i / 4096);
+                sampler.getPixel2D(film);
+                camera.generate(x + film.u1, y + film.u2, ray);
+                worker.radiance(ray, sampler, out);
                 sum += out.g;
             }
             allocated = Math.min(allocated, threads.getCurrentThreadAllocatedBytes() - before);

@@ -12,7 +12,7 @@ import dev.strahl.render.PhotonParameters;
 import dev.strahl.geometry.Ray;
 import dev.strahl.image.Rgb;
 import dev.strahl.render.HemisphereSampling;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.IndependentSampler;
 import dev.strahl.scene.Scene;
 import dev.strahl.io.SceneLoader;
 import java.nio.file.Path;
@@ -85,9 +85,10 @@ class PhotonCausticTest {
         Ray ray = new Ray();
         ray.o.set(x, 0.004, z);
         ray.d.set(0, -1, 0);
-        Rng rng = new Rng(Rng.streamSeed(1, point, 0, sample));
+        IndependentSampler sampler = new IndependentSampler(1);
+        sampler.startPixelSample(point, 0, sample);
         MutableRgb out = new MutableRgb();
-        worker.radiance(ray, rng, out);
+        worker.radiance(ray, sampler, out);
         return out.g;
     }
 

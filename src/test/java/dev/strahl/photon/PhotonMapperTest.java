@@ -22,7 +22,8 @@ import dev.strahl.scene.Material;
 import dev.strahl.image.Rgb;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.HemisphereSampling;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.IndependentSampler;
+import dev.strahl.sampling.Sample2D;
 import dev.strahl.scene.Scene;
 import dev.strahl.testing.Meshes;
 import dev.strahl.testing.Renders;
@@ -124,7 +125,7 @@ class PhotonMapperTest {
     void radianceBeforeAnyPreparedIterationIsRefused() {
         PhotonMapper pm = new PhotonMapper(World.of(furnace(0.5)), -1, false, false, PhotonParameters.DEFAULT_PHOTONS, 0);
         Integrator.Worker w = pm.newWorker();
-        assertThatThrownBy(() -> w.radiance(new Ray(), new Rng(1), new MutableRgb())).isInstanceOf(IllegalStateException.class);
+        assertThatThrownBy(() -> w.radiance(new Ray(), new IndependentSampler(1), new MutableRgb())).isInstanceOf(IllegalStateException.class);
         assertThat(pm.preparesEachSample()).isTrue();
     }
 
@@ -146,13 +147,15 @@ class PhotonMapperTest {
         pm.prepareSample(1, 0, Parallel.sequential(w));
         var rays = Meshes.rays(scene.camera(), 64, 64);
         Ray ray = new Ray();
-        Rng rng = new Rng();
+        IndependentSampler sampler = new IndependentSampler(1);
+        Sample2D film = new Sample2D();
         MutableRgb out = new MutableRgb();
         Runnable frame = () -> {
             for (int p = 0; p < 64 * 64; p++) {
-                rng.seed(Rng.streamSeed(1, p % 64, p / 64, 0));
-                rays.generate(p % 64 + rng.nextDouble(), p / 64 + rng.nextDouble(), ray);
-                w.radiance(ray, rng, out);
+                sampler.startPixelSample(p % 64, p / 64, 0);
+                sampler.getPixel2D(film);
+                rays.generate(p % 64 + film.u1, p / 64 + film.u2, ray);
+                w.radiance(ray, sampler, out);
             }
         };
         frame.run();                                        // warm up

@@ -10,7 +10,7 @@ import dev.strahl.geometry.Sphere;
 import dev.strahl.scene.TriangleMesh;
 import dev.strahl.scene.Material;
 import dev.strahl.image.Rgb;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.IndependentSampler;
 import dev.strahl.scene.Scene;
 import org.joml.Vector3d;
 import org.junit.jupiter.api.Test;
@@ -37,15 +37,15 @@ class PhotonSourceTest {
     @Test
     void photonsCarryTheLightsPowerInTotalAndPerLight() {
         PhotonSource source = new PhotonSource(World.of(twoLights()));
-        Rng rng = new Rng();
+        IndependentSampler sampler = new IndependentSampler(0);
         Ray ray = new Ray();
         MutableRgb flux = new MutableRgb();
         double[] sum = new double[3], sum2 = new double[3];
         int fromB = 0;
         double[] sumB = new double[3];
         for (int j = 0; j < N; j++) {
-            rng.seed(PhotonTracer.streamSeed(9, 0, j));
-            assertThat(source.emit(rng, ray, flux)).isFalse();
+            sampler.startStream(PhotonTracer.streamSeed(9, 0, j));
+            assertThat(source.emit(sampler, ray, flux)).isFalse();
             double[] f = {flux.r, flux.g, flux.b};
             boolean b = ray.o.y > 2.5;
             fromB += b ? 1 : 0;
@@ -73,14 +73,14 @@ class PhotonSourceTest {
     void directionsAreCosineDistributedIntoTheLightsHemisphere() {
         Scene scene = Scene.builder().addMesh(downQuad(0, 2, 0, 1), Material.emissive("a", Rgb.gray(0.5), Rgb.gray(1))).build();
         PhotonSource source = new PhotonSource(World.of(scene));
-        Rng rng = new Rng();
+        IndependentSampler sampler = new IndependentSampler(0);
         Ray ray = new Ray();
         MutableRgb flux = new MutableRgb();
         int bins = 10;
         int[] count = new int[bins];
         for (int j = 0; j < N; j++) {
-            rng.seed(PhotonTracer.streamSeed(3, 1, j));
-            source.emit(rng, ray, flux);
+            sampler.startStream(PhotonTracer.streamSeed(3, 1, j));
+            source.emit(sampler, ray, flux);
             double cos = -ray.d.y;                          // the light faces -y
             assertThat(cos).isPositive();
             assertThat(ray.o.y).isLessThan(2).isGreaterThan(2 - 1e-5);     // moved off the light, to its emitting side
@@ -102,13 +102,13 @@ class PhotonSourceTest {
         Scene scene = Scene.builder().addSphere(new Vector3d(), s, Material.diffuse("ball", Rgb.gray(0.5))).environment(env).build();
         PhotonSource source = new PhotonSource(World.of(scene));
         assertThat(source.boundingRadius()).isCloseTo(Math.sqrt(3) * s, within(1e-5));
-        Rng rng = new Rng();
+        IndependentSampler sampler = new IndependentSampler(0);
         Ray ray = new Ray();
         MutableRgb flux = new MutableRgb();
         double sum = 0, sum2 = 0;
         for (int j = 0; j < N; j++) {
-            rng.seed(PhotonTracer.streamSeed(4, 2, j));
-            assertThat(source.emit(rng, ray, flux)).isTrue();
+            sampler.startStream(PhotonTracer.streamSeed(4, 2, j));
+            assertThat(source.emit(sampler, ray, flux)).isTrue();
             assertThat(ray.o.length()).isGreaterThanOrEqualTo(source.boundingRadius() * (1 - 1e-9));   // starts outside the scene
             double f = hitsSphere(ray, s) ? flux.g : 0;
             sum += f;
@@ -131,13 +131,13 @@ class PhotonSourceTest {
         PhotonSource source = new PhotonSource(World.of(scene));
         double lightPower = Math.PI * 4;
         double envPower = 0.1 * 4 * Math.PI * Math.PI * Math.pow(source.boundingRadius(), 2);
-        Rng rng = new Rng();
+        IndependentSampler sampler = new IndependentSampler(0);
         Ray ray = new Ray();
         MutableRgb flux = new MutableRgb();
         double sumLight = 0, sumEnv = 0;
         for (int j = 0; j < N; j++) {
-            rng.seed(PhotonTracer.streamSeed(5, 0, j));
-            if (source.emit(rng, ray, flux)) {
+            sampler.startStream(PhotonTracer.streamSeed(5, 0, j));
+            if (source.emit(sampler, ray, flux)) {
                 sumEnv += flux.r;
             } else {
                 sumLight += flux.r;

@@ -11,7 +11,7 @@ import dev.strahl.geometry.Sphere;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.scene.Material;
 import dev.strahl.image.Rgb;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.Sampler;
 import dev.strahl.scene.Scene;
 import org.joml.Vector3d;
 import org.junit.jupiter.api.Test;
@@ -26,7 +26,7 @@ class InvalidSampleTest {
     /** 0.5 everywhere, except NaN in one channel in the left half of column 0 and +∞ in the right half of column 1. */
     private static final Integrator POISONED = () -> new Integrator.Worker() {
         @Override
-        public void radiance(Ray ray, Rng rng, MutableRgb out) {
+        public void radiance(Ray ray, Sampler sampler, MutableRgb out) {
             out.set(0.5, 0.5, 0.5);
             double px = ray.d.x;                     // the camera looks down -z: x of the direction grows to the right
             if (px < -0.2) {

@@ -11,7 +11,7 @@ import dev.strahl.geometry.Sphere;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.scene.Material;
 import dev.strahl.image.Rgb;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.Sampler;
 import dev.strahl.scene.Scene;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.joml.Vector3d;
@@ -40,7 +40,7 @@ class RenderJobFailureTest {
                 int samples;
 
                 @Override
-                public void radiance(Ray ray, Rng rng, MutableRgb out) {
+                public void radiance(Ray ray, Sampler sampler, MutableRgb out) {
                     if (fails && ++samples == 100) {
                         throw error;
                     }

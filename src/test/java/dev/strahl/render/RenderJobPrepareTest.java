@@ -12,7 +12,7 @@ import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Parallel;
 import dev.strahl.scene.Material;
 import dev.strahl.image.Rgb;
-import dev.strahl.sampling.Rng;
+import dev.strahl.sampling.Sampler;
 import dev.strahl.scene.Scene;
 import java.util.List;
 import java.util.Set;
@@ -65,7 +65,7 @@ class RenderJobPrepareTest {
         public Worker newWorker() {
             Worker w = new Worker() {
                 @Override
-                public void radiance(Ray ray, Rng rng, MutableRgb out) {
+                public void radiance(Ray ray, Sampler sampler, MutableRgb out) {
                     out.set(current, 0, 0);
                 }
 
