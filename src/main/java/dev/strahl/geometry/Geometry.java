@@ -134,7 +134,7 @@ public final class Geometry {
 
     /**
      * The arrays behind the triangles, not copies, for acceleration structures that test
-     * triangles in their own inner loops (with the arithmetic of {@link #intersect}): vertex
+     * triangles in their own inner loops (with {@link RayTriangle}, as {@link #intersect} does): vertex
      * positions (x, y, z per vertex), vertex indices (three per triangle) and per-triangle flags
      * ({@link #CLOSED}). Never modify them.
      */
@@ -228,7 +228,8 @@ public final class Geometry {
      * The closest hit among the primitives {@code first .. first + count - 1}, which are either
      * all triangles or all spheres (as in a BVH leaf); on a hit closer than {@code ray.tMax},
      * records it in {@code hit} and shortens {@code ray.tMax}. The same arithmetic as the
-     * one-primitive test, so that a leaf and a loop over all primitives agree bit for bit.
+     * one-primitive test and the BVH's, so that they agree bit for bit with a loop over all
+     * primitives.
      */
     public boolean intersect(int first, int count, Ray ray, Hit hit, boolean cullBackFaces) {
         if (first < triangleCount) {
