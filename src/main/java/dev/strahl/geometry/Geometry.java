@@ -318,7 +318,12 @@ public final class Geometry {
 
     /**
      * A point on a primitive from two uniform numbers, uniform by area; writes the point into
-     * {@code sp.p} and its geometric normal into {@code sp.ng} (and {@code sp.n}).
+     * {@code sp.p} and its geometric normal into {@code sp.ng} (and {@code sp.n}). The one
+     * sampling of triangles: light sampling and photon emission use it.
+     *
+     * <p>On a triangle the barycentrics are 1 − √u1 on v0, b1 = u2·√u1 on v1 and b2 = √u1 − b1
+     * on v2 (pbrt-v4 §6.5.4), and the point is v0 + b1·(v1 − v0) + b2·(v2 − v0) with the edges in
+     * double (as the normal's): it is v0 exactly at u1 = 0, and b2 has no round-off from 1 − √u1.
      */
     public void samplePoint(int prim, double u1, double u2, SurfacePoint sp) {
         sp.prim = prim;
@@ -326,8 +331,10 @@ public final class Geometry {
         if (prim < triangleCount) {
             int i0 = 3 * tri[3 * prim], i1 = 3 * tri[3 * prim + 1], i2 = 3 * tri[3 * prim + 2];
             double su = Math.sqrt(u1);
-            double b0 = 1 - su, b1 = u2 * su, b2 = 1 - b0 - b1;
-            interpolate(pos, i0, i1, i2, b0, b1, b2, sp.p);
+            double b1 = u2 * su, b2 = su - b1;
+            sp.p.set(pos[i0] + b1 * ((double) pos[i1] - pos[i0]) + b2 * ((double) pos[i2] - pos[i0]),
+                    pos[i0 + 1] + b1 * ((double) pos[i1 + 1] - pos[i0 + 1]) + b2 * ((double) pos[i2 + 1] - pos[i0 + 1]),
+                    pos[i0 + 2] + b1 * ((double) pos[i1 + 2] - pos[i0 + 2]) + b2 * ((double) pos[i2 + 2] - pos[i0 + 2]));
             edgeCross(i0, i1, i2, sp.ng).normalize();
         } else {
             int k = 4 * (prim - triangleCount);
