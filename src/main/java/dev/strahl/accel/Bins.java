@@ -11,8 +11,9 @@ import static dev.strahl.accel.BvhBuilder.BINS;
 final class Bins {
     final int[] count = new int[3 * BINS];
     final int[] box = new int[3 * BINS * 6];           // bin (axis, b) at 6 * (axis * BINS + b), as ordered keys
-    final double[] rightArea = new double[BINS];
-    final int[] rightCount = new int[BINS];
+    // The sweep's running unions: at bin b, the area and count of bins b..last (right) and 0..b (left).
+    private final double[] rightArea = new double[BINS], leftArea = new double[BINS];
+    private final int[] rightCount = new int[BINS], leftCount = new int[BINS];
     final float[] centroidBounds = new float[6];
     int bins;                                           // bins in use at this split
     int lastBin;
@@ -56,45 +57,44 @@ final class Bins {
      */
     double sweep(int axis, double bound) {
         int nb = bins, base = axis * BINS;
-        int x0 = Integer.MAX_VALUE, y0 = x0, z0 = x0, x1 = Integer.MIN_VALUE, y1 = x1, z1 = x1;
-        int acc = 0;
-        for (int b = nb - 1; b > 0; b--) {
-            int o = 6 * (base + b);
-            x0 = Math.min(x0, box[o]);
-            y0 = Math.min(y0, box[o + 1]);
-            z0 = Math.min(z0, box[o + 2]);
-            x1 = Math.max(x1, box[o + 3]);
-            y1 = Math.max(y1, box[o + 4]);
-            z1 = Math.max(z1, box[o + 5]);
-            acc += count[base + b];
-            rightArea[b] = acc == 0 ? 0 : keyArea(x0, y0, z0, x1, y1, z1);
-            rightCount[b] = acc;
-        }
-        x0 = y0 = z0 = Integer.MAX_VALUE;
-        x1 = y1 = z1 = Integer.MIN_VALUE;
-        acc = 0;
+        accumulate(base, nb - 1, 0, -1, rightArea, rightCount);
+        accumulate(base, 0, nb - 1, 1, leftArea, leftCount);
         double best = bound;
         lastBin = -1;
         for (int b = 0; b < nb - 1; b++) {
-            int o = 6 * (base + b);
-            x0 = Math.min(x0, box[o]);
-            y0 = Math.min(y0, box[o + 1]);
-            z0 = Math.min(z0, box[o + 2]);
-            x1 = Math.max(x1, box[o + 3]);
-            y1 = Math.max(y1, box[o + 4]);
-            z1 = Math.max(z1, box[o + 5]);
-            acc += count[base + b];
-            int right = rightCount[b + 1];
-            if (acc == 0 || right == 0) {
+            int left = leftCount[b], right = rightCount[b + 1];
+            if (left == 0 || right == 0) {
                 continue;
             }
-            double cost = keyArea(x0, y0, z0, x1, y1, z1) * acc + rightArea[b + 1] * right;
+            double cost = leftArea[b] * left + rightArea[b + 1] * right;
             if (cost < best) {
                 best = cost;
                 lastBin = b;
             }
         }
         return lastBin >= 0 ? best : Double.POSITIVE_INFINITY;
+    }
+
+    /**
+     * The running union of the bins of one axis from bin {@code from} towards {@code to}
+     * (exclusive) in steps of {@code step}: at each bin, the area (0 while empty) and count of
+     * the bins passed so far, that one included.
+     */
+    private void accumulate(int base, int from, int to, int step, double[] area, int[] counts) {
+        int x0 = Integer.MAX_VALUE, y0 = x0, z0 = x0, x1 = Integer.MIN_VALUE, y1 = x1, z1 = x1;
+        int acc = 0;
+        for (int b = from; b != to; b += step) {
+            int o = 6 * (base + b);
+            x0 = Math.min(x0, box[o]);
+            y0 = Math.min(y0, box[o + 1]);
+            z0 = Math.min(z0, box[o + 2]);
+            x1 = Math.max(x1, box[o + 3]);
+            y1 = Math.max(y1, box[o + 4]);
+            z1 = Math.max(z1, box[o + 5]);
+            acc += count[base + b];
+            area[b] = acc == 0 ? 0 : keyArea(x0, y0, z0, x1, y1, z1);
+            counts[b] = acc;
+        }
     }
 
     private static double keyArea(int x0, int y0, int z0, int x1, int y1, int z1) {
