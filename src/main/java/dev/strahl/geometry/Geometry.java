@@ -29,13 +29,13 @@ public final class Geometry {
     /** Takes the arrays (not copies); the counts are those of the material arrays. */
     Geometry(float[] pos, int[] tri, float[] nrm, int[] triMaterial, byte[] triFlags, double[] sph, int[] sphMaterial) {
         this.pos = pos;
-        this.tri = tri;
         this.nrm = nrm;
+        this.tri = tri;
         this.triMaterial = triMaterial;
         this.triFlags = triFlags;
+        this.triangleCount = triMaterial.length;
         this.sph = sph;
         this.sphMaterial = sphMaterial;
-        this.triangleCount = triMaterial.length;
         this.sphereCount = sphMaterial.length;
     }
 
