@@ -18,6 +18,39 @@ final class Bins {
     int bins;                                           // bins in use at this split
     int lastBin;
 
+    /** Sorts every reference of [start, end) into its bin on each axis over the centroid bounds {@code cb}, growing the bins' boxes. */
+    void fill(References refs, int start, int end, float[] cb) {
+        int nb = bins;
+        int[] key = refs.key;
+        float[] centroid = refs.centroid;
+        clear();
+        float sx = scale(cb, 0, nb), sy = scale(cb, 1, nb), sz = scale(cb, 2, nb);
+        for (int p = start; p < end; p++) {
+            int bx = bin(centroid[3 * p], cb[0], sx, nb);
+            int by = BINS + bin(centroid[3 * p + 1], cb[1], sy, nb);
+            int bz = 2 * BINS + bin(centroid[3 * p + 2], cb[2], sz, nb);
+            count[bx]++;
+            count[by]++;
+            count[bz]++;
+            int q = 6 * p;
+            int x0 = key[q], y0 = key[q + 1], z0 = key[q + 2], x1 = key[q + 3], y1 = key[q + 4], z1 = key[q + 5];
+            grow(box, 6 * bx, x0, y0, z0, x1, y1, z1);
+            grow(box, 6 * by, x0, y0, z0, x1, y1, z1);
+            grow(box, 6 * bz, x0, y0, z0, x1, y1, z1);
+        }
+    }
+
+    /** Bins per unit of centroid extent on one axis (0 for no extent). */
+    static float scale(float[] cb, int axis, int bins) {
+        float ext = cb[3 + axis] - cb[axis];
+        return ext > 0 ? bins / ext : 0;
+    }
+
+    /** The bin of a centroid: c ≥ cmin, so only the upper end needs clamping (a centroid on the upper bound). */
+    static int bin(float c, float cmin, float scale, int bins) {
+        return Math.min((int) ((c - cmin) * scale), bins - 1);
+    }
+
     /** Adds another chunk's bins (order-independent: sums, minima, maxima). */
     void merge(Bins o) {
         for (int axis = 0; axis < 3; axis++) {
@@ -41,6 +74,21 @@ final class Bins {
         }
     }
 
+    /** The union of bins [from, to) on one axis, as floats into {@code dest[o .. o + 5]}. */
+    void union(int axis, int from, int to, float[] dest, int o) {
+        int[] b = emptyKeys();
+        for (int k = from; k < to; k++) {
+            int i = 6 * (axis * BINS + k);
+            grow(b, 0, box[i], box[i + 1], box[i + 2], box[i + 3], box[i + 4], box[i + 5]);
+        }
+        unkey(b, dest, o);
+    }
+
+    /** An empty key box, to {@link #grow}. */
+    static int[] emptyKeys() {
+        return new int[] {Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE};
+    }
+
     /** Grows the key box at {@code o}: integer minima and maxima of ordered keys are those of the floats. */
     static void grow(int[] b, int o, int x0, int y0, int z0, int x1, int y1, int z1) {
         b[o] = Math.min(b[o], x0);
@@ -49,6 +97,13 @@ final class Bins {
         b[o + 3] = Math.max(b[o + 3], x1);
         b[o + 4] = Math.max(b[o + 4], y1);
         b[o + 5] = Math.max(b[o + 5], z1);
+    }
+
+    /** The floats of a key box into {@code dest[o .. o + 5]}. */
+    static void unkey(int[] b, float[] dest, int o) {
+        for (int c = 0; c < 6; c++) {
+            dest[o + c] = BvhBuilder.unkey(b[c]);
+        }
     }
 
     /**
