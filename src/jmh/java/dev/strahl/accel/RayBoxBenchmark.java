@@ -1,8 +1,9 @@
 package dev.strahl.accel;
 
 import dev.strahl.geometry.Ray;
-import dev.strahl.scene.Scene;
 import dev.strahl.io.SceneLoader;
+import dev.strahl.scene.Scene;
+import dev.strahl.world.World;
 import java.nio.file.Path;
 import java.util.SplittableRandom;
 import java.util.concurrent.TimeUnit;
@@ -43,7 +44,7 @@ public class RayBoxBenchmark {
     @Setup
     public void setUp() throws Exception {
         Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
-        bvh = scene.bvh().withSimd(simd);
+        bvh = World.of(scene).bvh().withSimd(simd);
         SplittableRandom random = new SplittableRandom(1);
         for (int i = 0; i < RAYS; i++) {
             rays[i] = new Ray();

@@ -5,8 +5,8 @@ import dev.strahl.accel.TraversalStack;
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
-import dev.strahl.scene.Scene;
 import dev.strahl.io.SceneLoader;
+import dev.strahl.world.World;
 import java.nio.file.Path;
 import java.util.SplittableRandom;
 import java.util.concurrent.TimeUnit;
@@ -25,7 +25,7 @@ import org.openjdk.jmh.annotations.Warmup;
 /**
  * BVH traversal: closest hit and any hit of incoherent rays (origins uniform in the scene's
  * bounds, directions uniform on the sphere). {@code scene} is any scene file strahl loads, e.g.
- * {@code -p scene=../shared/data/meshes/bunny/bun_zipper.ply} once PLY loading is in.
+ * {@code -p scene=../shared/data/meshes/bunny/bun_zipper.ply}.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.AverageTime)
@@ -48,9 +48,9 @@ public class BvhTraversalBenchmark {
 
     @Setup
     public void setUp() throws Exception {
-        Scene s = SceneLoader.load(Path.of(scene));
-        bvh = s.bvh();
-        Aabb box = s.geometry().bounds();
+        World world = World.of(SceneLoader.load(Path.of(scene)));
+        bvh = world.bvh();
+        Aabb box = world.bounds();
         SplittableRandom random = new SplittableRandom(3);
         for (int i = 0; i < RAYS; i++) {
             double z = 1 - 2 * random.nextDouble(), r = Math.sqrt(1 - z * z), phi = 2 * Math.PI * random.nextDouble();

@@ -3,6 +3,7 @@ package dev.strahl.accel;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
+import dev.strahl.geometry.RayTriangle;
 
 /**
  * A four-wide bounding volume hierarchy over the primitives of a {@link Geometry}, in two flat
@@ -130,18 +131,10 @@ public final class Bvh {
      * entry distances (float bits) or -1 into {@code stack.lanes}. For micro-benchmarks and tests.
      */
     void testNode(int node, Ray ray, TraversalStack stack) {
-        stack.prepare(ray);
-        int o = NODE * node;
-        int tMax = bits(BvhBuilder.roundUp(ray.tMax));
-        if (simd) {
-            SimdNodes.entries(nodes, o, stack.nx, stack.ny, stack.nz, stack.onx, stack.ony, stack.onz, stack.ofx, stack.ofy, stack.ofz,
-                    stack.ix, stack.iy, stack.iz, tMax, MARGIN_ULPS, stack.lanes);
-        } else {
-            for (int k = 0; k < 4; k++) {
-                stack.lanes[k] = entry(nodes, o + k, stack.nx, stack.ny, stack.nz, stack.onx, stack.ony, stack.onz, stack.ofx, stack.ofy,
-                        stack.ofz, stack.ix, stack.iy, stack.iz, tMax);
-            }
-        }
+        TraversalStack s = stack;
+        s.prepare(ray);
+        childEntries(nodes, NODE * node, s.nx, s.ny, s.nz, s.onx, s.ony, s.onz, s.ofx, s.ofy, s.ofz, s.ix, s.iy, s.iz,
+                bits(BvhBuilder.roundUp(ray.tMax)), s.lanes);
     }
 
     /** Allocates a traversal stack for one thread. */
@@ -154,8 +147,9 @@ public final class Bvh {
      * {@code ray.tMax}. At an interior node the four children's boxes are tested; those the ray
      * enters are visited nearest first, the others pushed with their entry distance, so that a
      * node farther than a hit found meanwhile is dropped without another look. Triangles are
-     * tested in this loop with the arithmetic of {@link Geometry#intersect(int, int, Ray, Hit, boolean)}
-     * (the watertight test of Woop et al. 2013), its per-ray set-up done once per ray.
+     * tested with {@link RayTriangle} (the watertight test of Woop et al. 2013), as
+     * {@link Geometry#intersect(int, int, Ray, Hit, boolean)} does, so both give the same bits;
+     * its per-ray set-up is done once per ray, with the box tests' ({@link TraversalStack#prepare}).
      *
      * <p>The slab tests run in float, kept conservative (never losing a box the exact ray
      * touches): the origin is bounded by the floats just below and above it and each slab uses
@@ -170,11 +164,20 @@ public final class Bvh {
             return false;
         }
         stack.prepare(ray);
+        return closestHit(ray, hit, stack, cullBackFaces);
+    }
+
+    /**
+     * The traversal loop of {@link #intersect}, in a method of its own: the per-ray set-up is
+     * inlined into its caller, not into the loop, where it made the loop slower (both
+     * measured: docs/performance.md, round 4). The loop keeps the box tests' set-up in locals
+     * (reading it from the stack's fields made shadow rays about 5 % slower).
+     */
+    private boolean closestHit(Ray ray, Hit hit, TraversalStack stack, boolean cullBackFaces) {
         final float ix = stack.ix, iy = stack.iy, iz = stack.iz;
         final int nx = stack.nx, ny = stack.ny, nz = stack.nz;
         final float onx = stack.onx, ony = stack.ony, onz = stack.onz, ofx = stack.ofx, ofy = stack.ofy, ofz = stack.ofz;
-        final int kx = stack.kx, ky = stack.ky, kz = stack.kz;
-        final double sx = stack.sx, sy = stack.sy, sz = stack.sz, okx = stack.okx, oky = stack.oky, okz = stack.okz;
+        final RayTriangle tr = stack.triangle;
         final float[] pos = this.pos;
         final int[] tri = this.tri;
         final float[] box = nodes;
@@ -184,7 +187,6 @@ public final class Bvh {
         double tHit = ray.tMax;
         int tMax = bits(BvhBuilder.roundUp(tHit));
         int found = -1;
-        double foundV = 0, foundW = 0, foundDet = 1;
         int sp = 0;
         int ref = 0;
         while (true) {
@@ -192,13 +194,7 @@ public final class Bvh {
                 int o = NODE * ref;
                 int c = o + 24;
                 int base = sp;
-                if (simd) {
-                    SimdNodes.entries(box, o, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax, MARGIN_ULPS, lanes);
-                } else {
-                    for (int k = 0; k < 4; k++) {
-                        lanes[k] = entry(box, o + k, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax);
-                    }
-                }
+                childEntries(box, o, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax, lanes);
                 for (int k = 0; k < 4; k++) {
                     // Written always, kept only on a hit: no branch to mispredict.
                     int t = lanes[k];
@@ -221,41 +217,9 @@ public final class Bvh {
                 if (first < triangleCount) {
                     boolean closer = false;
                     for (int prim = first; prim < end; prim++) {
-                        int va = 3 * tri[3 * prim], vb = 3 * tri[3 * prim + 1], vc = 3 * tri[3 * prim + 2];
-                        double az0 = pos[va + kz] - okz, bz0 = pos[vb + kz] - okz, cz0 = pos[vc + kz] - okz;
-                        double axs = pos[va + kx] - okx - sx * az0, ays = pos[va + ky] - oky - sy * az0;
-                        double bxs = pos[vb + kx] - okx - sx * bz0, bys = pos[vb + ky] - oky - sy * bz0;
-                        double cxs = pos[vc + kx] - okx - sx * cz0, cys = pos[vc + ky] - oky - sy * cz0;
-                        double u = cxs * bys - cys * bxs;
-                        double v = axs * cys - ays * cxs;
-                        double w = bxs * ays - bys * axs;
-                        if (differentSigns(u, v, w)) {
-                            continue;
-                        }
-                        if (u == 0 || v == 0 || w == 0) {
-                            // On an edge's line: the geometry decides exactly.
-                            ray.tMax = tHit;
-                            if (geometry.intersect(prim, 1, ray, hit, cullBackFaces)) {
-                                tHit = hit.t;
-                                found = prim;
-                                foundV = hit.b1;
-                                foundW = hit.b2;
-                                foundDet = 1;
-                                closer = true;
-                            }
-                            continue;
-                        }
-                        double det = u + v + w;
-                        if (det < 0 && cullBackFaces && (flags[prim] & Geometry.CLOSED) != 0) {
-                            continue;
-                        }
-                        double t = (u * az0 + v * bz0 + w * cz0) * sz / det;
-                        if (t > 0 && t < tHit) {
-                            tHit = t;
+                        if (tr.hit(pos, tri, flags, prim, tHit, cullBackFaces)) {
+                            tHit = tr.t;
                             found = prim;
-                            foundV = v;
-                            foundW = w;
-                            foundDet = det;
                             closer = true;
                         }
                     }
@@ -275,14 +239,15 @@ public final class Bvh {
             int cut = tMax + MARGIN_ULPS;
             do {
                 if (sp == 0) {
-                    return finish(ray, hit, found, tHit, foundV / foundDet, foundW / foundDet);
+                    return finish(ray, hit, found, tHit, tr);
                 }
                 ref = refs[--sp];
             } while (dist[sp] > cut);
         }
     }
 
-    private boolean finish(Ray ray, Hit hit, int found, double t, double b1, double b2) {
+    /** Records the closest hit; a triangle's barycentrics are in {@code tr}, which holds the last triangle hit it reported. */
+    private boolean finish(Ray ray, Hit hit, int found, double t, RayTriangle tr) {
         if (found < 0) {
             return false;
         }
@@ -290,8 +255,8 @@ public final class Bvh {
         hit.t = t;
         hit.prim = found;
         if (found < triangleCount) {
-            hit.b1 = b1;
-            hit.b2 = b2;
+            hit.b1 = tr.b1();
+            hit.b2 = tr.b2();
         }
         return true;
     }
@@ -302,11 +267,15 @@ public final class Bvh {
             return false;
         }
         stack.prepare(ray);
+        return anyHit(ray, stack);
+    }
+
+    /** The traversal loop of {@link #occluded}, apart from its set-up as in {@link #closestHit}. */
+    private boolean anyHit(Ray ray, TraversalStack stack) {
         final float ix = stack.ix, iy = stack.iy, iz = stack.iz;
         final int nx = stack.nx, ny = stack.ny, nz = stack.nz;
         final float onx = stack.onx, ony = stack.ony, onz = stack.onz, ofx = stack.ofx, ofy = stack.ofy, ofz = stack.ofz;
-        final int kx = stack.kx, ky = stack.ky, kz = stack.kz;
-        final double sx = stack.sx, sy = stack.sy, sz = stack.sz, okx = stack.okx, oky = stack.oky, okz = stack.okz;
+        final RayTriangle tr = stack.triangle;
         final double tHit = ray.tMax;
         final int tMax = bits(BvhBuilder.roundUp(tHit));
         final float[] pos = this.pos;
@@ -319,17 +288,10 @@ public final class Bvh {
         while (true) {
             if (ref >= 0) {
                 int o = NODE * ref;
-                int c = o + 24;
-                if (simd) {
-                    SimdNodes.entries(box, o, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax, MARGIN_ULPS, lanes);
-                } else {
-                    for (int k = 0; k < 4; k++) {
-                        lanes[k] = entry(box, o + k, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax);
-                    }
-                }
+                childEntries(box, o, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax, lanes);
                 // Unordered: sorting cost more than it found blockers sooner (docs/performance.md).
                 for (int k = 0; k < 4; k++) {
-                    refs[sp] = Float.floatToRawIntBits(box[c + k]);
+                    refs[sp] = Float.floatToRawIntBits(box[o + 24 + k]);
                     sp += ~lanes[k] >>> 31;
                 }
             } else {
@@ -340,25 +302,7 @@ public final class Bvh {
                     }
                 } else {
                     for (int prim = first; prim < end; prim++) {
-                        int va = 3 * tri[3 * prim], vb = 3 * tri[3 * prim + 1], vc = 3 * tri[3 * prim + 2];
-                        double az0 = pos[va + kz] - okz, bz0 = pos[vb + kz] - okz, cz0 = pos[vc + kz] - okz;
-                        double axs = pos[va + kx] - okx - sx * az0, ays = pos[va + ky] - oky - sy * az0;
-                        double bxs = pos[vb + kx] - okx - sx * bz0, bys = pos[vb + ky] - oky - sy * bz0;
-                        double cxs = pos[vc + kx] - okx - sx * cz0, cys = pos[vc + ky] - oky - sy * cz0;
-                        double u = cxs * bys - cys * bxs;
-                        double v = axs * cys - ays * cxs;
-                        double w = bxs * ays - bys * axs;
-                        if (differentSigns(u, v, w)) {
-                            continue;
-                        }
-                        if (u == 0 || v == 0 || w == 0) {
-                            if (geometry.occludes(prim, 1, ray)) {
-                                return true;
-                            }
-                            continue;
-                        }
-                        double t = (u * az0 + v * bz0 + w * cz0) * sz / (u + v + w);
-                        if (t > 0 && t < tHit) {
+                        if (tr.hit(pos, tri, flags, prim, tHit, false)) {
                             return true;
                         }
                     }
@@ -392,16 +336,21 @@ public final class Bvh {
         return tn <= tf + MARGIN_ULPS ? tn : -1;
     }
 
+
     /**
-     * {@code (u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)} with one branch instead of
-     * up to six, each of which a random ray mispredicts: the sign bit of {@code x + 0} is set
-     * exactly when x &lt; 0 (the addition turns −0 into +0), that of {@code 0 − x} exactly when
-     * x &gt; 0. A NaN may count either way; it gives no hit either way (its t is NaN).
+     * The entry distances (float bits) of the four children of the node whose boxes start at
+     * {@code o}, or -1 for those the ray misses, into {@code lanes}; on the Vector API path or
+     * the scalar one. The box set-up comes as arguments, kept in locals by the traversal loops.
      */
-    private static boolean differentSigns(double u, double v, double w) {
-        long below = Double.doubleToRawLongBits(u + 0.0) | Double.doubleToRawLongBits(v + 0.0) | Double.doubleToRawLongBits(w + 0.0);
-        long above = Double.doubleToRawLongBits(0.0 - u) | Double.doubleToRawLongBits(0.0 - v) | Double.doubleToRawLongBits(0.0 - w);
-        return (below & above) < 0;
+    private void childEntries(float[] box, int o, int nx, int ny, int nz, float onx, float ony, float onz,
+                              float ofx, float ofy, float ofz, float ix, float iy, float iz, int tMax, int[] lanes) {
+        if (simd) {
+            SimdNodes.entries(box, o, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax, MARGIN_ULPS, lanes);
+        } else {
+            for (int k = 0; k < 4; k++) {
+                lanes[k] = entry(box, o + k, nx, ny, nz, onx, ony, onz, ofx, ofy, ofz, ix, iy, iz, tMax);
+            }
+        }
     }
 
     private static int bits(float f) {

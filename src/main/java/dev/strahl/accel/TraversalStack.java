@@ -1,6 +1,7 @@
 package dev.strahl.accel;
 
 import dev.strahl.geometry.Ray;
+import dev.strahl.geometry.RayTriangle;
 
 /**
  * Per-thread working memory of a BVH traversal: the nodes still to visit with the distance at
@@ -19,15 +20,13 @@ public final class TraversalStack {
     float ix, iy, iz;
     int nx, ny, nz;
     float onx, ony, onz, ofx, ofy, ofz;
-    // Triangle test (Woop et al. 2013): axis permutation, shear and the permuted origin.
-    int kx, ky, kz;
-    double sx, sy, sz, okx, oky, okz;
-
-    private final double[] d = new double[3], o = new double[3];
+    /** The triangle test's per-ray set-up; it also receives the scaled barycentrics of hits. */
+    final RayTriangle triangle = new RayTriangle();
 
     /**
-     * Sets up the per-ray constants without branches on the direction (random rays would
-     * mispredict every one of them): selections go through small arrays and sign bits.
+     * Sets up the per-ray constants of the box tests and of the triangle test without branches
+     * on the direction (random rays would mispredict every one of them): selections go through
+     * sign bits.
      */
     void prepare(Ray ray) {
         double ox = ray.o.x, oy = ray.o.y, oz = ray.o.z, dx = ray.d.x, dy = ray.d.y, dz = ray.d.z;
@@ -47,32 +46,7 @@ public final class TraversalStack {
         ofy = pick(sgy, loy, hiy);
         onz = pick(sgz, hiz, loz);
         ofz = pick(sgz, loz, hiz);
-
-        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
-        int gxy = signBit(ay - ax), gxz = signBit(az - ax), gyz = signBit(az - ay);    // 1 where the first is larger
-        int z = gxy * (2 - 2 * gxz) + (1 - gxy) * (2 - gyz);
-        d[0] = dx;
-        d[1] = dy;
-        d[2] = dz;
-        o[0] = ox;
-        o[1] = oy;
-        o[2] = oz;
-        double dkz = d[z];
-        int x0 = z + 1 - 3 * (z >> 1), y0 = x0 + 1 - 3 * (x0 >> 1);
-        int neg = signBit(dkz);
-        kz = z;
-        kx = x0 + neg * (y0 - x0);
-        ky = y0 + neg * (x0 - y0);
-        sz = 1 / dkz;
-        sx = d[kx] * sz;
-        sy = d[ky] * sz;
-        okx = o[kx];
-        oky = o[ky];
-        okz = o[kz];
-    }
-
-    private static int signBit(double v) {
-        return (int) (Double.doubleToRawLongBits(v) >>> 63);
+        triangle.prepare(ray);
     }
 
     /** {@code sign == 0 ? positive : negative}, without a branch. */

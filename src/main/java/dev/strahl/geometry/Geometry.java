@@ -1,13 +1,12 @@
 package dev.strahl.geometry;
 
-import java.util.Arrays;
 import org.joml.Vector3d;
 
 /**
  * All primitives of a scene in flat arrays: triangles of every mesh concatenated (indexed
  * vertices, struct-of-arrays) and analytic spheres. Primitive ids 0 .. triangleCount-1 are
- * triangles, the following ones spheres. Immutable after {@link Builder#build()} and safe to share
- * between threads.
+ * triangles, the following ones spheres. Immutable and safe to share
+ * between threads. Built by {@link GeometryBuilder}.
  *
  * <p>Intersection methods take t in (0, ray.tMax); new rays avoid self-intersection by starting
  * from {@link SurfacePoint#spawnOrigin}.
@@ -16,77 +15,28 @@ public final class Geometry {
     /** Triangle flag: part of a closed, outward-facing mesh, so its back faces may be culled. */
     public static final byte CLOSED = 1;
 
-    private final float[] pos;
-    private final int[] tri;
-    private final float[] nrm;          // per vertex, NaN where a vertex has no normal; null if none
-    private final int[] triMaterial;
-    private final byte[] triFlags;
-    private final double[] sph;         // cx, cy, cz, r per sphere
-    private final int[] sphMaterial;
+    // Package-private for the builder, the leaf reordering and the digest (GeometryBuilder, LeafOrder, GeometryDigest).
+    final float[] pos;
+    final int[] tri;
+    final float[] nrm;          // per vertex, NaN where a vertex has no normal; null if none
+    final int[] triMaterial;
+    final byte[] triFlags;
+    final double[] sph;         // cx, cy, cz, r per sphere
+    final int[] sphMaterial;
     private final int triangleCount;
     private final int sphereCount;
 
-    private Geometry(Builder b) {
-        this.pos = Arrays.copyOf(b.pos, b.vertexCount * 3);
-        this.tri = Arrays.copyOf(b.tri, b.triangleCount * 3);
-        this.nrm = b.hasNormals ? Arrays.copyOf(b.nrm, b.vertexCount * 3) : null;
-        this.triMaterial = Arrays.copyOf(b.triMaterial, b.triangleCount);
-        this.triFlags = Arrays.copyOf(b.triFlags, b.triangleCount);
-        this.sph = Arrays.copyOf(b.sph, b.sphereCount * 4);
-        this.sphMaterial = Arrays.copyOf(b.sphMaterial, b.sphereCount);
-        this.triangleCount = b.triangleCount;
-        this.sphereCount = b.sphereCount;
-    }
-
-    private Geometry(Geometry g, int[] order) {
-        this.triangleCount = g.triangleCount;
-        this.sphereCount = g.sphereCount;
-        this.tri = new int[g.tri.length];
-        this.triMaterial = new int[g.triMaterial.length];
-        this.triFlags = new byte[g.triFlags.length];
-        this.sph = new double[g.sph.length];
-        this.sphMaterial = new int[g.sphMaterial.length];
-        // Vertices are renumbered in the order the reordered triangles first use them, so that
-        // neighbouring triangles (of one leaf) find their vertices close together in memory;
-        // vertices no triangle uses are dropped.
-        int vertexCount = g.pos.length / 3;
-        int[] newVertex = new int[vertexCount];
-        java.util.Arrays.fill(newVertex, -1);
-        int used = 0;
-        boolean[] seen = new boolean[order.length];
-        for (int i = 0; i < order.length; i++) {
-            int old = order[i];
-            if (old < 0 || old >= order.length || seen[old] || (i < triangleCount) != (old < triangleCount)) {
-                throw new IllegalArgumentException("not a permutation keeping triangles before spheres: position " + i + " holds " + old);
-            }
-            seen[old] = true;
-            if (i < triangleCount) {
-                for (int k = 0; k < 3; k++) {
-                    int v = g.tri[3 * old + k];
-                    if (newVertex[v] < 0) {
-                        newVertex[v] = used++;
-                    }
-                    tri[3 * i + k] = newVertex[v];
-                }
-                triMaterial[i] = g.triMaterial[old];
-                triFlags[i] = g.triFlags[old];
-            } else {
-                int s = i - triangleCount, so = old - triangleCount;
-                System.arraycopy(g.sph, 4 * so, sph, 4 * s, 4);
-                sphMaterial[s] = g.sphMaterial[so];
-            }
-        }
-        this.pos = new float[3 * used];
-        this.nrm = g.nrm == null ? null : new float[3 * used];
-        for (int v = 0; v < vertexCount; v++) {
-            int n = newVertex[v];
-            if (n >= 0) {
-                System.arraycopy(g.pos, 3 * v, pos, 3 * n, 3);
-                if (nrm != null) {
-                    System.arraycopy(g.nrm, 3 * v, nrm, 3 * n, 3);
-                }
-            }
-        }
+    /** Takes the arrays (not copies); the counts are those of the material arrays. */
+    Geometry(float[] pos, int[] tri, float[] nrm, int[] triMaterial, byte[] triFlags, double[] sph, int[] sphMaterial) {
+        this.pos = pos;
+        this.nrm = nrm;
+        this.tri = tri;
+        this.triMaterial = triMaterial;
+        this.triFlags = triFlags;
+        this.triangleCount = triMaterial.length;
+        this.sph = sph;
+        this.sphMaterial = sphMaterial;
+        this.sphereCount = sphMaterial.length;
     }
 
     /**
@@ -99,7 +49,7 @@ public final class Geometry {
         if (order.length != primitiveCount()) {
             throw new IllegalArgumentException("order has " + order.length + " entries for " + primitiveCount() + " primitives");
         }
-        return new Geometry(this, order);
+        return LeafOrder.permute(this, order);
     }
 
     public int triangleCount() {
@@ -134,7 +84,7 @@ public final class Geometry {
 
     /**
      * The arrays behind the triangles, not copies, for acceleration structures that test
-     * triangles in their own inner loops (with the arithmetic of {@link #intersect}): vertex
+     * triangles in their own inner loops (with {@link RayTriangle}, as {@link #intersect} does): vertex
      * positions (x, y, z per vertex), vertex indices (three per triangle) and per-triangle flags
      * ({@link #CLOSED}). Never modify them.
      */
@@ -157,38 +107,7 @@ public final class Geometry {
      * content (used to tie a render checkpoint to its scene). Not on any hot path.
      */
     public void digest(java.security.MessageDigest md) {
-        var buf = java.nio.ByteBuffer.allocate(1 << 16);
-        buf.putInt(triangleCount).putInt(sphereCount).putInt(nrm == null ? 0 : 1);
-        for (float f : pos) {
-            digestFlush(md, buf, 4).putFloat(f);
-        }
-        for (int i : tri) {
-            digestFlush(md, buf, 4).putInt(i);
-        }
-        for (float f : nrm == null ? new float[0] : nrm) {
-            digestFlush(md, buf, 4).putInt(Float.floatToIntBits(f));
-        }
-        for (int i : triMaterial) {
-            digestFlush(md, buf, 4).putInt(i);
-        }
-        for (byte b : triFlags) {
-            digestFlush(md, buf, 1).put(b);
-        }
-        for (double d : sph) {
-            digestFlush(md, buf, 8).putDouble(d);
-        }
-        for (int i : sphMaterial) {
-            digestFlush(md, buf, 4).putInt(i);
-        }
-        md.update(buf.flip());
-    }
-
-    private static java.nio.ByteBuffer digestFlush(java.security.MessageDigest md, java.nio.ByteBuffer buf, int need) {
-        if (buf.remaining() < need) {
-            md.update(buf.flip());
-            buf.clear();
-        }
-        return buf;
+        GeometryDigest.feed(this, md);
     }
 
     /** Grows {@code box} by the bounds of a primitive. */
@@ -228,7 +147,8 @@ public final class Geometry {
      * The closest hit among the primitives {@code first .. first + count - 1}, which are either
      * all triangles or all spheres (as in a BVH leaf); on a hit closer than {@code ray.tMax},
      * records it in {@code hit} and shortens {@code ray.tMax}. The same arithmetic as the
-     * one-primitive test, so that a leaf and a loop over all primitives agree bit for bit.
+     * one-primitive test and the BVH's, so that they agree bit for bit with a loop over all
+     * primitives.
      */
     public boolean intersect(int first, int count, Ray ray, Hit hit, boolean cullBackFaces) {
         if (first < triangleCount) {
@@ -317,7 +237,12 @@ public final class Geometry {
 
     /**
      * A point on a primitive from two uniform numbers, uniform by area; writes the point into
-     * {@code sp.p} and its geometric normal into {@code sp.ng} (and {@code sp.n}).
+     * {@code sp.p} and its geometric normal into {@code sp.ng} (and {@code sp.n}). The one
+     * sampling of triangles: light sampling and photon emission use it.
+     *
+     * <p>On a triangle the barycentrics are 1 − √u1 on v0, b1 = u2·√u1 on v1 and b2 = √u1 − b1
+     * on v2 (pbrt-v4 §6.5.4), and the point is v0 + b1·(v1 − v0) + b2·(v2 − v0) with the edges in
+     * double (as the normal's): it is v0 exactly at u1 = 0, and b2 has no round-off from 1 − √u1.
      */
     public void samplePoint(int prim, double u1, double u2, SurfacePoint sp) {
         sp.prim = prim;
@@ -325,8 +250,10 @@ public final class Geometry {
         if (prim < triangleCount) {
             int i0 = 3 * tri[3 * prim], i1 = 3 * tri[3 * prim + 1], i2 = 3 * tri[3 * prim + 2];
             double su = Math.sqrt(u1);
-            double b0 = 1 - su, b1 = u2 * su, b2 = 1 - b0 - b1;
-            interpolate(pos, i0, i1, i2, b0, b1, b2, sp.p);
+            double b1 = u2 * su, b2 = su - b1;
+            sp.p.set(pos[i0] + b1 * ((double) pos[i1] - pos[i0]) + b2 * ((double) pos[i2] - pos[i0]),
+                    pos[i0 + 1] + b1 * ((double) pos[i1 + 1] - pos[i0 + 1]) + b2 * ((double) pos[i2 + 1] - pos[i0 + 1]),
+                    pos[i0 + 2] + b1 * ((double) pos[i1 + 2] - pos[i0 + 2]) + b2 * ((double) pos[i2 + 2] - pos[i0 + 2]));
             edgeCross(i0, i1, i2, sp.ng).normalize();
         } else {
             int k = 4 * (prim - triangleCount);
@@ -356,114 +283,5 @@ public final class Geometry {
         return dest.set(b0 * a[i0] + b1 * a[i1] + b2 * a[i2],
                 b0 * a[i0 + 1] + b1 * a[i1 + 1] + b2 * a[i2 + 1],
                 b0 * a[i0 + 2] + b1 * a[i1 + 2] + b2 * a[i2 + 2]);
-    }
-
-    /** Collects meshes and spheres with their material indices. */
-    public static final class Builder {
-        /** Creates an empty builder. */
-        public Builder() {}
-
-        private float[] pos = new float[48];
-        private int[] tri = new int[48];
-        private float[] nrm = new float[48];
-        private int[] triMaterial = new int[16];
-        private byte[] triFlags = new byte[16];
-        private double[] sph = new double[16];
-        private int[] sphMaterial = new int[4];
-        private int vertexCount, triangleCount, sphereCount;
-        private boolean hasNormals;
-        private int degenerateCount;
-
-        /**
-         * Adds every non-degenerate triangle of an indexed mesh with its material and flags
-         * ({@link #CLOSED}) per triangle. Triangles of zero area are skipped and counted.
-         *
-         * @param p         vertex positions, x, y, z per vertex
-         * @param idx       three vertex indices per triangle, each in range
-         * @param n         vertex normals like {@code p}, or null
-         * @param materials the material index of each triangle
-         * @param flags     the flags of each triangle
-         */
-        public Builder addMesh(float[] p, int[] idx, float[] n, int[] materials, byte[] flags) {
-            int triangles = idx.length / 3;
-            if (materials.length != triangles || flags.length != triangles) {
-                throw new IllegalArgumentException("need one material and flag per triangle: " + materials.length + " for " + triangles);
-            }
-            int base = vertexCount;
-            ensureVertices(vertexCount + p.length / 3);
-            System.arraycopy(p, 0, pos, 3 * base, p.length);
-            if (n != null) {
-                if (!hasNormals) {
-                    Arrays.fill(nrm, 0, 3 * base, Float.NaN);
-                    hasNormals = true;
-                }
-                System.arraycopy(n, 0, nrm, 3 * base, n.length);
-            } else {
-                Arrays.fill(nrm, 3 * base, 3 * (base + p.length / 3), Float.NaN);
-            }
-            vertexCount += p.length / 3;
-            for (int t = 0; t < triangles; t++) {
-                int a = idx[3 * t], b = idx[3 * t + 1], c = idx[3 * t + 2];
-                if (isDegenerate(p, a, b, c)) {
-                    degenerateCount++;
-                    continue;
-                }
-                ensureTriangles(triangleCount + 1);
-                tri[3 * triangleCount] = base + a;
-                tri[3 * triangleCount + 1] = base + b;
-                tri[3 * triangleCount + 2] = base + c;
-                triMaterial[triangleCount] = materials[t];
-                triFlags[triangleCount] = flags[t];
-                triangleCount++;
-            }
-            return this;
-        }
-
-        public Builder addSphere(Sphere sphere, int material) {
-            if (4 * (sphereCount + 1) > sph.length) {
-                sph = Arrays.copyOf(sph, 2 * sph.length);
-                sphMaterial = Arrays.copyOf(sphMaterial, 2 * sphMaterial.length);
-            }
-            int k = 4 * sphereCount;
-            sph[k] = sphere.center().x();
-            sph[k + 1] = sphere.center().y();
-            sph[k + 2] = sphere.center().z();
-            sph[k + 3] = sphere.radius();
-            sphMaterial[sphereCount++] = material;
-            return this;
-        }
-
-        /** Triangles skipped so far because their area is zero. */
-        public int degenerateCount() {
-            return degenerateCount;
-        }
-
-        public Geometry build() {
-            return new Geometry(this);
-        }
-
-        private static boolean isDegenerate(float[] p, int a, int b, int c) {
-            double e1x = (double) p[3 * b] - p[3 * a], e1y = (double) p[3 * b + 1] - p[3 * a + 1], e1z = (double) p[3 * b + 2] - p[3 * a + 2];
-            double e2x = (double) p[3 * c] - p[3 * a], e2y = (double) p[3 * c + 1] - p[3 * a + 1], e2z = (double) p[3 * c + 2] - p[3 * a + 2];
-            double cx = e1y * e2z - e1z * e2y, cy = e1z * e2x - e1x * e2z, cz = e1x * e2y - e1y * e2x;
-            return cx * cx + cy * cy + cz * cz == 0;
-        }
-
-        private void ensureVertices(int count) {
-            if (3 * count > pos.length) {
-                int size = Math.max(3 * count, 2 * pos.length);
-                pos = Arrays.copyOf(pos, size);
-                nrm = Arrays.copyOf(nrm, size);
-            }
-        }
-
-        private void ensureTriangles(int count) {
-            if (count > triMaterial.length) {
-                int size = Math.max(count, 2 * triMaterial.length);
-                tri = Arrays.copyOf(tri, 3 * size);
-                triMaterial = Arrays.copyOf(triMaterial, size);
-                triFlags = Arrays.copyOf(triFlags, size);
-            }
-        }
     }
 }

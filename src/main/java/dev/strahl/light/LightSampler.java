@@ -8,25 +8,27 @@ import org.joml.Vector3dc;
 
 /**
  * Picks points on the emissive primitives (area lights) for next-event estimation. A primitive is
- * chosen in proportion to its power, area × mean(Le), then a point uniformly by area; the
- * density per unit area is thus mean(Le) / total power for every emitter, which lets
- * {@link #pdf} work from the material alone. Lights are one-sided: they emit into the
- * hemisphere of their geometric normal. Immutable and thread-safe.
+ * chosen in proportion to its power, area × mean(Le), then a point uniformly by area with
+ * {@link Geometry#samplePoint} (the one sampling of a primitive); the density per unit area is
+ * thus mean(Le) / total power for every emitter, which lets {@link #pdf} work from the material
+ * alone. Lights are one-sided: they emit into the hemisphere of their geometric normal.
+ * Immutable and thread-safe.
  */
 public final class LightSampler {
     private final Geometry geometry;
-    private final Rgb[] emission;        // per material
+    private final Rgb[] emission;        // per material: the caller's table, not a copy
     private final int[] prims;           // emissive primitives
     private final double[] cdf;          // cumulative power, cdf[last] = 1
     private final double totalPower;     // sum of area × mean(Le)
-    private final double[] frame;        // per emissive triangle: v0, e1 = v1 − v0, e2 = v2 − v0, unit ng (12 doubles)
-    private final int[] material;        // per emissive primitive
     private final double[] density;      // per material: mean(Le) / total power, the density per unit area
 
-    /** @param emissionByMaterial emitted radiance of each material index (black = not a light) */
+    /**
+     * @param emissionByMaterial emitted radiance of each material index (black = not a light); kept,
+     *                           not copied (the world's one table), so it must not change afterwards
+     */
     public LightSampler(Geometry geometry, Rgb[] emissionByMaterial) {
         this.geometry = geometry;
-        this.emission = emissionByMaterial.clone();
+        this.emission = emissionByMaterial;
         int n = 0;
         int[] found = new int[16];
         double[] power = new double[16];
@@ -49,32 +51,6 @@ public final class LightSampler {
             cdf[i] /= total;
         }
         this.totalPower = total;
-        this.material = new int[n];
-        this.frame = new double[12 * n];
-        SurfacePoint sp = new SurfacePoint();
-        for (int i = 0; i < n; i++) {
-            int prim = prims[i];
-            material[i] = geometry.material(prim);
-            if (geometry.isTriangle(prim)) {
-                // Corners from the geometry's own sampling: (u1, u2) = (0, 0) is v0, (1, 1) is v1, (1, 0) is v2.
-                geometry.samplePoint(prim, 0, 0, sp);
-                double v0x = sp.p.x, v0y = sp.p.y, v0z = sp.p.z;
-                frame[12 * i + 9] = sp.ng.x;
-                frame[12 * i + 10] = sp.ng.y;
-                frame[12 * i + 11] = sp.ng.z;
-                geometry.samplePoint(prim, 1, 1, sp);
-                frame[12 * i + 3] = sp.p.x - v0x;
-                frame[12 * i + 4] = sp.p.y - v0y;
-                frame[12 * i + 5] = sp.p.z - v0z;
-                geometry.samplePoint(prim, 1, 0, sp);
-                frame[12 * i + 6] = sp.p.x - v0x;
-                frame[12 * i + 7] = sp.p.y - v0y;
-                frame[12 * i + 8] = sp.p.z - v0z;
-                frame[12 * i] = v0x;
-                frame[12 * i + 1] = v0y;
-                frame[12 * i + 2] = v0z;
-            }
-        }
         this.density = new double[emission.length];
         for (int m = 0; m < emission.length; m++) {
             density[m] = total > 0 ? weight(m) / total : 0;
@@ -112,30 +88,13 @@ public final class LightSampler {
      * @param scratch a per-thread surface record for the sampled point
      */
     public boolean sample(Vector3dc ref, double uLight, double u1, double u2, SurfacePoint scratch, LightSample out) {
-        int n = prims.length;
-        if (n == 0) {
+        if (prims.length == 0) {
             return false;
         }
-        int i = select(uLight);
-        int prim = prims[i];
-        int m = material[i];
-        scratch.prim = prim;
-        scratch.material = m;
-        if (geometry.isTriangle(prim)) {
-            // Uniform by area, with the barycentrics of Geometry#samplePoint (pbrt-v4 §6.5.4):
-            // 1 − √u1 on v0, u2·√u1 on v1 and the rest, √u1·(1 − u2), on v2.
-            double su = Math.sqrt(u1);
-            double b1 = u2 * su, b2 = su - b1;
-            int f = 12 * i;
-            out.p.set(frame[f] + b1 * frame[f + 3] + b2 * frame[f + 6],
-                    frame[f + 1] + b1 * frame[f + 4] + b2 * frame[f + 7],
-                    frame[f + 2] + b1 * frame[f + 5] + b2 * frame[f + 8]);
-            out.ng.set(frame[f + 9], frame[f + 10], frame[f + 11]);
-        } else {
-            geometry.samplePoint(prim, u1, u2, scratch);
-            out.p.set(scratch.p);
-            out.ng.set(scratch.ng);
-        }
+        geometry.samplePoint(prims[select(uLight)], u1, u2, scratch);
+        int m = scratch.material;
+        out.p.set(scratch.p);
+        out.ng.set(scratch.ng);
         double dx = out.p.x - ref.x(), dy = out.p.y - ref.y(), dz = out.p.z - ref.z();
         double dist2 = dx * dx + dy * dy + dz * dz;
         double dist = Math.sqrt(dist2);

@@ -2,6 +2,7 @@ package dev.strahl.scene;
 
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
+import dev.strahl.geometry.GeometryBuilder;
 import dev.strahl.geometry.MeshTopology;
 import dev.strahl.geometry.Sphere;
 import dev.strahl.image.Rgb;
@@ -95,7 +96,7 @@ public final class Scene {
 
     /** Collects shapes, materials, camera and environment, then builds the BVH once. Not thread-safe. */
     public static final class Builder {
-        private final Geometry.Builder geometry = new Geometry.Builder();
+        private final GeometryBuilder geometry = new GeometryBuilder();
         private final List<Material> materials = new ArrayList<>();
         private final Map<Material, Integer> materialIndex = new IdentityHashMap<>();
         private final List<String> notes = new ArrayList<>();

@@ -1,13 +1,14 @@
 package dev.strahl.testing;
 
 import dev.strahl.geometry.Geometry;
+import dev.strahl.geometry.GeometryBuilder;
 import dev.strahl.geometry.Sphere;
 import dev.strahl.scene.TriangleMesh;
 import org.joml.Vector3dc;
 
-/** A {@link Geometry.Builder} that takes {@link TriangleMesh}es, as the tests build geometry. */
+/** A {@link GeometryBuilder} that takes {@link TriangleMesh}es, as the tests build geometry. */
 public final class MeshGeometry {
-    private final Geometry.Builder builder = new Geometry.Builder();
+    private final GeometryBuilder builder = new GeometryBuilder();
 
     /** Adds every non-degenerate triangle, all of them closed (back faces may be culled) or not. */
     public MeshGeometry addMesh(TriangleMesh mesh, int[] materials, boolean closed) {

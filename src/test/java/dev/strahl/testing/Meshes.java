@@ -2,6 +2,7 @@ package dev.strahl.testing;
 
 import dev.strahl.camera.PinholeRays;
 import dev.strahl.geometry.Geometry;
+import dev.strahl.geometry.GeometryBuilder;
 import dev.strahl.scene.Camera;
 import dev.strahl.scene.TriangleMesh;
 import java.util.ArrayList;
@@ -74,14 +75,14 @@ public final class Meshes {
     }
 
     /** Adds a mesh to a geometry under construction, all its triangles with one flag (closed or not). */
-    public static Geometry.Builder add(Geometry.Builder builder, TriangleMesh mesh, int[] materials, boolean closed) {
+    public static GeometryBuilder add(GeometryBuilder builder, TriangleMesh mesh, int[] materials, boolean closed) {
         byte[] flags = new byte[mesh.triangleCount()];
         java.util.Arrays.fill(flags, closed ? Geometry.CLOSED : 0);
         return add(builder, mesh, materials, flags);
     }
 
     /** Adds a mesh to a geometry under construction with per-triangle flags. */
-    public static Geometry.Builder add(Geometry.Builder builder, TriangleMesh mesh, int[] materials, byte[] flags) {
+    public static GeometryBuilder add(GeometryBuilder builder, TriangleMesh mesh, int[] materials, byte[] flags) {
         return builder.addMesh(mesh.positions(), mesh.indices(), mesh.normals(), materials, flags);
     }
 
