@@ -1,7 +1,7 @@
 package dev.strahl.cli;
 
-import dev.strahl.io.text.Units;
 import dev.strahl.film.Film;
+import dev.strahl.io.image.ImageLimits;
 import java.util.Locale;
 import java.util.function.LongSupplier;
 
@@ -34,7 +34,7 @@ final class HeapCheck {
             throw new IllegalArgumentException(String.format(Locale.ROOT,
                     "a %dx%d image needs %s for its film and image buffers, but the Java heap has %s free of at most %s;"
                             + " render a smaller image or give Java more memory (java -Xmx...)",
-                    width, height, Units.bytes(need), Units.bytes(Math.max(0, free)), Units.bytes(heapMax)));
+                    width, height, ImageLimits.bytes(need), ImageLimits.bytes(Math.max(0, free)), ImageLimits.bytes(heapMax)));
         }
     }
 

@@ -1,21 +1,22 @@
 package dev.strahl.cli;
 
-import dev.strahl.io.text.Units;
 import dev.strahl.image.Image;
-import dev.strahl.io.json.SceneFile;
-import dev.strahl.render.PhotonParameters;
-import dev.strahl.world.World;
-import dev.strahl.scene.Camera;
 import dev.strahl.io.ImageWriters;
+import dev.strahl.io.SceneLoader;
+import dev.strahl.io.image.ImageLimits;
+import dev.strahl.io.json.SceneFile;
+import dev.strahl.io.json.SceneSettings;
+import dev.strahl.io.text.Units;
 import dev.strahl.render.CheckpointException;
+import dev.strahl.render.PhotonParameters;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
+import dev.strahl.scene.Camera;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
-import dev.strahl.io.SceneLoader;
-import dev.strahl.io.json.SceneSettings;
+import dev.strahl.world.World;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
@@ -29,8 +30,8 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
 import org.joml.Vector3d;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -130,7 +131,7 @@ final class RenderCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             return fail(err, e, e.getMessage(), 2);
         } catch (OutOfMemoryError e) {
-            return fail(err, e, "out of memory (the Java heap has at most " + Units.bytes(Runtime.getRuntime().maxMemory())
+            return fail(err, e, "out of memory (the Java heap has at most " + ImageLimits.bytes(Runtime.getRuntime().maxMemory())
                     + "): give Java more memory (java -Xmx...) or render a smaller scene or image", 1);
         } catch (RenderFailure e) {
             return fail(err, e.getCause(), e.getMessage(), 1);
@@ -186,7 +187,7 @@ final class RenderCommand implements Callable<Integer> {
             return SceneFile.load(scene);
         } catch (OutOfMemoryError e) {
             throw new IllegalArgumentException(scene + ": the scene does not fit in the Java heap (at most "
-                    + Units.bytes(Runtime.getRuntime().maxMemory()) + "): give Java more memory (java -Xmx...)", e);
+                    + ImageLimits.bytes(Runtime.getRuntime().maxMemory()) + "): give Java more memory (java -Xmx...)", e);
         }
     }
 

@@ -3,7 +3,7 @@ package dev.strahl.cli;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import dev.strahl.io.text.Units;
+import dev.strahl.io.image.ImageLimits;
 import dev.strahl.film.Film;
 import org.junit.jupiter.api.Test;
 
@@ -58,8 +58,8 @@ class HeapCheckTest {
 
     @Test
     void bytesAreWrittenInBinaryUnits() {
-        assertThat(Units.bytes(512)).isEqualTo("512 bytes");
-        assertThat(Units.bytes(1536)).isEqualTo("1.5 KiB");
-        assertThat(Units.bytes(3L << 30)).isEqualTo("3.0 GiB");
+        assertThat(ImageLimits.bytes(512)).isEqualTo("512 bytes");
+        assertThat(ImageLimits.bytes(1536)).isEqualTo("1.5 KiB");
+        assertThat(ImageLimits.bytes(3L << 30)).isEqualTo("3.0 GiB");
     }
 }

@@ -1,5 +1,7 @@
 package dev.strahl.io.exr;
 
+import static dev.strahl.io.image.ImageFormatException.printable;
+
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
@@ -225,14 +227,5 @@ public record ExrHeader(List<Channel> channels, ExrCompression compression, Box 
         }
         list.sort(Comparator.comparing(Channel::name, NAME_ORDER));
         return list;
-    }
-
-    static String printable(String s) {
-        StringBuilder sb = new StringBuilder();
-        for (int i = 0; i < s.length() && i < 40; i++) {
-            char c = s.charAt(i);
-            sb.append(c >= 0x20 && c < 0x7f ? c : '?');
-        }
-        return s.length() > 40 ? sb + "..." : sb.toString();
     }
 }

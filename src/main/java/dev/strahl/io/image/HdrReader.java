@@ -1,5 +1,7 @@
 package dev.strahl.io.image;
 
+import static dev.strahl.io.image.ImageFormatException.printable;
+
 import java.io.BufferedInputStream;
 import java.io.IOException;
 import java.io.InputStream;
@@ -192,15 +194,6 @@ public final class HdrReader {
             }
         }
         return false;
-    }
-
-    static String printable(String s) {
-        StringBuilder sb = new StringBuilder();
-        for (int i = 0; i < s.length() && i < 40; i++) {
-            char c = s.charAt(i);
-            sb.append(c >= 0x20 && c < 0x7f ? c : '?');
-        }
-        return s.length() > 40 ? sb + "..." : sb.toString();
     }
 
     /** Bytes and header lines with the position, for messages; the end of the file is an {@link ImageFormatException}. */

@@ -35,6 +35,20 @@ public final class ImageFormatException extends IOException {
     }
 
     /**
+     * A file's text (a magic word, a header token or name) as it may be quoted in a message: at most
+     * 40 characters, anything but printable ASCII shown as '?', so that binary garbage cannot break
+     * the one-line message.
+     */
+    public static String printable(String s) {
+        StringBuilder sb = new StringBuilder();
+        for (int i = 0; i < s.length() && i < 40; i++) {
+            char c = s.charAt(i);
+            sb.append(c >= 0x20 && c < 0x7f ? c : '?');
+        }
+        return s.length() > 40 ? sb + "..." : sb.toString();
+    }
+
+    /**
      * @param file    the file being read
      * @param message what is wrong and where, without the file name
      * @param cause   the decoder's own exception, kept for {@code --debug}

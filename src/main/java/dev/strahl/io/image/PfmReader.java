@@ -1,5 +1,7 @@
 package dev.strahl.io.image;
 
+import static dev.strahl.io.image.ImageFormatException.printable;
+
 import dev.strahl.image.Image;
 import java.io.IOException;
 import java.math.BigInteger;
@@ -181,15 +183,6 @@ public final class PfmReader {
                 throw malformed(file, "invalid PFM " + what + " '" + printable(text) + "' (must be a positive integer)");
             }
             return (int) v;
-        }
-
-        private static String printable(String token) {
-            StringBuilder sb = new StringBuilder();
-            for (int i = 0; i < token.length() && i < 32; i++) {
-                char c = token.charAt(i);
-                sb.append(c >= 0x20 && c < 0x7f ? c : '?');
-            }
-            return token.length() > 32 ? sb + "..." : sb.toString();
         }
     }
 

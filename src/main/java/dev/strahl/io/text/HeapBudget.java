@@ -1,5 +1,6 @@
 package dev.strahl.io.text;
 
+import dev.strahl.io.image.ImageLimits;
 import java.util.Locale;
 
 /**
@@ -35,6 +36,6 @@ public final class HeapBudget {
             return null;
         }
         return String.format(Locale.ROOT, "the mesh needs at least %s (%d triangles so far, at least %d bytes each), more than"
-                + " the Java heap's %s: give Java more memory (java -Xmx...)", Units.bytes(need), triangles, MIN_BYTES_PER_TRIANGLE, Units.bytes(heap));
+                + " the Java heap's %s: give Java more memory (java -Xmx...)", ImageLimits.bytes(need), triangles, MIN_BYTES_PER_TRIANGLE, ImageLimits.bytes(heap));
     }
 }

@@ -27,16 +27,4 @@ public final class Units {
         }
         return String.format(Locale.ROOT, "%.0f", v);
     }
-
-    /** 1536 → "1.5 KiB", binary units as -Xmx counts them. */
-    public static String bytes(long n) {
-        String[] units = {"bytes", "KiB", "MiB", "GiB", "TiB"};
-        double v = n;
-        int u = 0;
-        while (v >= 1024 && u < units.length - 1) {
-            v /= 1024;
-            u++;
-        }
-        return u == 0 ? n + " bytes" : String.format(Locale.ROOT, "%.1f %s", v, units[u]);
-    }
 }
