@@ -8,9 +8,9 @@ image M (the Mitsuba runs' <variant>/mean_pooled.pfm, 6144 spp). Prints the rati
 figures from its summary.json.
 
     python3 docs/anchors/cornell/strahl_cornell.py --jar target/strahl.jar --runs 32 \
-        --mitsuba-out /work/staging/anchors/out --out /tmp/strahl-variance
+        --mitsuba-out /work/staging/anchors/out --out /tmp/strahl-variance [--sampler independent]
 
---reuse recomputes the figures from the PFMs already in --out.
+--reuse keeps the PFMs already in --out and renders only the missing runs.
 """
 import argparse
 import glob
@@ -26,13 +26,14 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mitsuba_cornell as mc  # noqa: E402  (statistics and PFM reading only; Mitsuba is not imported)
 
 
-def render(jar, variant, seed, spp, res, threads, out):
+def render_runs(jar, variant, seeds, spp, res, threads, vdir, sampler):
+    """All missing runs of one variant in one JVM (StrahlRuns.java: the same images as
+    `strahl render --seed s --width res --height res --spp spp --max-depth -1 --look-from ..
+    --look-at .. --fov 40 -o run.pfm`, checked bit for bit, without a JVM start per run)."""
     (ox, oy, oz), (tx, ty, tz) = mc.CAMERAS[variant]
-    cmd = ['java', '-jar', jar, 'render', os.path.join(mc.DATA, f'CornellBox-{variant}.obj'),
-           '--width', str(res), '--height', str(res), '--spp', str(spp), '--seed', str(seed),
-           '--threads', str(threads), '--max-depth', '-1',
-           '--look-from', f'{ox},{oy},{oz}', '--look-at', f'{tx},{ty},{tz}', '--fov', str(mc.VFOV),
-           '-q', '-o', out]
+    cmd = ['java'] + (['-Dstrahl.sampler=independent'] if sampler == 'independent' else []) + ['-cp', jar, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'StrahlRuns.java'),
+           os.path.join(mc.DATA, f'CornellBox-{variant}.obj'), f'{ox},{oy},{oz}', f'{tx},{ty},{tz}',
+           str(mc.VFOV), str(res), str(spp), str(seeds[0]), str(len(seeds)), str(threads), vdir]
     subprocess.run(cmd, check=True)
 
 
@@ -45,10 +46,13 @@ def main():
     ap.add_argument('--spp', type=int, default=64)
     ap.add_argument('--res', type=int, default=128)
     ap.add_argument('--threads', type=int, default=2)
+    ap.add_argument('--sampler', choices=['stratified', 'independent'], default='stratified',
+                    help="strahl's sampler: the default stratified one, or independent streams "
+                         "(-Dstrahl.sampler=independent), like Mitsuba's default 'independent' sampler")
     ap.add_argument('--mitsuba-out', default='/work/staging/anchors/out',
                     help="mitsuba_cornell.py's --out: mean_pooled.pfm per variant and summary.json")
     ap.add_argument('--out', default='/tmp/strahl-variance')
-    ap.add_argument('--reuse', action='store_true', help='use the PFMs already in --out')
+    ap.add_argument('--reuse', action='store_true', help='keep the PFMs already in --out, render only the missing ones')
     args = ap.parse_args()
 
     with open(os.path.join(args.mitsuba_out, 'summary.json')) as f:
@@ -58,12 +62,13 @@ def main():
         vdir = os.path.join(args.out, variant)
         os.makedirs(vdir, exist_ok=True)
         t0 = time.perf_counter()
-        files = []
-        for seed in range(args.seed0, args.seed0 + args.runs):
-            path = os.path.join(vdir, f'run_seed{seed:04d}.pfm')
-            if not (args.reuse and os.path.exists(path)):
-                render(args.jar, variant, seed, args.spp, args.res, args.threads, path)
-            files.append(path)
+        seeds = list(range(args.seed0, args.seed0 + args.runs))
+        files = [os.path.join(vdir, f'run_seed{seed:04d}.pfm') for seed in seeds]
+        if not args.reuse:
+            for f in files:
+                if os.path.exists(f):
+                    os.remove(f)
+        render_runs(args.jar, variant, seeds, args.spp, args.res, args.threads, vdir, args.sampler)
         seconds = time.perf_counter() - t0
         runs = np.stack([mc.read_pfm(p) for p in files]).astype(np.float64)
         M = mc.read_pfm(os.path.join(args.mitsuba_out, variant, 'mean_pooled.pfm')).astype(np.float64)
