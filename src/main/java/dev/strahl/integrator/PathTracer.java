@@ -12,7 +12,8 @@ import dev.strahl.world.World;
  * Unidirectional path tracing with next-event estimation and multiple importance sampling
  * (Veach 1997, ch. 9: power heuristic between light and BSDF sampling), and Russian roulette
  * from the {@value #RR_DEPTH}th interaction on with continuation probability
- * min(max channel of the throughput, 0.95). Unbiased: converges to the solution of the
+ * min(max channel of the throughput · Π η'², 0.95), the product over the path's refractions
+ * undoing their radiance scaling 1/η'² ({@link dev.strahl.material.BsdfSample#eta}). Unbiased: converges to the solution of the
  * rendering equation whatever the sampling choices.
  *
  * <p>{@code maxDepth} counts path segments including the camera segment: 1 shows only emitters
@@ -77,6 +78,7 @@ public final class PathTracer implements Integrator {
             beta.set(1, 1, 1);
             double prevPdf = 0;
             boolean prevDelta = true;              // the camera ray: emission seen directly counts fully
+            double etaScale = 1;                   // product of η'² over the refractions so far (for the roulette)
             for (int depth = 1; ; depth++) {
                 double t = tracer.trace(ray, s);
                 if (t < 0) {
@@ -104,12 +106,17 @@ public final class PathTracer implements Integrator {
                 }
                 BsdfSample bs = s.bs;
                 beta.mul(bs.weight);
+                etaScale *= bs.eta * bs.eta;
                 prevPdf = bs.pdf;
                 prevDelta = bs.delta;
                 s.spawn(ray, s.wi);
 
                 if (depth >= RR_DEPTH) {
-                    double q = Math.min(beta.max(), 0.95);
+                    // The roulette sees the throughput without the 1/η'² radiance scaling of the
+                    // refractions (Mitsuba 3's path.cpp, pbrt-v4's etaScale): inside glass of η 2.5
+                    // the weight is 1/6.25 of what leaving the glass restores, and deciding from it
+                    // killed those paths 6× too often and gave the survivors 6× the weight.
+                    double q = Math.min(beta.max() * etaScale, 0.95);
                     if (!(sampler.get1D() < q)) {      // also ends a path whose throughput became NaN
                         return;
                     }

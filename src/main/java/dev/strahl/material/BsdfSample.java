@@ -17,4 +17,11 @@ public final class BsdfSample {
     public double pdf;
     /** Whether wi comes from a delta (perfectly specular) lobe, for which eval and pdf are zero. */
     public boolean delta;
+    /**
+     * Relative index of refraction η' = ηt/ηi of the interface crossing when wi is a refraction, 1
+     * otherwise. The weight of a refraction carries the radiance scaling 1/η'²; a path tracer
+     * multiplies η'² back for its Russian roulette test (pbrt-v4's etaScale), so that paths inside
+     * a dense medium are not killed for a factor that leaving it undoes.
+     */
+    public double eta = 1;
 }

@@ -52,12 +52,14 @@ public record Dielectric(double eta) implements DeltaBsdf {
             Fresnel.reflect(wo, out.wi);
             out.weight.set(1, 1, 1);
             out.pdf = reflectance;
+            out.eta = 1;
             return true;
         }
         double etaRelative = Fresnel.relativeEta(wo.z(), eta);
         double scale = 1 / (etaRelative * etaRelative);
         out.weight.set(scale, scale, scale);
         out.pdf = 1 - reflectance;
+        out.eta = etaRelative;
         return true;
     }
 

@@ -152,6 +152,7 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, boolean uniform) i
             Warp.uniformHemisphere(u1, u2, out.wi);
         }
         out.delta = false;
+        out.eta = 1;
         out.pdf = pdf(wo, out.wi);
         if (!(out.pdf > 0)) {
             return false;

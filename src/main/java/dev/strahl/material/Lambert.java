@@ -62,6 +62,7 @@ public record Lambert(Rgb albedo, boolean uniform) implements Bsdf {
             return false;
         }
         out.delta = false;
+        out.eta = 1;
         if (!uniform) {
             Warp.cosineHemisphere(u1, u2, out.wi);
             out.pdf = Warp.cosineHemispherePdf(out.wi.z);

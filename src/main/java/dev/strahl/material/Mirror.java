@@ -37,6 +37,7 @@ public record Mirror(Rgb reflectance) implements DeltaBsdf {
         out.weight.set(reflectance);
         out.pdf = 1;
         out.delta = true;
+        out.eta = 1;
         return true;
     }
 }

@@ -189,6 +189,7 @@ public final class PhotonMapper implements Integrator {
             }
             out.setZero();
             beta.set(1, 1, 1);
+            double etaScale = 1;                       // product of η'² over the refractions so far (for the roulette)
             for (int depth = 1; ; depth++) {
                 if (tracer.trace(ray, s) < 0) {
                     out.addProduct(beta, environment, 1);
@@ -209,9 +210,12 @@ public final class PhotonMapper implements Integrator {
                     return;
                 }
                 beta.mul(s.bs.weight);
+                etaScale *= s.bs.eta * s.bs.eta;
                 s.spawn(ray, s.wi);
                 if (depth >= PathTracer.RR_DEPTH) {
-                    double q = Math.min(beta.max(), 0.95);
+                    // As in PathTracer: the roulette sees the throughput without the radiance
+                    // scaling 1/η'² of the refractions, which leaving the glass undoes.
+                    double q = Math.min(beta.max() * etaScale, 0.95);
                     if (!(sampler.get1D() < q)) {
                         return;
                     }

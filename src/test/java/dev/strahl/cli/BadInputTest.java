@@ -109,7 +109,12 @@ class BadInputTest {
         Map<String, byte[]> binary = new LinkedHashMap<>();
         binary.put("t.obj", elf);
         Map<String, byte[]> latin1 = new LinkedHashMap<>();
-        latin1.put("t.obj", "# caf\u00e9\nv 0 0 0\n# gr\u00fc\u00dfe\n".getBytes(StandardCharsets.ISO_8859_1));
+        latin1.put("t.obj", ("# caf\u00e9\n" + SQUARE + "# gr\u00fc\u00dfe\nf 1 2 3\n").getBytes(StandardCharsets.ISO_8859_1));
+        Map<String, byte[]> binaryLater = new LinkedHashMap<>();
+        byte[] text = ("# caf\u00e9\n" + SQUARE + "f 1 2 3\n").getBytes(StandardCharsets.ISO_8859_1);
+        byte[] tail = java.util.Arrays.copyOf(text, text.length + elf.length);
+        System.arraycopy(elf, 0, tail, text.length, elf.length);
+        binaryLater.put("t.obj", tail);
         String sphere = "{ \"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1, \"material\": \"m\" }";
         return Stream.of(
             // ---- OBJ ----
@@ -124,7 +129,8 @@ class BadInputTest {
             refused("OBJ face with two vertices", obj(SQUARE + "f 1 2\n"), args(), "$IN/t.obj:5: ", "face with 2 vertices (needs at least 3)"),
             refused("OBJ bad face vertex", obj(SQUARE + "f 1/2/3/4 2 3\n"), args(), "$IN/t.obj:5: ", "bad face vertex '1/2/3/4'"),
             refused("OBJ binary file", binary, args(), "$IN/t.obj:1: ", "not a text OBJ file (NUL byte)"),
-            refused("OBJ not UTF-8", latin1, args(), "$IN/t.obj:1: ", "not a text OBJ file (invalid UTF-8)"),
+            warned("OBJ not UTF-8: read as Latin-1", latin1, args(), "$IN/t.obj: ", "not UTF-8 (first at line 1): read as Latin-1"),
+            refused("OBJ not UTF-8, then binary", binaryLater, args(), "$IN/t.obj:7: ", "not a text OBJ file (NUL byte)"),
             refused("OBJ without faces", obj(SQUARE + "g empty\n"), args(), "$IN/t.obj: ", "no faces: the file holds no geometry"),
             refused("OBJ empty file", obj(""), args(), "$IN/t.obj: ", "no faces"),
             refused("OBJ of degenerate triangles only", obj(SQUARE + "f 1 2 2\nf 3 3 3\n"), args(), "$IN/t.obj: ",

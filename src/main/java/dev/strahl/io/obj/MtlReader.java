@@ -33,53 +33,58 @@ public final class MtlReader {
     private MtlReader() {}
 
     /**
-     * The materials of {@code mtl} by name, in file order. When a name is defined twice the first
-     * definition is kept, as in an OBJ reader's name lookup. Warnings are appended to
+     * The materials of {@code mtl} in file order, keyed by the bytes of their names
+     * ({@link TextLines#byteKey}: the name itself for ASCII names, so that {@code usemtl} matches
+     * {@code newmtl} byte for byte whatever the encodings of the two files). When a name is
+     * defined twice the first definition is kept, as in an OBJ reader's name lookup. A file that
+     * is not UTF-8 is read as Latin-1 (old exporters' names), with a note. Warnings are appended to
      * {@code warnings}, each starting with the file name.
      */
     public static Map<String, MtlMaterial> read(Path mtl, List<String> warnings) throws SceneException {
+        return TextLines.read(mtl, "MTL", false, warnings, (lines, w) -> read(mtl, lines, w));
+    }
+
+    private static Map<String, MtlMaterial> read(Path mtl, TextLines lines, List<String> warnings) throws SceneException {
         Map<String, MtlMaterial> materials = new LinkedHashMap<>();
         Set<String> warnedKeys = new HashSet<>();
         boolean warnedTextures = false;
         Block block = null;
         var cur = new LineCursor(mtl);
-        try (var lines = TextLines.open(mtl, "MTL", false)) {
-            for (String line; (line = lines.next()) != null; ) {
-                cur.reset(line, lines.lineNumber());
-                if (!cur.next()) {
-                    continue;
-                }
-                String key = cur.token();
-                String lower = key.toLowerCase(Locale.ROOT);
-                if (lower.equals("newmtl")) {
-                    add(block, materials, mtl, warnings);
-                    String name = cur.rest();
-                    if (name.isEmpty()) {
-                        throw cur.error("newmtl without a material name");
-                    }
-                    block = new Block(name, cur.lineNumber);
-                    continue;
-                }
-                if (isTexture(lower)) {
-                    if (!warnedTextures) {
-                        warnedTextures = true;
-                        warnings.add(mtl + ": texture maps are not supported (first " + LineCursor.quote(key)
-                                + " at line " + cur.lineNumber + "): ignored");
-                    }
-                    continue;
-                }
-                if (!isMaterialKey(lower)) {
-                    if (warnedKeys.add(key)) {
-                        warnings.add(mtl + ": unknown key " + LineCursor.quote(key) + " (line "
-                                + cur.lineNumber + "): ignored");
-                    }
-                    continue;
-                }
-                if (block == null) {
-                    throw cur.error(LineCursor.quote(key) + " before any newmtl");
-                }
-                readKey(lower, key, cur, block, mtl, warnings);
+        for (String line; (line = lines.next()) != null; ) {
+            cur.reset(line, lines.lineNumber());
+            if (!cur.next()) {
+                continue;
             }
+            String key = cur.token();
+            String lower = key.toLowerCase(Locale.ROOT);
+            if (lower.equals("newmtl")) {
+                add(block, materials, mtl, warnings);
+                String name = cur.rest();
+                if (name.isEmpty()) {
+                    throw cur.error("newmtl without a material name");
+                }
+                block = new Block(name, lines.byteKey(name), cur.lineNumber);
+                continue;
+            }
+            if (isTexture(lower)) {
+                if (!warnedTextures) {
+                    warnedTextures = true;
+                    warnings.add(mtl + ": texture maps are not supported (first " + LineCursor.quote(key)
+                            + " at line " + cur.lineNumber + "): ignored");
+                }
+                continue;
+            }
+            if (!isMaterialKey(lower)) {
+                if (warnedKeys.add(key)) {
+                    warnings.add(mtl + ": unknown key " + LineCursor.quote(key) + " (line "
+                            + cur.lineNumber + "): ignored");
+                }
+                continue;
+            }
+            if (block == null) {
+                throw cur.error(LineCursor.quote(key) + " before any newmtl");
+            }
+            readKey(lower, key, cur, block, mtl, warnings);
         }
         add(block, materials, mtl, warnings);
         return materials;
@@ -189,17 +194,18 @@ public final class MtlReader {
         if (block == null) {
             return;
         }
-        if (materials.containsKey(block.name)) {
+        if (materials.containsKey(block.key)) {
             warnings.add(mtl + ": material " + LineCursor.quote(block.name) + " (line " + block.line
                     + ") is defined again: keeping the first definition");
             return;
         }
-        materials.put(block.name, block.toMaterial());
+        materials.put(block.key, block.toMaterial());
     }
 
     /** The keys of one newmtl block as they are read, starting from the defaults. */
     private static final class Block {
         final String name;
+        final String key;                  // the name's bytes (TextLines.byteKey)
         final int line;
         Rgb kd = MtlMaterial.DEFAULT_KD;
         Rgb ks = Rgb.BLACK;
@@ -208,8 +214,9 @@ public final class MtlReader {
         double ni = MtlMaterial.DEFAULT_NI;
         int illum = MtlMaterial.DEFAULT_ILLUM;
 
-        Block(String name, int line) {
+        Block(String name, String key, int line) {
             this.name = name;
+            this.key = key;
             this.line = line;
         }
 

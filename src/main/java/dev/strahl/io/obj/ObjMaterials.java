@@ -26,6 +26,7 @@ final class ObjMaterials {
     private final List<String> warnings;
 
     private final List<String> slotNames = new ArrayList<>(List.of(""));
+    private final List<String> slotKeys = new ArrayList<>(List.of(""));     // the names' bytes (TextLines.byteKey)
     private final List<Integer> slotLines = new ArrayList<>(List.of(0));
     private final Map<String, Integer> slotByName = new HashMap<>();
     private final List<Integer> usedSlots = new ArrayList<>();
@@ -41,17 +42,21 @@ final class ObjMaterials {
         this.warnings = warnings;
     }
 
-    /** {@code usemtl name} at {@code line}: the faces that follow use that name's slot. */
-    void use(String name, int line) {
-        Integer existing = slotByName.get(name);
+    /**
+     * {@code usemtl name} at {@code line}: the faces that follow use that name's slot. Names are
+     * matched by {@code key}, their bytes in the file ({@code TextLines.byteKey}).
+     */
+    void use(String name, String key, int line) {
+        Integer existing = slotByName.get(key);
         if (existing != null) {
             slot = existing;
             return;
         }
         slot = slotNames.size();
         slotNames.add(name);
+        slotKeys.add(key);
         slotLines.add(line);
-        slotByName.put(name, slot);
+        slotByName.put(key, slot);
         if (slot == slotUsed.length) {
             slotUsed = Arrays.copyOf(slotUsed, slot * 2);
         }
@@ -122,8 +127,9 @@ final class ObjMaterials {
             return;
         }
         // A library that exists but is malformed is an error, reported at its own file:line
-        for (MtlMaterial m : MtlReader.read(path, warnings).values()) {
-            if (library.putIfAbsent(m.name(), m) != null) {
+        for (Map.Entry<String, MtlMaterial> e : MtlReader.read(path, warnings).entrySet()) {
+            MtlMaterial m = e.getValue();
+            if (library.putIfAbsent(e.getKey(), m) != null) {
                 warnings.add(path + ": material '" + m.name() + "' is already defined by an earlier material library: "
                         + "keeping the first definition");
             }
@@ -139,7 +145,7 @@ final class ObjMaterials {
         Map<MtlMaterial, Integer> materialIndex = new IdentityHashMap<>();
         int[] slotMaterial = new int[slotNames.size()];
         for (int s : usedSlots) {
-            MtlMaterial m = s == 0 ? fallback : library.get(slotNames.get(s));
+            MtlMaterial m = s == 0 ? fallback : library.get(slotKeys.get(s));
             if (m == null) {
                 m = fallback;
                 // After a missing library its warning already explains every unknown name

@@ -83,9 +83,12 @@ public final class ObjReader {
 
     /** Reads {@code obj}; material libraries are resolved relative to its directory. */
     public static ObjModel read(Path obj) throws SceneException {
-        try (TextLines lines = TextLines.open(obj, "OBJ", true)) {
-            return new ObjReader(obj, lines).parse();
-        }
+        // A file that is not UTF-8 is read again as Latin-1, its note first among the warnings.
+        return TextLines.read(obj, "OBJ", true, new ArrayList<>(), (lines, notes) -> {
+            ObjReader reader = new ObjReader(obj, lines);
+            reader.warnings.addAll(notes);
+            return reader.parse();
+        });
     }
 
     private ObjModel parse() throws SceneException {
@@ -114,7 +117,10 @@ public final class ObjReader {
         } else {
             String keyword = cur.token();
             switch (keyword) {
-                case "usemtl" -> materials.use(cur.rest(), cur.lineNumber);
+                case "usemtl" -> {
+                    String name = cur.rest();
+                    materials.use(name, lines.byteKey(name), cur.lineNumber);
+                }
                 case "mtllib" -> materials.libraries(cur.rest(), cur.lineNumber);
                 case "g", "o", "s", "mg", "lod", "bevel", "c_interp", "d_interp", "shadow_obj", "trace_obj" -> { }
                 case "l" -> warnOnce(keyword, "line element 'l' is not rendered");

@@ -14,11 +14,20 @@ import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 
 /**
- * The lines of a UTF-8 text file, with the checks both OBJ and MTL need: a file that is not
- * text (NUL bytes near the start, invalid UTF-8 anywhere) or cannot be read is a
- * {@link SceneException} at the line where that shows. A leading byte order mark is dropped.
+ * The lines of a text file, with the checks both OBJ and MTL need: a file that is not text (NUL
+ * bytes near the start) or cannot be read is a {@link SceneException} at the line where that
+ * shows. A leading byte order mark is dropped.
+ *
+ * <p><b>Encodings.</b> A file is read as UTF-8; {@link #open} refuses it at the first byte
+ * sequence that is not UTF-8. Old exporters write names and comments in Latin-1 or Windows-1252, so the
+ * readers then read the whole file again as Latin-1 ({@link #read}: every byte one character,
+ * with one note), where a NUL byte or another control character (binary content) on any line is
+ * still refused at that line. Names that must match across files ({@code usemtl} and
+ * {@code newmtl}) are compared by their bytes, whatever each file's encoding: {@link #byteKey}.
  */
 public final class TextLines implements AutoCloseable {
     private static final int HEAD = 1024;
@@ -27,14 +36,66 @@ public final class TextLines implements AutoCloseable {
     private final String kind;
     private final boolean continuation;
     private final BufferedReader reader;
+    private final boolean latin1;
+    private boolean signalNotUtf8;         // read(): throw NotUtf8 instead of refusing the file
     private int physicalLine;
     private int lineNumber;
 
-    private TextLines(Path file, String kind, boolean continuation, BufferedReader reader) {
+    private TextLines(Path file, String kind, boolean continuation, BufferedReader reader, boolean latin1) {
         this.file = file;
         this.kind = kind;
         this.continuation = continuation;
         this.reader = reader;
+        this.latin1 = latin1;
+    }
+
+    /** What a reader does with the lines of one file. */
+    @FunctionalInterface
+    public interface Parse<T> {
+        /** Reads the file from {@code lines}, appending its warnings to {@code warnings}. */
+        T apply(TextLines lines, List<String> warnings) throws SceneException;
+    }
+
+    /**
+     * Reads {@code file} with {@code parse}: as UTF-8, or, if it is not UTF-8, once more from the
+     * start as Latin-1 with the note "FILE: not UTF-8 (first at line N): read as Latin-1" before
+     * the warnings of that reading (those of the failed UTF-8 reading are dropped).
+     */
+    public static <T> T read(Path file, String kind, boolean continuation, List<String> warnings, Parse<T> parse)
+            throws SceneException {
+        List<String> utf8Warnings = new ArrayList<>();
+        int line;
+        try (TextLines lines = open(file, kind, continuation, false)) {
+            lines.signalNotUtf8 = true;
+            T result = parse.apply(lines, utf8Warnings);
+            warnings.addAll(utf8Warnings);
+            return result;
+        } catch (NotUtf8 e) {
+            if (e.source.file != file) {
+                throw e;                   // not this file's (a file it includes reads its own)
+            }
+            line = e.line;
+        }
+        warnings.add(file + ": not UTF-8 (first at line " + line + "): read as Latin-1");
+        try (TextLines lines = open(file, kind, continuation, true)) {
+            return parse.apply(lines, warnings);
+        }
+    }
+
+    /**
+     * The signal from a file read by {@link #read} as UTF-8 that is not: unchecked, so that it
+     * passes through the parser to {@link #read}, which catches it and never lets it out.
+     */
+    private static final class NotUtf8 extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+        final transient TextLines source;
+        final int line;
+
+        NotUtf8(TextLines source, int line) {
+            super(null, null, false, false);
+            this.source = source;
+            this.line = line;
+        }
     }
 
     /**
@@ -42,6 +103,11 @@ public final class TextLines implements AutoCloseable {
      * joins a line ending in a backslash with the next one.
      */
     public static TextLines open(Path file, String kind, boolean continuation) throws SceneException {
+        return open(file, kind, continuation, false);
+    }
+
+    /** As {@link #open(Path, String, boolean)}, as Latin-1 (one character per byte) if {@code latin1}. */
+    private static TextLines open(Path file, String kind, boolean continuation, boolean latin1) throws SceneException {
         if (Files.isDirectory(file)) {
             throw new SceneException(file, "is a directory, not an " + kind + " file");
         }
@@ -67,11 +133,11 @@ public final class TextLines implements AutoCloseable {
                     throw notText(file, kind, line, "NUL byte");
                 }
             }
-            CharsetDecoder utf8 = StandardCharsets.UTF_8.newDecoder()
+            CharsetDecoder decoder = (latin1 ? StandardCharsets.ISO_8859_1 : StandardCharsets.UTF_8).newDecoder()
                     .onMalformedInput(CodingErrorAction.REPORT)
                     .onUnmappableCharacter(CodingErrorAction.REPORT);
-            var reader = new BufferedReader(new InputStreamReader(buffered, utf8), 1 << 16);
-            return new TextLines(file, kind, continuation, reader);
+            var reader = new BufferedReader(new InputStreamReader(buffered, decoder), 1 << 16);
+            return new TextLines(file, kind, continuation, reader, latin1);
         } catch (IOException e) {
             closeQuietly(in);
             throw new SceneException(file, "cannot read: " + describe(e), e);
@@ -107,6 +173,27 @@ public final class TextLines implements AutoCloseable {
         return joined.toString();
     }
 
+    /** Whether this file is read as Latin-1 (it is not UTF-8). */
+    public boolean isLatin1() {
+        return latin1;
+    }
+
+    /**
+     * A string made of the bytes {@code text} (read from this file) had in the file, one
+     * character per byte: equal keys mean equal bytes, whichever encoding each file was read in.
+     */
+    public String byteKey(String text) {
+        if (latin1) {
+            return text;
+        }
+        for (int i = 0; i < text.length(); i++) {
+            if (text.charAt(i) >= 0x80) {
+                return new String(text.getBytes(StandardCharsets.UTF_8), StandardCharsets.ISO_8859_1);
+            }
+        }
+        return text;                      // ASCII: the same bytes in both
+    }
+
     /** The line number (from 1) of the first physical line of the last logical line. */
     public int lineNumber() {
         return lineNumber;
@@ -122,12 +209,32 @@ public final class TextLines implements AutoCloseable {
             String line = reader.readLine();
             if (line != null) {
                 physicalLine++;
+                if (latin1) {
+                    checkText(line);
+                }
             }
             return line;
         } catch (CharacterCodingException e) {
-            throw notText(file, kind, lineOfInvalidUtf8(file, physicalLine + 1), "invalid UTF-8");
+            int line = lineOfInvalidUtf8(file, physicalLine + 1);
+            if (signalNotUtf8) {
+                throw new NotUtf8(this, line);
+            }
+            throw notText(file, kind, line, "invalid UTF-8");
         } catch (IOException e) {
             throw new SceneException(file, "cannot read after line " + physicalLine + ": " + describe(e), e);
+        }
+    }
+
+    /**
+     * A file that is not UTF-8 is only read as Latin-1 if it is text: no NUL and no control
+     * character other than tab, vertical tab, form feed and the DOS end-of-file mark (Ctrl-Z).
+     */
+    private void checkText(String line) throws SceneException {
+        for (int i = 0; i < line.length(); i++) {
+            char c = line.charAt(i);
+            if (c < 0x20 && c != '\t' && c != 0x0B && c != '\f' && c != 0x1A) {
+                throw notText(file, kind, physicalLine, c == 0 ? "NUL byte" : "binary content");
+            }
         }
     }
 

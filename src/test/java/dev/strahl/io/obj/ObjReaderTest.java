@@ -402,18 +402,62 @@ public class ObjReaderTest {
     }
 
     @Test
-    void invalidUtf8IsReportedAtItsLineEvenFarIntoTheFile() throws Exception {
+    void aFileThatIsNotUtf8IsReadAsLatin1WithOneNoteNamingTheFirstLineThatIsNot() throws Exception {
         Path file = dir.resolve("t.obj");
         var text = new StringBuilder("# caf\u00e9 is fine\n");
         for (int i = 0; i < 5000; i++) {
             text.append("v 0 0 0\n");
         }
         byte[] good = text.toString().getBytes(StandardCharsets.UTF_8);
-        byte[] bytes = Arrays.copyOf(good, good.length + 10);
-        System.arraycopy(new byte[] {'g', ' ', 'c', 'a', 'f', (byte) 0xE9, '\n', 'v', ' ', '1'}, 0, bytes, good.length, 10);
+        byte[] tail = "g caf\u00e9\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\ng \u00e9\u00e8\n".getBytes(StandardCharsets.ISO_8859_1);
+        byte[] bytes = Arrays.copyOf(good, good.length + tail.length);
+        System.arraycopy(tail, 0, bytes, good.length, tail.length);
+        Files.write(file, bytes);
+        ObjModel model = ObjReader.read(file);
+        assertThat(model.mesh().triangleCount()).isEqualTo(1);
+        assertThat(model.warnings()).containsExactly(file + ": not UTF-8 (first at line 5002): read as Latin-1");
+    }
+
+    @Test
+    void binaryContentAfterTextIsStillRefusedAtItsLine() throws Exception {
+        Path file = dir.resolve("t.obj");
+        var text = new StringBuilder();
+        for (int i = 0; i < 2000; i++) {
+            text.append("v 0 0 0\n");            // beyond the first kilobyte, where the NUL check looks
+        }
+        byte[] good = text.toString().getBytes(StandardCharsets.US_ASCII);
+        byte[] bytes = Arrays.copyOf(good, good.length + 8);
+        System.arraycopy(new byte[] {'#', ' ', (byte) 0xE9, '\n', 'x', 0x01, (byte) 0x90, '\n'}, 0, bytes, good.length, 8);
         Files.write(file, bytes);
         assertThatThrownBy(() -> ObjReader.read(file)).isInstanceOf(SceneException.class)
-                .hasMessage(file + ":5002: not a text OBJ file (invalid UTF-8)");
+                .hasMessage(file + ":2002: not a text OBJ file (binary content)");
+        bytes[good.length + 5] = 0;
+        Files.write(file, bytes);
+        assertThatThrownBy(() -> ObjReader.read(file)).isInstanceOf(SceneException.class)
+                .hasMessage(file + ":2002: not a text OBJ file (NUL byte)");
+    }
+
+    @Test
+    void usemtlMatchesNewmtlByteForByteWhateverEachFilesEncoding() throws Exception {
+        // The MTL is Latin-1 (one 0xE6 byte, from a real loader's regression data); the first OBJ
+        // is Latin-1 too, so the names match; the second OBJ is UTF-8, its name has other bytes.
+        Files.write(dir.resolve("t.mtl"), "newmtl Terraind\u00e6k\nKd 0.1 0.2 0.3\n".getBytes(StandardCharsets.ISO_8859_1));
+        String obj = "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl Terraind\u00e6k\nf 1 2 3\n";
+        Path latin = dir.resolve("latin.obj");
+        Files.write(latin, obj.getBytes(StandardCharsets.ISO_8859_1));
+        ObjModel model = ObjReader.read(latin);
+        assertThat(model.materials()).hasSize(1);
+        assertThat(model.materials().get(0).name()).isEqualTo("Terraind\u00e6k");
+        assertThat(model.materials().get(0).kd()).isEqualTo(new Rgb(0.1, 0.2, 0.3));
+        assertThat(model.warnings()).containsExactly(
+                latin + ": not UTF-8 (first at line 5): read as Latin-1",
+                dir.resolve("t.mtl") + ": not UTF-8 (first at line 1): read as Latin-1");
+
+        Path utf8 = dir.resolve("utf8.obj");
+        Files.write(utf8, obj.getBytes(StandardCharsets.UTF_8));
+        ObjModel other = ObjReader.read(utf8);
+        assertThat(other.materials().get(0).kd()).isEqualTo(MtlMaterial.DEFAULT_KD);
+        assertThat(other.warnings()).anyMatch(w -> w.contains("unknown material 'Terraind\u00e6k'"));
     }
 
     @Test
