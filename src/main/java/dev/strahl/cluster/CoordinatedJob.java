@@ -40,6 +40,7 @@ final class CoordinatedJob implements JobChannel {
     private final Map<UUID, Slot> slots = new LinkedHashMap<>();
     private boolean closed;
     private String lastError;
+    private int turn;
 
     CoordinatedJob(HazelcastMember node, String id, byte[] description, Map<String, Path> files) {
         this.node = node;
@@ -93,20 +94,40 @@ final class CoordinatedJob implements JobChannel {
                 failed.addAll(queue);
                 queue.clear();
             }
-            boolean sent = true;
-            while (!queue.isEmpty() && sent) {
-                sent = false;
-                for (Slot s : open) {
-                    if (!queue.isEmpty() && s.out < s.threads + 1) {
-                        send(queue.poll(), s);
-                        sent = true;
-                    }
+            while (!queue.isEmpty()) {
+                Slot s = leastLoaded(open);
+                if (s == null) {
+                    break;
                 }
+                send(queue.poll(), s);
             }
         }
         for (Pending p : failed) {
             p.result.completeExceptionally(new IOException("no member can render job " + id + (lastError != null ? ": " + lastError : "")));
         }
+    }
+
+    /**
+     * The member with room (fewer units out than its threads plus one) that has the fewest out per
+     * thread; among equals the one whose turn it is, so that units spread over all members even
+     * when there are fewer than they have room for.
+     */
+    private Slot leastLoaded(List<Slot> open) {
+        Slot best = null;
+        double bestLoad = Double.MAX_VALUE;
+        int n = open.size();
+        for (int i = 0; i < n; i++) {
+            Slot s = open.get((turn + i) % n);
+            double load = (double) s.out / s.threads;
+            if (s.out < s.threads + 1 && load < bestLoad) {
+                best = s;
+                bestLoad = load;
+            }
+        }
+        if (best != null) {
+            turn = (open.indexOf(best) + 1) % n;
+        }
+        return best;
     }
 
     private void send(Pending p, Slot s) {

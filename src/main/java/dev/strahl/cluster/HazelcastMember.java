@@ -106,6 +106,14 @@ public final class HazelcastMember implements ClusterBackend, MembershipListener
         } catch (RuntimeException e) {
             throw new IOException("cannot start a cluster member on " + options.bind() + ": " + rootMessage(e), e);
         }
+        int all = member.hz.getCluster().getMembers().size();
+        if (all > 1 && member.compatibleMembers().size() == 1) {
+            String theirs = member.hz.getCluster().getMembers().stream().filter(m -> !m.localMember())
+                    .map(m -> m.getAttribute(VERSION_ATTRIBUTE)).distinct().reduce((a, b) -> a + ", " + b).orElse("?");
+            member.hz.shutdown();
+            throw new IOException("refused: the members at " + String.join(", ", options.join()) + " run strahl " + theirs
+                    + ", this is strahl " + VERSION + " (run the same version on every machine)");
+        }
         member.hz.getCluster().addMembershipListener(member);
         var a = member.hz.getCluster().getLocalMember().getAddress();
         member.log.accept("joined cluster '" + options.clusterName() + "' as " + a.getHost() + ":" + a.getPort() + " ("
@@ -231,7 +239,18 @@ public final class HazelcastMember implements ClusterBackend, MembershipListener
             return;
         }
         try {
-            hz.getExecutorService(FETCHES).submitToAllMembers(new Tasks.EndJob(job.id(), localUuid(), VERSION));
+            // waited for (briefly), so that the members hear of the end before this member may leave
+            var answers = hz.getExecutorService(FETCHES).submitToAllMembers(new Tasks.EndJob(job.id(), localUuid(), VERSION));
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(3);
+            for (var answer : answers.values()) {
+                try {
+                    answer.get(Math.max(1, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
+                } catch (ExecutionException | TimeoutException e) {
+                    // a member that left or is slow drops the job when this member leaves
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         } catch (RuntimeException e) {
             // the cluster is shutting down: the members drop the job when this member leaves
         }
