@@ -5,12 +5,7 @@ import com.hazelcast.core.ExecutionCallback;
 import dev.strahl.units.JobChannel;
 import dev.strahl.units.MemberFigures;
 import dev.strahl.units.WorkUnit;
-import java.io.ByteArrayInputStream;
-import java.io.ByteArrayOutputStream;
-import java.io.DataInputStream;
-import java.io.DataOutputStream;
 import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
@@ -131,14 +126,7 @@ final class CoordinatedJob implements JobChannel {
     }
 
     private void send(Pending p, Slot s) {
-        byte[] bytes;
-        try {
-            var out = new ByteArrayOutputStream(p.unit.wireSize());
-            p.unit.write(new DataOutputStream(out));
-            bytes = out.toByteArray();
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
+        byte[] bytes = p.unit.encode(0);
         s.out++;
         s.sent += bytes.length;
         long start = System.nanoTime();
@@ -172,7 +160,7 @@ final class CoordinatedJob implements JobChannel {
             }
             if (answer != null && Tasks.Answers.isOk(answer)) {
                 try {
-                    result = WorkUnit.read(new DataInputStream(new ByteArrayInputStream(answer, 1, answer.length - 1)));
+                    result = WorkUnit.decode(answer, 1);
                     s.units++;
                     s.samples += p.samples;
                     s.received += answer.length;

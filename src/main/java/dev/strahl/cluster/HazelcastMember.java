@@ -20,10 +20,6 @@ import dev.strahl.units.MemberOptions;
 import dev.strahl.units.UnitRenderer;
 import dev.strahl.units.UnitService;
 import dev.strahl.units.WorkUnit;
-import java.io.ByteArrayInputStream;
-import java.io.ByteArrayOutputStream;
-import java.io.DataInputStream;
-import java.io.DataOutputStream;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -283,13 +279,10 @@ public final class HazelcastMember implements ClusterBackend, MembershipListener
         }
         ServedJob j = served.computeIfAbsent(job, id -> new ServedJob(id, coordinator));
         UnitRenderer renderer = j.renderer(this);
-        WorkUnit unit = WorkUnit.read(new DataInputStream(new ByteArrayInputStream(unitBytes)));
+        WorkUnit unit = WorkUnit.decode(unitBytes, 0);
         renderer.render(unit);
         j.units.incrementAndGet();
-        var out = new ByteArrayOutputStream(unit.wireSize() + 1);
-        out.write(0);
-        unit.write(new DataOutputStream(out));
-        return out.toByteArray();
+        return unit.encode(1);                     // the first byte 0: an answer with a result
     }
 
     /** Fetches the job's description and files from its coordinator, loads the scene and opens a renderer. */

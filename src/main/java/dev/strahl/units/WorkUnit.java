@@ -1,8 +1,9 @@
 package dev.strahl.units;
 
-import java.io.DataInput;
-import java.io.DataOutput;
 import java.io.IOException;
+import java.nio.BufferUnderflowException;
+import java.nio.ByteBuffer;
+import java.util.Arrays;
 
 /**
  * One piece of a cluster render: samples [{@code firstSample}, {@code endSample}) of the pixels of
@@ -130,7 +131,7 @@ public final class WorkUnit {
     /** Bytes of the wire form. */
     public int wireSize() {
         boolean uniform = uniformCount() >= 0;
-        return 8 * 4 + 8 + (uniform ? 8 : 4 * counts.length) + 8 * sums.length;
+        return 7 * 4 + 8 + (uniform ? 8 : 4 * counts.length) + 8 * sums.length;
     }
 
     private int uniformCount() {
@@ -144,74 +145,64 @@ public final class WorkUnit {
     }
 
     /**
-     * Writes the wire form.
+     * The wire form, after {@code headroom} bytes left for the caller (a status byte, say).
      *
-     * @param out where to
-     * @throws IOException if writing fails
+     * @param headroom bytes to leave free at the start
+     * @return the bytes
      */
-    public void write(DataOutput out) throws IOException {
-        out.writeInt(x0);
-        out.writeInt(y0);
-        out.writeInt(width);
-        out.writeInt(height);
-        out.writeInt(firstSample);
-        out.writeInt(endSample);
-        out.writeInt(invalidSamples);
-        out.writeLong(rays);
+    public byte[] encode(int headroom) {
         int uniform = uniformCount();
+        byte[] bytes = new byte[headroom + wireSize()];
+        ByteBuffer b = ByteBuffer.wrap(bytes, headroom, bytes.length - headroom);
+        b.putInt(x0).putInt(y0).putInt(width).putInt(height).putInt(firstSample).putInt(endSample).putInt(invalidSamples).putLong(rays);
         if (uniform >= 0) {
-            out.writeInt(-1);
-            out.writeInt(uniform);
+            b.putInt(-1).putInt(uniform);
         } else {
-            for (int c : counts) {
-                out.writeInt(c);
-            }
+            b.asIntBuffer().put(counts);
+            b.position(b.position() + 4 * counts.length);
         }
-        for (double s : sums) {
-            out.writeDouble(s);
-        }
+        b.asDoubleBuffer().put(sums);
+        return bytes;
     }
 
     /**
-     * Reads a unit written by {@link #write}.
+     * Reads a unit {@link #encode} wrote.
      *
-     * @param in where from
+     * @param bytes  the bytes
+     * @param offset where the unit starts
      * @return the unit
-     * @throws IOException if reading fails or the data is no unit
+     * @throws IOException if the bytes are no unit
      */
-    public static WorkUnit read(DataInput in) throws IOException {
-        int x0 = in.readInt();
-        int y0 = in.readInt();
-        int w = in.readInt();
-        int h = in.readInt();
-        int first = in.readInt();
-        int end = in.readInt();
-        int invalid = in.readInt();
-        long rays = in.readLong();
-        if (w <= 0 || h <= 0 || w > MAX_EDGE || h > MAX_EDGE) {
-            throw new IOException("not a work unit (tile " + w + "x" + h + ")");
-        }
-        int[] counts = new int[w * h];
-        int c0 = in.readInt();
-        if (c0 == -1) {
-            java.util.Arrays.fill(counts, in.readInt());
-        } else {
-            counts[0] = c0;
-            for (int i = 1; i < counts.length; i++) {
-                counts[i] = in.readInt();
-            }
-        }
-        double[] sums = new double[3 * w * h];
-        for (int i = 0; i < sums.length; i++) {
-            sums[i] = in.readDouble();
-        }
-        WorkUnit unit;
+    public static WorkUnit decode(byte[] bytes, int offset) throws IOException {
         try {
-            unit = new WorkUnit(x0, y0, w, h, first, end, counts, sums);
-        } catch (IllegalArgumentException e) {
-            throw new IOException("not a work unit: " + e.getMessage(), e);
+            ByteBuffer b = ByteBuffer.wrap(bytes, offset, bytes.length - offset);
+            int x0 = b.getInt();
+            int y0 = b.getInt();
+            int w = b.getInt();
+            int h = b.getInt();
+            int first = b.getInt();
+            int end = b.getInt();
+            int invalid = b.getInt();
+            long rays = b.getLong();
+            if (w <= 0 || h <= 0 || w > MAX_EDGE || h > MAX_EDGE) {
+                throw new IOException("not a work unit (tile " + w + "x" + h + ")");
+            }
+            int[] counts = new int[w * h];
+            int c0 = b.getInt(b.position());
+            if (c0 == -1) {
+                b.getInt();
+                Arrays.fill(counts, b.getInt());
+            } else {
+                b.asIntBuffer().get(counts);
+                b.position(b.position() + 4 * counts.length);
+            }
+            double[] sums = new double[3 * w * h];
+            b.asDoubleBuffer().get(sums);
+            WorkUnit unit = new WorkUnit(x0, y0, w, h, first, end, counts, sums);
+            unit.recordFigures(invalid, rays);
+            return unit;
+        } catch (BufferUnderflowException | IllegalArgumentException e) {
+            throw new IOException("not a work unit: " + e, e);
         }
-        unit.recordFigures(invalid, rays);
-        return unit;
     }
 }
