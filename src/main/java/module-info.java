@@ -18,6 +18,7 @@ module dev.strahl {
     requires jdk.unsupported;                  // sun.misc.Signal: Ctrl-C stops a render and keeps its image
     requires static info.picocli;              // the command line only
     requires static com.formdev.flatlaf;       // the viewer only
+    requires static com.hazelcast.core;        // clusters only (dev.strahl.cluster, loaded by RenderCluster when one is joined)
     requires static jdk.incubator.vector;      // the optional SIMD box test of the BVH (accel/SimdNodes), used when present
 
     exports dev.strahl.scene;

@@ -41,8 +41,8 @@ class ArchitectureTest {
 
     /** The layers bottom to top; each may use only those before it. */
     private static final String[] LAYERS = {"image", "math", "sampling", "geometry", "material", "film", "accel", "light", "camera",
-        "io.image", "io.exr", "world", "integrator", "photon", "scene", "render", "io.text", "io.obj", "io.ply", "io.mesh", "io.json", "io",
-        "bench", "viewer", "cli"};
+        "io.image", "io.exr", "world", "integrator", "photon", "scene", "units", "render", "io.text", "io.obj", "io.ply", "io.mesh", "io.json", "io",
+        "cluster", "bench", "viewer", "cli"};
 
     @ArchTest
     static final ArchRule layers = layers();
@@ -104,4 +104,9 @@ class ArchitectureTest {
     static final ArchRule picocliOnlyInTheCli = noClasses().that().resideOutsideOfPackage("dev.strahl.cli..")
             .should().dependOnClassesThat().resideInAPackage("picocli..")
             .because("command-line parsing belongs to the cli package, an optional dependency");
+
+    @ArchTest
+    static final ArchRule hazelcastOnlyInTheCluster = noClasses().that().resideOutsideOfPackage("dev.strahl.cluster")
+            .should().dependOnClassesThat().resideInAPackage("com.hazelcast..")
+            .because("Hazelcast is an optional dependency, loaded only when a cluster is joined (RenderCluster loads dev.strahl.cluster by name)");
 }

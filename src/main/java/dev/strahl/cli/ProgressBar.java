@@ -15,11 +15,16 @@ final class ProgressBar {
     }
 
     void update(double fraction, double seconds, long samples) {
+        update(fraction, seconds, samples, "");
+    }
+
+    /** With {@code extra} after the figures (a cluster's member count). */
+    void update(double fraction, double seconds, long samples, String extra) {
         int filled = (int) Math.round(fraction * WIDTH);
         double rate = seconds > 0 ? samples / seconds : 0;
         String eta = fraction > 0 && fraction < 1 ? Units.duration(seconds * (1 - fraction) / fraction) : "--:--";
         out.print(String.format(Locale.ROOT, "\r[%s%s] %3d%%  %s samples/s  elapsed %s  ETA %s ",
-                "#".repeat(filled), "-".repeat(WIDTH - filled), (int) (fraction * 100), Units.si(rate), Units.duration(seconds), eta));
+                "#".repeat(filled), "-".repeat(WIDTH - filled), (int) (fraction * 100), Units.si(rate), Units.duration(seconds), eta) + extra);
         out.flush();
     }
 

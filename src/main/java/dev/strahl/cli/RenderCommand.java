@@ -25,7 +25,9 @@ import java.math.MathContext;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.List;
 import java.util.Locale;
+import dev.strahl.render.RenderCluster;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
 import org.joml.Vector3d;
@@ -109,6 +111,23 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--fov", paramLabel = "DEGREES", description = "Vertical field of view in degrees.")
     Double fov;
 
+    @Option(names = "--cluster", paramLabel = "HOST[:PORT],...", split = ",",
+            description = "Render on a cluster: join the 'strahl worker' members there and render with them (docs/cluster.md);"
+                    + " the image is the same bits as without.")
+    List<String> cluster;
+
+    @Option(names = "--cluster-name", paramLabel = "NAME", defaultValue = "strahl",
+            description = "With --cluster: the cluster's name (default: ${DEFAULT-VALUE}).")
+    String clusterName;
+
+    @Option(names = "--bind", paramLabel = "ADDR", defaultValue = "127.0.0.1",
+            description = "With --cluster: the address this member listens on, reachable by the workers (default: ${DEFAULT-VALUE}).")
+    String bind;
+
+    @Option(names = "--port", defaultValue = "0",
+            description = "With --cluster: the port this member listens on; 0 = 5701 or the next free one (default: ${DEFAULT-VALUE}).")
+    int port;
+
     @Option(names = {"-q", "--quiet"}, description = "Print nothing but errors.")
     boolean quiet;
 
@@ -152,6 +171,7 @@ final class RenderCommand implements Callable<Integer> {
 
     private int run(PrintWriter err, Interrupts irq) throws SceneException, CheckpointException, InterruptedException {
         RenderSettings settings = settings();
+        checkClusterOptions();
         if (fov != null && !(fov > 0 && fov < 180)) {
             throw new IllegalArgumentException("--fov: the field of view must be in (0, 180) degrees, got " + fov);
         }
@@ -191,13 +211,21 @@ final class RenderCommand implements Callable<Integer> {
         }
     }
 
-    private RenderJob start(Scene s, RenderSettings settings, RenderListener listener, PrintWriter err) throws CheckpointException {
+    private RenderJob start(Scene s, RenderSettings settings, RenderListener listener, PrintWriter err, RenderCluster members)
+            throws CheckpointException {
+        if (members != null && resume == null) {
+            try {
+                return members.render(s, scene, settings, listener);
+            } catch (IOException e) {
+                throw new IllegalArgumentException("cannot send the scene to the cluster: " + e.getMessage(), e);
+            }
+        }
         if (resume == null) {
             return RenderJob.start(s, settings, listener);
         }
         RenderJob job;
         try {
-            job = RenderJob.resumeFrom(resume, s, settings, listener);
+            job = members != null ? members.resume(resume, s, scene, settings, listener) : RenderJob.resumeFrom(resume, s, settings, listener);
         } catch (IOException e) {
             throw new CheckpointException(resume, "cannot read the checkpoint: " + e.getMessage());
         }
@@ -255,21 +283,74 @@ final class RenderCommand implements Callable<Integer> {
                 up != null ? up : base.up(), fov != null ? fov : base.fovDegrees());
     }
 
+    /** Checks the cluster options before anything is loaded: they need --cluster, and a port in range. */
+    private void checkClusterOptions() {
+        var parsed = spec.commandLine().getParseResult();
+        if (cluster == null) {
+            for (String option : List.of("--cluster-name", "--bind", "--port")) {
+                if (parsed.hasMatchedOption(option)) {
+                    throw new IllegalArgumentException(option + " needs --cluster");
+                }
+            }
+            return;
+        }
+        if (cluster.isEmpty() || cluster.stream().anyMatch(String::isBlank)) {
+            throw new IllegalArgumentException("--cluster: give the members to join as HOST[:PORT],...");
+        }
+        if (port < 0 || port > 65535) {
+            throw new IllegalArgumentException("--port must be in 0..65535, got " + port);
+        }
+        if (clusterName.isBlank()) {
+            throw new IllegalArgumentException("--cluster-name must not be empty");
+        }
+    }
+
+    /** Joins the cluster (a member that renders too); null without --cluster. */
+    private RenderCluster joinCluster(RenderSettings settings, PrintWriter err) {
+        if (cluster == null) {
+            return null;
+        }
+        if (settings.integrator() == dev.strahl.render.IntegratorKind.PHOTON) {
+            throw new IllegalArgumentException("--cluster: the photon mapper cannot render on a cluster (each sample needs the photon map of the whole scene)");
+        }
+        try {
+            RenderCluster members = RenderCluster.builder().join(cluster.toArray(String[]::new)).bind(bind).port(port).clusterName(clusterName)
+                    .threads(settings.threads()).joinTimeout(Duration.ofSeconds(10))
+                    .log(quiet ? null : line -> {
+                        synchronized (err) {
+                            err.println("strahl: cluster: " + line);
+                            err.flush();
+                        }
+                    }).start();
+            return members;
+        } catch (IOException | IllegalStateException e) {
+            throw new IllegalArgumentException("--cluster: " + e.getMessage(), e);
+        }
+    }
+
     private int render(Scene s, RenderSettings settings, Path checkpointFile, PrintWriter err, Interrupts irq)
+            throws InterruptedException, CheckpointException {
+        try (RenderCluster members = joinCluster(settings, err)) {
+            return render(s, settings, checkpointFile, err, irq, members);
+        }
+    }
+
+    private int render(Scene s, RenderSettings settings, Path checkpointFile, PrintWriter err, Interrupts irq, RenderCluster members)
             throws InterruptedException, CheckpointException {
         var saver = checkpointFile == null ? null : new CheckpointSaver(checkpointFile, checkpointInterval, err);
         boolean showProgress = !quiet && Terminal.isStderrTerminal();
         ProgressBar bar = new ProgressBar(System.err);
         RenderStats stats;
         Image image;
-        try (RenderJob job = start(s, settings, saver != null ? saver : new RenderListener() {}, err)) {
+        try (RenderJob job = start(s, settings, saver != null ? saver : new RenderListener() {}, err, members)) {
             if (saver != null) {
                 saver.attach(job);
             }
             irq.onFirstSignal(job::cancel);
             while (!job.await(200, TimeUnit.MILLISECONDS)) {
                 if (showProgress) {
-                    bar.update(job.progress(), job.elapsedSeconds(), job.samplesDone());
+                    bar.update(job.progress(), job.elapsedSeconds(), job.samplesDone(),
+                            members != null ? "  " + members.memberCount() + " members" : "");
                 }
             }
             try {
@@ -296,7 +377,7 @@ final class RenderCommand implements Callable<Integer> {
         }
         if (statsFile != null) {
             try {
-                StatsFile.write(statsFile, stats, settings, loadSeconds, bvhSeconds);
+                StatsFile.write(statsFile, stats, settings, loadSeconds, bvhSeconds, members != null ? members.memberFigures() : List.of());
             } catch (IOException e) {
                 throw new RenderFailure("cannot write " + statsFile + ": " + e.getMessage(), e);
             }

@@ -5,6 +5,7 @@ import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
 
 /**
  * The figures of one render for tools ({@code render --stats FILE.json}). Render time excludes
@@ -15,6 +16,12 @@ final class StatsFile {
     private StatsFile() {}
 
     static void write(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhBuildSeconds) throws IOException {
+        write(file, stats, settings, loadSeconds, bvhBuildSeconds, List.of());
+    }
+
+    /** With {@code members}: a cluster render's figures per member ({@code RenderCluster.memberFigures()}), as a list of lines. */
+    static void write(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhBuildSeconds,
+                      List<String> members) throws IOException {
         JsonFile.write(file, json -> {
             json.writeStartObject();
             json.writeNumberField("seconds", stats.seconds());
@@ -28,6 +35,13 @@ final class StatsFile {
             json.writeNumberField("spp", stats.samplesPerPixel());
             json.writeNumberField("bvh_build_seconds", bvhBuildSeconds);
             json.writeNumberField("load_seconds", loadSeconds);
+            if (!members.isEmpty()) {
+                json.writeArrayFieldStart("members");
+                for (String m : members) {
+                    json.writeString(m);
+                }
+                json.writeEndArray();
+            }
             json.writeEndObject();
         });
     }

@@ -80,6 +80,11 @@ final class Checkpoint {
         return new Checkpoint(sceneDigest(scene), settingsKey(settings), settings.width(), settings.height());
     }
 
+    /** The fingerprint of the scene's content (SHA-256). */
+    byte[] sceneDigestBytes() {
+        return sceneDigest.clone();
+    }
+
     /**
      * What a checkpoint held: the film to resume into and the figures of the runs before.
      *

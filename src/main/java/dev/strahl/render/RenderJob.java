@@ -15,6 +15,7 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Function;
 
 /**
  * A render running in the background: passes over the whole image, each adding a few samples
@@ -42,7 +43,7 @@ public final class RenderJob implements AutoCloseable {
     private final RenderListener listener;
     private final Film film;
     private final Integrator integrator;
-    private final RenderWorkers workers;
+    private final PassRunner workers;
     private final Scene scene;
     /** What ties a checkpoint to this scene and these settings; digested when first needed. */
     private Checkpoint identity;
@@ -58,6 +59,12 @@ public final class RenderJob implements AutoCloseable {
 
     private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener, Checkpoint identity,
                       Checkpoint.Restored restored) {
+        this(scene, settings, integrator, listener, identity, restored, null);
+    }
+
+    /** With {@code cluster} non-null, the passes are rendered by the runner it makes for the job's film (a cluster render). */
+    private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener, Checkpoint identity,
+                      Checkpoint.Restored restored, Function<Film, PassRunner> cluster) {
         this.settings = Objects.requireNonNull(settings, "settings");
         this.listener = Objects.requireNonNull(listener, "listener");
         this.film = restored != null ? restored.film() : new Film(settings.width(), settings.height());
@@ -68,7 +75,9 @@ public final class RenderJob implements AutoCloseable {
         this.earlierSeconds = restored != null ? restored.seconds() : 0;
         Camera c = scene.camera();
         var rays = new PinholeRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), settings.width(), settings.height());
-        this.workers = new RenderWorkers(film, rays, integrator, settings.seed(), settings.effectiveThreads(), "strahl-render-" + JOB_NUMBER.incrementAndGet());
+        int number = JOB_NUMBER.incrementAndGet();
+        this.workers = cluster != null ? cluster.apply(film)
+                : new RenderWorkers(film, rays, integrator, settings.seed(), settings.effectiveThreads(), "strahl-render-" + number);
         this.completedSpp = Math.min(film.minSampleCount(), settings.samplesPerPixel());   // 0, unless the film was restored
         this.restoredSamples = film.totalSamples();
     }
@@ -122,6 +131,17 @@ public final class RenderJob implements AutoCloseable {
         Checkpoint identity = Checkpoint.of(scene, settings);
         Checkpoint.Restored restored = identity.restore(checkpoint);
         return launch(new RenderJob(scene, settings, Integrators.create(World.of(scene), settings), listener, identity, restored));
+    }
+
+    /**
+     * A render whose passes the members of a cluster render ({@link RenderCluster}): a fresh one,
+     * or with {@code checkpoint} non-null the one saved there.
+     */
+    static RenderJob onCluster(Scene scene, RenderSettings settings, RenderListener listener, Path checkpoint,
+                               Function<Film, PassRunner> runner) throws CheckpointException, IOException {
+        Checkpoint identity = Checkpoint.of(scene, settings);
+        Checkpoint.Restored restored = checkpoint != null ? identity.restore(checkpoint) : null;
+        return launch(new RenderJob(scene, settings, Integrators.create(World.of(scene), settings), listener, identity, restored, runner));
     }
 
     private static RenderJob launch(RenderJob job) {
@@ -353,10 +373,10 @@ public final class RenderJob implements AutoCloseable {
             }
             int pass = 0;
             while (start < spp && !workers.cancelled()) {
-                int size = prepares ? 1 : settings.samplesPerPass() > 0 ? settings.samplesPerPass() : autoPassSize(pass);
+                int size = prepares ? 1 : settings.samplesPerPass() > 0 ? settings.samplesPerPass() : workers.passSize(pass);
                 int end = Math.min(spp, start + size);
                 if (prepares) {
-                    integrator.prepareSample(settings.seed(), start, workers);
+                    integrator.prepareSample(settings.seed(), start, workers.parallel());
                     if (workers.cancelled()) {
                         break;
                     }
@@ -394,7 +414,7 @@ public final class RenderJob implements AutoCloseable {
     }
 
     private RenderStats stats() {
-        return new RenderStats(elapsedSeconds(), workers.samplesDone(), workers.rayCount(), completedSpp, settings.effectiveThreads(), workers.cancelled(),
+        return new RenderStats(elapsedSeconds(), workers.samplesDone(), workers.rayCount(), completedSpp, workers.threads(), workers.cancelled(),
                 invalidSamples());
     }
 }

@@ -31,7 +31,7 @@ import java.util.function.Consumer;
  * before its next tile, and {@link #awaitStill()} returns once none is rendering, so that the film
  * can be read consistently: every pixel then holds whole samples.
  */
-final class RenderWorkers implements Parallel {
+final class RenderWorkers implements Parallel, PassRunner {
     private final Film film;
     private final PinholeRays cameraRays;
     private final ExecutorService pool;
@@ -62,12 +62,23 @@ final class RenderWorkers implements Parallel {
         });
         this.workers = new WorkerState[threads];
         for (int i = 0; i < threads; i++) {
-            workers[i] = new WorkerState(integrator.newWorker(), stratified ? new StratifiedSampler(seed) : new IndependentSampler(seed));
+            workers[i] = new WorkerState(integrator.newWorker(), newSampler(stratified, seed));
         }
     }
 
+    @Override
+    public Parallel parallel() {
+        return this;
+    }
+
+    @Override
+    public int threads() {
+        return workers.length;
+    }
+
     /** Asks the threads to stop after their current row or chunk. */
-    void cancel() {
+    @Override
+    public void cancel() {
         synchronized (gate) {
             cancelled = true;
             gate.notifyAll();
@@ -75,13 +86,15 @@ final class RenderWorkers implements Parallel {
     }
 
     /** Makes every worker stop before its next tile until {@link #release()}; does not wait. */
-    void hold() {
+    @Override
+    public void hold() {
         synchronized (gate) {
             holds++;
         }
     }
 
-    void release() {
+    @Override
+    public void release() {
         synchronized (gate) {
             holds--;
             gate.notifyAll();
@@ -89,7 +102,8 @@ final class RenderWorkers implements Parallel {
     }
 
     /** While a hold is on: waits until no worker is rendering (each has finished its tile). */
-    void awaitStill() throws InterruptedException {
+    @Override
+    public void awaitStill() throws InterruptedException {
         synchronized (gate) {
             while (busy > 0 && !cancelled) {
                 gate.wait();
@@ -118,19 +132,23 @@ final class RenderWorkers implements Parallel {
         }
     }
 
-    boolean cancelled() {
+    @Override
+    public boolean cancelled() {
         return cancelled;
     }
 
-    long samplesDone() {
+    @Override
+    public long samplesDone() {
         return samplesDone.get();
     }
 
-    long invalidSamples() {
+    @Override
+    public long invalidSamples() {
         return invalidSamples.get();
     }
 
-    long rayCount() {
+    @Override
+    public long rayCount() {
         long rays = 0;
         for (WorkerState w : workers) {
             rays += w.integrator.rayCount();
@@ -138,12 +156,14 @@ final class RenderWorkers implements Parallel {
         return rays;
     }
 
-    void shutdown() {
+    @Override
+    public void shutdown() {
         pool.shutdownNow();
     }
 
     /** Renders samples [firstSample, endSample) of every pixel; returns when all threads are done with it. */
-    void renderPass(int firstSample, int endSample) throws InterruptedException, ExecutionException {
+    @Override
+    public void renderPass(int firstSample, int endSample) throws InterruptedException, ExecutionException {
         AtomicInteger nextTile = new AtomicInteger();
         onEveryThread(w -> renderTiles(w, nextTile, firstSample, endSample));
     }
@@ -231,11 +251,7 @@ final class RenderWorkers implements Parallel {
                     int s0 = Math.max(firstSample, film.sampleCountAt(pixel));
                     rowSamples += Math.max(0, endSample - s0);
                     for (int s = s0; s < endSample; s++) {
-                        w.sampler.startPixelSample(x, y, s);
-                        w.sampler.getPixel2D(w.filmPosition);
-                        cameraRays.generate(x + w.filmPosition.u1, y + w.filmPosition.u2, w.ray);
-                        w.integrator.radiance(w.ray, w.sampler, w.radiance);
-                        if (w.radiance.isFinite()) {
+                        if (sample(w, cameraRays, x, y, s)) {
                             film.add(pixel, w.radiance.r, w.radiance.g, w.radiance.b);
                         } else {
                             film.add(pixel, 0, 0, 0);
@@ -252,8 +268,27 @@ final class RenderWorkers implements Parallel {
         }
     }
 
+    /**
+     * Takes sample {@code s} of pixel (x, y) into {@code w.radiance}: the one place where a sample
+     * is made, for the local passes and for a cluster's work units ({@link UnitRenderers}) alike.
+     *
+     * @return whether the radiance is finite (otherwise the caller adds black and counts it)
+     */
+    static boolean sample(WorkerState w, PinholeRays cameraRays, int x, int y, int s) {
+        w.sampler.startPixelSample(x, y, s);
+        w.sampler.getPixel2D(w.filmPosition);
+        cameraRays.generate(x + w.filmPosition.u1, y + w.filmPosition.u2, w.ray);
+        w.integrator.radiance(w.ray, w.sampler, w.radiance);
+        return w.radiance.isFinite();
+    }
+
+    /** The sampler a render's settings choose, for a worker of one thread. */
+    static Sampler newSampler(boolean stratified, long seed) {
+        return stratified ? new StratifiedSampler(seed) : new IndependentSampler(seed);
+    }
+
     /** What one worker thread owns: reused for every sample, so the loop allocates nothing. */
-    private static final class WorkerState {
+    static final class WorkerState {
         final Integrator.Worker integrator;
         final Sampler sampler;
         final Sample2D filmPosition = new Sample2D();

@@ -96,6 +96,7 @@ public final class ExrReader {
         if (Files.isDirectory(file)) {
             throw new ImageFormatException(file, "is a directory, not an EXR file");
         }
+        dev.strahl.io.image.FileReads.note(file);
         try (FileChannel channel = FileChannel.open(file, StandardOpenOption.READ)) {
             ExrInput in = new ExrInput(file, channel);
             ExrHeader header = ExrHeader.read(in);

@@ -58,6 +58,7 @@ public final class HdrReader {
             throw new ImageFormatException(file, "is a directory, not an HDR file");
         }
         long size = Files.size(file);
+        FileReads.note(file);
         try (Input in = new Input(file, new BufferedInputStream(Files.newInputStream(file), 1 << 16))) {
             return read(in, size);
         }

@@ -49,6 +49,7 @@ public final class PfmReader {
         if (Files.isDirectory(file)) {
             throw malformed(file, "is a directory, not a PFM file");
         }
+        FileReads.note(file);
         try (FileChannel ch = FileChannel.open(file, StandardOpenOption.READ)) {
             long size = ch.size();
             ByteBuffer head = ByteBuffer.allocate((int) Math.min(size, MAX_HEADER));

@@ -55,6 +55,7 @@ public final class TextureImages {
         if (!Files.isReadable(file)) {
             Files.newByteChannel(file).close();       // the usual NoSuchFileException or AccessDeniedException
         }
+        FileReads.note(file);
         try (ImageInputStream in = ImageIO.createImageInputStream(file.toFile())) {
             if (in == null) {
                 throw new ImageFormatException(file, "cannot be opened as an image");

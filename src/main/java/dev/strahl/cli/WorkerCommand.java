@@ -1,0 +1,107 @@
+package dev.strahl.cli;
+
+import dev.strahl.render.RenderCluster;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code strahl worker}: a member of a render cluster that renders the units of the renders
+ * started with {@code strahl render --cluster}, until Ctrl-C (or SIGTERM), which leaves the
+ * cluster cleanly. Exit codes: 130/143 after a signal, 2 bad usage or an address that cannot be
+ * bound.
+ */
+@Command(name = "worker",
+        mixinStandardHelpOptions = true,
+        versionProvider = Main.Version.class,
+        description = {"Joins (or starts) a render cluster and renders parts of the renders started with 'strahl render --cluster',",
+            "until Ctrl-C. Hazelcast's community edition has no authentication or encryption: run it on a trusted network only",
+            "(docs/cluster.md)."},
+        sortOptions = false)
+final class WorkerCommand implements Callable<Integer> {
+
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--join", paramLabel = "HOST[:PORT],...", split = ",",
+            description = "Members to join; without it this worker starts a cluster of its own that others join.")
+    List<String> join = new ArrayList<>();
+
+    @Option(names = "--bind", paramLabel = "ADDR", defaultValue = "127.0.0.1",
+            description = "The address to listen on and be reached at (default: ${DEFAULT-VALUE}; give this machine's LAN address for a cluster of machines).")
+    String bind;
+
+    @Option(names = "--port", defaultValue = "5701", description = "The port to listen on (default: ${DEFAULT-VALUE}).")
+    int port;
+
+    @Option(names = "--cluster-name", paramLabel = "NAME", defaultValue = "strahl",
+            description = "Only members with the same name form a cluster (default: ${DEFAULT-VALUE}).")
+    String clusterName;
+
+    @Option(names = "--threads", defaultValue = "0", description = "Render threads; 0 = all processors (default: ${DEFAULT-VALUE}).")
+    int threads;
+
+    @Option(names = {"-q", "--quiet"}, description = "Print nothing but errors.")
+    boolean quiet;
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        if (threads < 0) {
+            return usage(err, "--threads must be >= 0, got " + threads);
+        }
+        if (port < 1 || port > 65535) {
+            return usage(err, "--port must be in 1..65535, got " + port);
+        }
+        if (clusterName.isBlank()) {
+            return usage(err, "--cluster-name must not be empty");
+        }
+        try (Interrupts irq = Interrupts.install(err)) {
+            var stop = new CountDownLatch(1);
+            irq.onFirstSignal(stop::countDown);
+            RenderCluster member;
+            try {
+                member = RenderCluster.builder().join(join.toArray(String[]::new)).bind(bind).port(port).clusterName(clusterName)
+                        .threads(threads).joinTimeout(Duration.ofSeconds(10)).log(line -> report(err, line)).start();
+            } catch (IOException | IllegalStateException | IllegalArgumentException e) {
+                err.println("strahl: " + e.getMessage());
+                err.flush();
+                return 2;
+            }
+            try (member) {
+                if (!join.isEmpty() && member.memberCount() < 2) {
+                    report(err, "no member answered at " + String.join(", ", join) + ": waiting for others to join this one");
+                }
+                stop.await();
+                report(err, "leaving the cluster");
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            irq.written();
+            return irq.interrupted() ? irq.exitCode() : 0;
+        }
+    }
+
+    private void report(PrintWriter err, String line) {
+        if (!quiet) {
+            synchronized (err) {
+                err.println("strahl worker: " + line);
+                err.flush();
+            }
+        }
+    }
+
+    private static int usage(PrintWriter err, String message) {
+        err.println("strahl: " + message + " (see 'strahl worker --help')");
+        err.flush();
+        return 2;
+    }
+}

@@ -1,0 +1,203 @@
+package dev.strahl.render;
+
+import dev.strahl.film.Film;
+import dev.strahl.integrator.Parallel;
+import dev.strahl.units.JobChannel;
+import dev.strahl.units.WorkUnit;
+import java.util.concurrent.CompletionException;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * The passes of a cluster render: each pass sends every tile as a work unit (its sample range and
+ * the tile's state) through the job's {@link JobChannel}, and merges the rendered units into the
+ * film by replacing the tile's state with theirs. The tiles of a pass are disjoint and a tile's
+ * next unit is made only after its last one came back, so a pixel's sums grow exactly as in a
+ * local render, whoever renders which unit: the image is the same bits.
+ *
+ * <p>At most a few units per member thread are out at once (so that a member that joins late
+ * gets work and the state of the film stays small in flight). A hold (a pause, a checkpoint)
+ * stops sending; {@link #awaitStill()} waits for the units out to come back. A cancel drops what
+ * comes back afterwards: the film then holds whole samples of the units merged so far.
+ */
+final class ClusterPasses implements PassRunner {
+    /** Units out per thread of the cluster: one rendering, one on the way. */
+    private static final int UNITS_PER_THREAD = 2;
+    /** The largest pass of a cluster render (see docs/cluster.md for the measurement behind it). */
+    static final int MAX_PASS = 64;
+
+    private final Film film;
+    private final JobChannel channel;
+    private final Object lock = new Object();
+    private int holds;
+    private int out;
+    private boolean cancelled;
+    private Throwable failure;
+    private final AtomicLong samplesDone = new AtomicLong();
+    private final AtomicLong invalidSamples = new AtomicLong();
+    private final AtomicLong rays = new AtomicLong();
+
+    ClusterPasses(Film film, JobChannel channel) {
+        this.film = film;
+        this.channel = channel;
+    }
+
+    @Override
+    public void renderPass(int firstSample, int endSample) throws InterruptedException, ExecutionException {
+        int tilesX = film.tileCountX();
+        int tileCount = tilesX * film.tileCountY();
+        for (int tile = 0; tile < tileCount; tile++) {
+            WorkUnit unit;
+            synchronized (lock) {
+                while ((holds > 0 || out >= window()) && !cancelled && failure == null) {
+                    lock.wait();
+                }
+                if (cancelled || failure != null) {
+                    break;
+                }
+                unit = cut(tile, tilesX, firstSample, endSample);
+                if (unit == null) {
+                    continue;
+                }
+                out++;
+            }
+            long samples = unit.samples();
+            channel.submit(unit).whenComplete((done, e) -> merge(done, e, samples));
+        }
+        synchronized (lock) {
+            while (out > 0 && !cancelled && failure == null) {
+                lock.wait();
+            }
+            if (failure != null && !cancelled) {
+                throw new ExecutionException(failure);
+            }
+        }
+    }
+
+    private int window() {
+        return Math.max(4, UNITS_PER_THREAD * channel.threads());
+    }
+
+    /** The unit of one tile for samples [first, end), with the tile's state; null if every pixel has them already. */
+    private WorkUnit cut(int tile, int tilesX, int first, int end) {
+        int x0 = (tile % tilesX) * Film.TILE;
+        int y0 = (tile / tilesX) * Film.TILE;
+        int w = Math.min(Film.TILE, film.width() - x0);
+        int h = Math.min(Film.TILE, film.height() - y0);
+        int[] counts = new int[w * h];
+        double[] sums = new double[3 * w * h];
+        double[] rgb = new double[3];
+        boolean any = false;
+        for (int ty = 0; ty < h; ty++) {
+            for (int tx = 0; tx < w; tx++) {
+                int i = ty * w + tx;
+                counts[i] = film.pixelState(x0 + tx, y0 + ty, rgb);
+                System.arraycopy(rgb, 0, sums, 3 * i, 3);
+                any |= counts[i] < end;
+            }
+        }
+        return any ? new WorkUnit(x0, y0, w, h, first, end, counts, sums) : null;
+    }
+
+    private void merge(WorkUnit done, Throwable e, long samples) {
+        synchronized (lock) {
+            out--;
+            lock.notifyAll();
+            if (cancelled) {
+                return;                            // the film stays as it was when the render was cancelled
+            }
+            if (e != null) {
+                if (failure == null) {
+                    failure = e instanceof CompletionException && e.getCause() != null ? e.getCause() : e;
+                }
+                return;
+            }
+            double[] sums = done.sums();
+            int[] counts = done.counts();
+            for (int ty = 0; ty < done.height(); ty++) {
+                for (int tx = 0; tx < done.width(); tx++) {
+                    int i = ty * done.width() + tx;
+                    film.restorePixel(done.x0() + tx, done.y0() + ty, counts[i], sums[3 * i], sums[3 * i + 1], sums[3 * i + 2]);
+                }
+            }
+            samplesDone.addAndGet(samples);
+            invalidSamples.addAndGet(done.invalidSamples());
+            rays.addAndGet(done.rays());
+        }
+    }
+
+    @Override
+    public Parallel parallel() {
+        return null;
+    }
+
+    @Override
+    public void cancel() {
+        synchronized (lock) {
+            cancelled = true;
+            lock.notifyAll();
+        }
+    }
+
+    @Override
+    public boolean cancelled() {
+        synchronized (lock) {
+            return cancelled;
+        }
+    }
+
+    @Override
+    public void hold() {
+        synchronized (lock) {
+            holds++;
+        }
+    }
+
+    @Override
+    public void release() {
+        synchronized (lock) {
+            holds--;
+            lock.notifyAll();
+        }
+    }
+
+    @Override
+    public void awaitStill() throws InterruptedException {
+        synchronized (lock) {
+            while (out > 0 && !cancelled && failure == null) {
+                lock.wait();
+            }
+        }
+    }
+
+    @Override
+    public long samplesDone() {
+        return samplesDone.get();
+    }
+
+    @Override
+    public long invalidSamples() {
+        return invalidSamples.get();
+    }
+
+    @Override
+    public long rayCount() {
+        return rays.get();
+    }
+
+    @Override
+    public int threads() {
+        return channel.threads();
+    }
+
+    @Override
+    public void shutdown() {
+        channel.close();
+    }
+
+    /** Passes of 1, 4, 16, then {@value #MAX_PASS} samples per pixel: a first image soon, and units that outweigh their shipping. */
+    @Override
+    public int passSize(int pass) {
+        return Math.min(MAX_PASS, 1 << (2 * Math.min(pass, 3)));
+    }
+}

@@ -1,0 +1,46 @@
+package dev.strahl.render;
+
+import dev.strahl.integrator.Parallel;
+import java.util.concurrent.ExecutionException;
+
+/**
+ * What renders the passes of a {@link RenderJob}: the job's own threads ({@link RenderWorkers}), or
+ * the members of a cluster ({@link ClusterPasses}). Either way every pixel adds its samples in
+ * index order, so the image is the same bits.
+ */
+interface PassRunner {
+    /** Renders samples [firstSample, endSample) of every pixel; returns when the pass is done or cancelled. */
+    void renderPass(int firstSample, int endSample) throws InterruptedException, ExecutionException;
+
+    /** Runs an integrator's per-sample preparation; null when this runner cannot (a cluster). */
+    Parallel parallel();
+
+    /** Asks the work to stop soon. */
+    void cancel();
+
+    boolean cancelled();
+
+    /** Holds the work between tiles (or units) until {@link #release()}. */
+    void hold();
+
+    void release();
+
+    /** While held: waits until nothing writes into the film. */
+    void awaitStill() throws InterruptedException;
+
+    long samplesDone();
+
+    long invalidSamples();
+
+    long rayCount();
+
+    /** Threads that render (of all members, for a cluster). */
+    int threads();
+
+    void shutdown();
+
+    /** Samples per pixel of automatic pass {@code pass} (from 0). */
+    default int passSize(int pass) {
+        return RenderJob.autoPassSize(pass);
+    }
+}
