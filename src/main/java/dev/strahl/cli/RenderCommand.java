@@ -3,7 +3,9 @@ package dev.strahl.cli;
 import dev.strahl.io.text.Units;
 import dev.strahl.image.Image;
 import dev.strahl.io.json.SceneFile;
+import dev.strahl.render.Acceleration;
 import dev.strahl.render.PhotonParameters;
+import dev.strahl.render.Schedule;
 import dev.strahl.world.World;
 import dev.strahl.scene.Camera;
 import dev.strahl.io.ImageWriters;
@@ -95,6 +97,17 @@ final class RenderCommand implements Callable<Integer> {
 
     @Option(names = "--cull-back-faces", description = "Skip back faces of closed meshes for camera and bounce rays.")
     boolean cullBackFaces;
+
+    // Teaching options (docs/experiments.md): what a first ray tracer did, to measure what strahl does instead.
+    @Option(names = "--accel", defaultValue = "bvh", paramLabel = "bvh|none",
+            description = "Teaching option: none tests every ray against every primitive (no BVH), to measure what the BVH buys; "
+                    + "same image, many times slower (default: ${DEFAULT-VALUE}).")
+    Acceleration accel;
+
+    @Option(names = "--schedule", defaultValue = "tiles", paramLabel = "tiles|stripes",
+            description = "Teaching option: stripes gives each of n threads one horizontal stripe of the image instead of "
+                    + "32x32 tiles taken by whichever thread is free; same image, threads wait more (default: ${DEFAULT-VALUE}).")
+    Schedule schedule;
 
     @Option(names = "--look-from", paramLabel = "X,Y,Z", converter = Vectors.class, description = "Camera position.")
     Vector3d lookFrom;
@@ -211,7 +224,7 @@ final class RenderCommand implements Callable<Integer> {
     private RenderSettings settings() {
         return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0,
                 transport.integrator, transport.lightSamples, timeLimit == null ? Duration.ZERO : timeLimit,
-                new PhotonParameters(transport.photons, transport.photonRadius));
+                new PhotonParameters(transport.photons, transport.photonRadius), accel, schedule);
     }
 
     /**

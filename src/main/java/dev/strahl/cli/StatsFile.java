@@ -28,6 +28,9 @@ final class StatsFile {
             json.writeNumberField("spp", stats.samplesPerPixel());
             json.writeNumberField("bvh_build_seconds", bvhBuildSeconds);
             json.writeNumberField("load_seconds", loadSeconds);
+            json.writeNumberField("thread_idle_seconds", stats.threadIdleSeconds());
+            json.writeStringField("accel", settings.accel().name().toLowerCase(java.util.Locale.ROOT));
+            json.writeStringField("schedule", settings.schedule().name().toLowerCase(java.util.Locale.ROOT));
             json.writeEndObject();
         });
     }

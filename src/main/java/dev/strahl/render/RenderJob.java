@@ -68,7 +68,7 @@ public final class RenderJob implements AutoCloseable {
         this.earlierSeconds = restored != null ? restored.seconds() : 0;
         Camera c = scene.camera();
         var rays = new PinholeRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), settings.width(), settings.height());
-        this.workers = new RenderWorkers(film, rays, integrator, settings.seed(), settings.effectiveThreads(), "strahl-render-" + JOB_NUMBER.incrementAndGet());
+        this.workers = new RenderWorkers(film, rays, integrator, settings.seed(), settings.effectiveThreads(), settings.schedule(), "strahl-render-" + JOB_NUMBER.incrementAndGet());
         this.completedSpp = Math.min(film.minSampleCount(), settings.samplesPerPixel());   // 0, unless the film was restored
         this.restoredSamples = film.totalSamples();
     }
@@ -395,6 +395,6 @@ public final class RenderJob implements AutoCloseable {
 
     private RenderStats stats() {
         return new RenderStats(elapsedSeconds(), workers.samplesDone(), workers.rayCount(), completedSpp, settings.effectiveThreads(), workers.cancelled(),
-                invalidSamples());
+                invalidSamples(), workers.idleSeconds());
     }
 }
