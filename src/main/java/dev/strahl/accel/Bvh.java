@@ -182,17 +182,49 @@ public final class Bvh {
             return false;
         }
         if (bruteForce) {
-            return everyPrimitive(ray, hit, cullBackFaces);
+            return everyPrimitive(ray, hit, stack, cullBackFaces);
         }
         stack.prepare(ray);
         return closestHit(ray, hit, stack, cullBackFaces);
     }
 
-    /** {@code --accel none}: the closest hit among all triangles, then all spheres (each call shortens ray.tMax). */
-    private boolean everyPrimitive(Ray ray, Hit hit, boolean cullBackFaces) {
+    /**
+     * {@code --accel none}: the closest hit among all triangles, with the leaves' test and the
+     * thread's {@link RayTriangle} (nothing allocated per ray), then among all spheres.
+     */
+    private boolean everyPrimitive(Ray ray, Hit hit, TraversalStack stack, boolean cullBackFaces) {
+        stack.prepare(ray);
+        final RayTriangle tr = stack.triangle;
+        double tHit = ray.tMax;
+        int found = -1;
+        for (int prim = 0; prim < triangleCount; prim++) {
+            if (tr.hit(pos, tri, flags, prim, tHit, cullBackFaces)) {
+                tHit = tr.t;
+                found = prim;
+            }
+        }
         int spheres = geometry.primitiveCount() - triangleCount;
-        boolean found = triangleCount > 0 && geometry.intersect(0, triangleCount, ray, hit, cullBackFaces);
-        return (spheres > 0 && geometry.intersect(triangleCount, spheres, ray, hit, cullBackFaces)) || found;
+        if (spheres > 0) {
+            ray.tMax = tHit;
+            if (geometry.intersect(triangleCount, spheres, ray, hit, cullBackFaces)) {
+                tHit = hit.t;
+                found = hit.prim;
+            }
+        }
+        return finish(ray, hit, found, tHit, tr);
+    }
+
+    /** {@code --accel none}: whether any primitive blocks the ray, tested one after another. */
+    private boolean anyPrimitive(Ray ray, TraversalStack stack) {
+        stack.prepare(ray);
+        final RayTriangle tr = stack.triangle;
+        for (int prim = 0; prim < triangleCount; prim++) {
+            if (tr.hit(pos, tri, flags, prim, ray.tMax, false)) {
+                return true;
+            }
+        }
+        int spheres = geometry.primitiveCount() - triangleCount;
+        return spheres > 0 && geometry.occludes(triangleCount, spheres, ray);
     }
 
     /**
@@ -294,10 +326,8 @@ public final class Bvh {
         if (nodeCount == 0) {
             return false;
         }
-        if (bruteForce) {                 // --accel none: every primitive until one blocks
-            int spheres = geometry.primitiveCount() - triangleCount;
-            return (triangleCount > 0 && geometry.occludes(0, triangleCount, ray))
-                    || (spheres > 0 && geometry.occludes(triangleCount, spheres, ray));
+        if (bruteForce) {
+            return anyPrimitive(ray, stack);
         }
         stack.prepare(ray);
         return anyHit(ray, stack);
