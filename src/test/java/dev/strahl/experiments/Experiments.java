@@ -94,12 +94,25 @@ public final class Experiments {
             e.figure(name + ".seconds", (System.nanoTime() - t0) * 1e-9);
             System.err.printf(Locale.ROOT, "experiments: %s done after %.0f s%n", name, (System.nanoTime() - start) * 1e-9);
         }
-        e.figure("total.seconds", (System.nanoTime() - start) * 1e-9);
         e.figure("machine.processors", Runtime.getRuntime().availableProcessors());
         e.figure("machine.java", System.getProperty("java.version"));
-        Path file = out.resolve(only.isEmpty() ? "figures.txt" : "figures-" + String.join("-", only) + ".txt");
-        Files.write(file, e.figures);
-        System.err.println("experiments: wrote " + file);
+        // The figures of a partial run replace those of the same experiments in figures.txt.
+        Path file = out.resolve("figures.txt");
+        Map<String, String> all = only.isEmpty() ? new LinkedHashMap<>() : Page.read(file);
+        double seconds = (System.nanoTime() - start) * 1e-9;
+        if (only.isEmpty()) {
+            e.figure("total.seconds", seconds);
+            e.figure("total.minutes", Math.ceil(seconds / 60));
+        }
+        for (String f : e.figures) {
+            int eq = f.indexOf(" = ");
+            all.put(f.substring(0, eq), f.substring(eq + 3));
+        }
+        List<String> lines = new ArrayList<>();
+        all.forEach((k, v) -> lines.add(k + " = " + v));
+        Files.write(file, lines);
+        Page.write(out.resolve("page.md.in"), all, root.resolve("docs").resolve("experiments.md"));
+        System.err.printf(Locale.ROOT, "experiments: wrote %s and docs/experiments.md after %.0f s%n", file, seconds);
     }
 
     // ---- helpers ------------------------------------------------------------------------------
@@ -140,6 +153,15 @@ public final class Experiments {
             sum += d * d;
         }
         return Math.sqrt(sum / (2.0 * x.length));
+    }
+
+    /** The image with every value clamped to [0, 1], as a PNG shows it (before the sRGB curve). */
+    private static Image clamped(Image img) {
+        float[] v = img.rgb().clone();
+        for (int i = 0; i < v.length; i++) {
+            v[i] = Math.min(1, Math.max(0, v[i]));
+        }
+        return new Image(img.width(), img.height(), v);
     }
 
     private static double rmse(Image a, Image ref) {
@@ -190,13 +212,16 @@ public final class Experiments {
 
     // ---- 1. intersection ---------------------------------------------------------------------
 
-    /** Nanoseconds per ray–sphere and ray–triangle test (rays aimed near the primitive, about half hit), and the two roots of the sphere. */
+    private static final java.lang.management.ThreadMXBean CPU = java.lang.management.ManagementFactory.getThreadMXBean();
+
+    /** CPU nanoseconds per ray–sphere and ray–triangle test (rays aimed near the primitive, about half hit), and the two roots of the sphere. */
     private void intersection() throws Exception {
         Scene sphereScene = scene("cornell-sphere.json");
         Geometry g = World.of(sphereScene).geometry();
         int sphere = g.triangleCount();                // the first sphere, after the triangles
         int triangle = 0;
         int rays = quick ? 1 << 20 : 1 << 22;
+        figure("e1.rounds", rays);
         for (int[] prim : new int[][] {{sphere}, {triangle}}) {
             var box = new dev.strahl.geometry.Aabb();
             g.includeBounds(prim[0], box);
@@ -221,7 +246,8 @@ public final class Experiments {
             double best = Double.POSITIVE_INFINITY;
             for (int round = 0; round < 7; round++) {
                 hits = 0;
-                long t0 = System.nanoTime();
+                // CPU time of this thread, not wall time: on a shared machine the thread is not always running
+                long t0 = CPU.getCurrentThreadCpuTime();
                 for (int i = 0; i < rays; i++) {
                     Ray r = pool[i & 4095];
                     ray.set(r.o, r.d, Double.POSITIVE_INFINITY);
@@ -232,7 +258,7 @@ public final class Experiments {
                         hits++;
                     }
                 }
-                best = Math.min(best, (System.nanoTime() - t0) / (double) rays);
+                best = Math.min(best, (CPU.getCurrentThreadCpuTime() - t0) / (double) rays);
             }
             String what = prim[0] == sphere ? "sphere" : "triangle";
             figure("e1." + what + ".ns_per_test", best);
@@ -288,30 +314,43 @@ public final class Experiments {
     private void softShadows() throws Exception {
         Scene box = scene("cornell-box.json");
         Scene small = SceneLoader.load(out.resolve("scenes").resolve("cornell-small-light.json"));
-        RenderSettings direct = settings(256, 1).withIntegrator(IntegratorKind.DIRECT);
+        // Whitted: light sampling alone at diffuse hits, n shadow rays each (the direct integrator
+        // adds one BSDF sample by MIS, whose noise n does not reduce); no delta surfaces here.
+        RenderSettings direct = settings(256, 1).withIntegrator(IntegratorKind.WHITTED);
         picture(render(small, direct), "e3-hard-small-light");
         for (int n : new int[] {1, 2, 100}) {
             Run run = render(box, direct.withLightSamples(n));
             picture(run, "e3-soft-" + n + "-light-samples");
             figure("e3.light_samples" + n + ".seconds", run.stats().seconds());
         }
-        // Noise against shadow rays, one camera ray per pixel as in the talk: RMSE from seed pairs, 128².
+        // Noise against shadow rays, one camera ray per pixel as in the talk (128²). Two errors:
+        // (a) of the whole render, from pairs of seeds: the pixel position is random too;
+        // (b) of the shadow rays alone: renders with the same seed share each pixel's position and
+        //     their first shadow rays (the dimensions are laid out by construction), so against a
+        //     render with N = 400 shadow rays, Var(mean_n - mean_N) = sigma^2 (1/n - 1/N).
         int[] counts = {1, 2, 4, 8, 16, 32, 100};
-        double[] x = new double[counts.length], y = new double[counts.length];
+        int reference = 400;
+        RenderSettings base = settings(128, 1).withIntegrator(IntegratorKind.WHITTED).withSeed(1);
+        Image ref = render(box, base.withLightSamples(reference)).image();
+        double[] x = new double[counts.length], y = new double[counts.length], pair = new double[counts.length];
         for (int i = 0; i < counts.length; i++) {
-            RenderSettings s = settings(128, 1).withIntegrator(IntegratorKind.DIRECT).withLightSamples(counts[i]);
+            RenderSettings s = base.withLightSamples(counts[i]);
+            Image first = render(box, s).image(), second = render(box, s.withSeed(2)).image();
             x[i] = counts[i];
-            y[i] = rmseOfPair(render(box, s.withSeed(1)).image(), render(box, s.withSeed(2)).image());
-            figure("e3.light_samples" + counts[i] + ".rmse", y[i]);
+            pair[i] = rmseOfPair(first, second);
+            y[i] = rmse(first, ref) / Math.sqrt(1 - counts[i] / (double) reference);
+            figure("e3.light_samples" + counts[i] + ".rmse", pair[i]);
+            figure("e3.light_samples" + counts[i] + ".rmse_shadow_rays", y[i]);
         }
-        figure("e3.slope", logLogSlope(Arrays.copyOfRange(x, 0, 4), Arrays.copyOfRange(y, 0, 4)));
-        figure("e3.slope_all", logLogSlope(x, y));
+        figure("e3.slope", logLogSlope(x, y));
+        figure("e3.slope_whole_render", logLogSlope(x, pair));
         double[] ideal = new double[counts.length];
         for (int i = 0; i < counts.length; i++) {
             ideal[i] = y[0] / Math.sqrt(x[i]);
         }
         Charts.logLog(out.resolve("e3-light-samples.png"), "Soft shadows: noise against shadow rays per pixel", "shadow rays per pixel",
-                "RMSE (1 camera ray per pixel)", List.of(new Series("measured", x, y, false), new Series("N^-1/2", x, ideal, true)));
+                "RMSE (1 camera ray per pixel)", List.of(new Series("the shadow rays' error", x, y, false),
+                        new Series("the whole render's error", x, pair, false), new Series("N^-1/2", x, ideal, true)));
     }
 
     // ---- 4. global illumination ---------------------------------------------------------------
@@ -339,12 +378,12 @@ public final class Experiments {
 
     private void convergence() throws Exception {
         Scene box = scene("cornell-box.json");
-        int size = 32;
-        int[] spps = quick ? new int[] {8, 32, 128, 512} : new int[] {8, 32, 128, 512, 2048, 8192};
+        int size = 24;
+        int[] spps = quick ? new int[] {8, 32, 128, 512} : new int[] {8, 32, 128, 512, 2048};
         List<Series> series = new ArrayList<>();
         for (String sampler : new String[] {"stratified", "independent"}) {
             System.setProperty("strahl.sampler", sampler);        // read by each new render job
-            double[] x = new double[spps.length], y = new double[spps.length];
+            double[] x = new double[spps.length], y = new double[spps.length], yc = new double[spps.length];
             for (int i = 0; i < spps.length; i++) {
                 RenderSettings s = settings(size, spps[i]);
                 Run a = render(box, s.withSeed(1));
@@ -352,11 +391,16 @@ public final class Experiments {
                 x[i] = spps[i];
                 y[i] = rmseOfPair(a.image(), b.image());
                 figure("e5." + sampler + ".spp" + spps[i] + ".rmse", y[i]);
+                figure("e5." + sampler + ".spp" + spps[i] + ".rmse_clamped", rmseOfPair(clamped(a.image()), clamped(b.image())));
+                yc[i] = rmseOfPair(clamped(a.image()), clamped(b.image()));
                 figure("e5." + sampler + ".spp" + spps[i] + ".seconds", a.stats().seconds());
             }
             double slope = logLogSlope(x, y);
             figure("e5." + sampler + ".slope", slope);
             figure("e5." + sampler + ".rmse_ratio_per_4x", Math.pow(4, slope));
+            double slopeClamped = logLogSlope(x, yc);
+            figure("e5." + sampler + ".slope_clamped", slopeClamped);
+            figure("e5." + sampler + ".rmse_ratio_per_4x_clamped", Math.pow(4, slopeClamped));
             series.add(new Series(sampler + " (slope " + String.format(Locale.ROOT, "%.3f", slope) + ")", x, y, false));
         }
         System.clearProperty("strahl.sampler");
@@ -369,7 +413,7 @@ public final class Experiments {
                 "RMSE (from pairs of seeds)", series);
         // The talk's three pictures.
         for (int spp : quick ? new int[] {10, 230} : new int[] {10, 230, 2000}) {
-            Run run = render(box, settings(128, spp));
+            Run run = render(box, settings(64, spp));
             picture(run, "e7-path-" + spp + "spp");
             figure("e7.spp" + spp + ".seconds", run.stats().seconds());
         }
@@ -379,9 +423,10 @@ public final class Experiments {
 
     private void hemisphere() throws Exception {
         Scene box = scene("cornell-box.json");
+        double[] rmses = new double[2];
         for (HemisphereSampling h : HemisphereSampling.values()) {
             String name = h.name().toLowerCase(Locale.ROOT);
-            RenderSettings s = settings(128, 100).withHemisphere(h);
+            RenderSettings s = settings(64, 100).withHemisphere(h);
             Run a = render(box, s.withSeed(1));
             Run b = render(box, s.withSeed(2));
             picture(a, "e6-" + name + "-100spp");
@@ -390,7 +435,10 @@ public final class Experiments {
             figure("e6." + name + ".rmse", rmse);
             figure("e6." + name + ".seconds", seconds);
             figure("e6." + name + ".efficiency", 1 / (rmse * rmse * seconds));
+            rmses[h.ordinal()] = rmse;
         }
+        figure("e6.uniform_over_cosine", rmses[1] / rmses[0]);
+        figure("e6.uniform_over_cosine_squared", (rmses[1] / rmses[0]) * (rmses[1] / rmses[0]));
     }
 
     // ---- 8. acceleration and profiles -----------------------------------------------------------
@@ -400,13 +448,13 @@ public final class Experiments {
         Map<String, Map<String, Double>> shares = new LinkedHashMap<>();
         Map<String, Map<String, Double>> speed = new LinkedHashMap<>();
         timeAccel("cornell", box, settings(128, 16), speed);
-        profile("Cornell Box, BVH", box, settings(128, 64), shares);
-        profile("Cornell Box, none", box, settings(128, 64).withAccel(Acceleration.NONE), shares);
+        profile("Cornell Box, BVH", box, settings(64, 64), shares);
+        profile("Cornell Box, none", box, settings(64, 64).withAccel(Acceleration.NONE), shares);
         if (bunny != null) {
             Scene b = SceneLoader.load(bunny);
             figure("e8.bunny.triangles", World.of(b).geometry().triangleCount());
             timeAccel("bunny", b, settings(64, 2), speed);
-            profile("bunny, BVH", b, settings(128, 64), shares);
+            profile("bunny, BVH", b, settings(64, 64), shares);
             profile("bunny, none", b, settings(48, 2).withAccel(Acceleration.NONE), shares);
         }
         figure("e8.cornell.triangles", World.of(box).geometry().triangleCount());
@@ -521,7 +569,7 @@ public final class Experiments {
         b.camera(new Camera(new Vector3d(0, 0, 6), new Vector3d(0, 0, 0), new Vector3d(0, 1, 0), 45));
         b.environment(new Rgb(1, 1, 1));
         Scene scene = b.build();
-        RenderSettings s = settings(128, 16);
+        RenderSettings s = settings(96, 16);
         double[] off = new double[3], on = new double[3];
         for (int i = 0; i < 3; i++) {
             off[i] = render(scene, s).stats().seconds();
@@ -532,6 +580,7 @@ public final class Experiments {
             }
         }
         figure("e8.culling.triangles", World.of(scene).geometry().triangleCount());
+        figure("e8.culling.triangles.per", sphere.triangleCount());
         figure("e8.culling.off.seconds", median(off));
         figure("e8.culling.on.seconds", median(on));
         figure("e8.culling.speedup", median(off) / median(on));
@@ -546,7 +595,7 @@ public final class Experiments {
             for (Schedule sc : Schedule.values()) {
                 double[] seconds = new double[3], idle = new double[3];
                 for (int i = 0; i < 3; i++) {
-                    Run run = render(box, settings(256, 32).withThreads(threads).withSchedule(sc));
+                    Run run = render(box, settings(128, 16).withThreads(threads).withSchedule(sc));
                     seconds[i] = run.stats().seconds();
                     idle[i] = run.stats().threadIdleSeconds();
                 }
@@ -559,6 +608,6 @@ public final class Experiments {
                 bars.computeIfAbsent("idle thread time, summed (s)", k -> new LinkedHashMap<>()).put(column, median(idle));
             }
         }
-        Charts.bars(out.resolve("e9-schedule.png"), "Cornell Box 256², 32 spp: stripes against tiles", "seconds", bars, false, false);
+        Charts.bars(out.resolve("e9-schedule.png"), "Cornell Box 128², 16 spp: stripes against tiles", "seconds", bars, false, false);
     }
 }
