@@ -42,12 +42,14 @@ public final class Bvh {
     private final int nodeCount;
     /** Whether box tests take the Vector API path ({@link SimdNodes}). */
     private final boolean simd;
+    /** Teaching option ({@code --accel none}): queries ignore the tree and test every primitive ({@link #bruteForce()}). */
+    private final boolean bruteForce;
 
     Bvh(Geometry geometry, float[] nodes, int nodeCount) {
-        this(geometry, nodes, nodeCount, SimdNodes.AVAILABLE);
+        this(geometry, nodes, nodeCount, SimdNodes.AVAILABLE, false);
     }
 
-    private Bvh(Geometry geometry, float[] nodes, int nodeCount, boolean simd) {
+    private Bvh(Geometry geometry, float[] nodes, int nodeCount, boolean simd, boolean bruteForce) {
         this.geometry = geometry;
         this.triangleCount = geometry.triangleCount();
         this.pos = geometry.positionArray();
@@ -56,6 +58,7 @@ public final class Bvh {
         this.nodes = nodes;
         this.nodeCount = nodeCount;
         this.simd = simd;
+        this.bruteForce = bruteForce;
     }
 
     /** The same tree with box tests on the Vector API path or not (for tests and benchmarks comparing the two). */
@@ -63,7 +66,22 @@ public final class Bvh {
         if (on && !SimdNodes.AVAILABLE) {
             throw new IllegalStateException("the Vector API path needs --add-modules jdk.incubator.vector");
         }
-        return new Bvh(geometry, nodes, nodeCount, on);
+        return new Bvh(geometry, nodes, nodeCount, on, bruteForce);
+    }
+
+    /**
+     * Teaching option ({@code --accel none}): the same primitives without the tree, every query
+     * testing every primitive in a loop, as a first ray tracer does (docs/experiments.md measures
+     * what the tree buys). The arithmetic is {@link Geometry}'s, which the tree's leaves share, so
+     * it finds the same hits; only the order in which primitives are tried differs.
+     */
+    public Bvh bruteForce() {
+        return new Bvh(geometry, nodes, nodeCount, simd, true);
+    }
+
+    /** Whether this is the brute-force loop of {@link #bruteForce()}. */
+    public boolean isBruteForce() {
+        return bruteForce;
     }
 
     /** Whether box tests use the Vector API (the JVM runs with {@code --add-modules jdk.incubator.vector}). */
@@ -163,8 +181,50 @@ public final class Bvh {
         if (nodeCount == 0) {
             return false;
         }
+        if (bruteForce) {
+            return everyPrimitive(ray, hit, stack, cullBackFaces);
+        }
         stack.prepare(ray);
         return closestHit(ray, hit, stack, cullBackFaces);
+    }
+
+    /**
+     * {@code --accel none}: the closest hit among all triangles, with the leaves' test and the
+     * thread's {@link RayTriangle} (nothing allocated per ray), then among all spheres.
+     */
+    private boolean everyPrimitive(Ray ray, Hit hit, TraversalStack stack, boolean cullBackFaces) {
+        stack.prepare(ray);
+        final RayTriangle tr = stack.triangle;
+        double tHit = ray.tMax;
+        int found = -1;
+        for (int prim = 0; prim < triangleCount; prim++) {
+            if (tr.hit(pos, tri, flags, prim, tHit, cullBackFaces)) {
+                tHit = tr.t;
+                found = prim;
+            }
+        }
+        int spheres = geometry.primitiveCount() - triangleCount;
+        if (spheres > 0) {
+            ray.tMax = tHit;
+            if (geometry.intersect(triangleCount, spheres, ray, hit, cullBackFaces)) {
+                tHit = hit.t;
+                found = hit.prim;
+            }
+        }
+        return finish(ray, hit, found, tHit, tr);
+    }
+
+    /** {@code --accel none}: whether any primitive blocks the ray, tested one after another. */
+    private boolean anyPrimitive(Ray ray, TraversalStack stack) {
+        stack.prepare(ray);
+        final RayTriangle tr = stack.triangle;
+        for (int prim = 0; prim < triangleCount; prim++) {
+            if (tr.hit(pos, tri, flags, prim, ray.tMax, false)) {
+                return true;
+            }
+        }
+        int spheres = geometry.primitiveCount() - triangleCount;
+        return spheres > 0 && geometry.occludes(triangleCount, spheres, ray);
     }
 
     /**
@@ -265,6 +325,9 @@ public final class Bvh {
     public boolean occluded(Ray ray, TraversalStack stack) {
         if (nodeCount == 0) {
             return false;
+        }
+        if (bruteForce) {
+            return anyPrimitive(ray, stack);
         }
         stack.prepare(ray);
         return anyHit(ray, stack);

@@ -7,12 +7,15 @@ import dev.strahl.io.image.ImageLimits;
 import dev.strahl.io.json.SceneFile;
 import dev.strahl.io.json.SceneSettings;
 import dev.strahl.io.text.Units;
+import dev.strahl.render.Acceleration;
 import dev.strahl.render.CheckpointException;
 import dev.strahl.render.PhotonParameters;
+import dev.strahl.render.RenderCluster;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
+import dev.strahl.render.Schedule;
 import dev.strahl.scene.Camera;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
@@ -27,7 +30,6 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import java.util.Locale;
-import dev.strahl.render.RenderCluster;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
 import org.joml.Vector3d;
@@ -98,6 +100,17 @@ final class RenderCommand implements Callable<Integer> {
 
     @Option(names = "--cull-back-faces", description = "Skip back faces of closed meshes for camera and bounce rays.")
     boolean cullBackFaces;
+
+    // Teaching options (docs/experiments.md): what a first ray tracer did, to measure what strahl does instead.
+    @Option(names = "--accel", defaultValue = "bvh", paramLabel = "bvh|none",
+            description = "Teaching option: none tests every ray against every primitive (no BVH), to measure what the BVH buys; "
+                    + "same image, many times slower (default: ${DEFAULT-VALUE}).")
+    Acceleration accel;
+
+    @Option(names = "--schedule", defaultValue = "tiles", paramLabel = "tiles|stripes",
+            description = "Teaching option: stripes gives each of n threads one horizontal stripe of the image instead of "
+                    + "32x32 tiles taken by whichever thread is free; same image, threads wait more (default: ${DEFAULT-VALUE}).")
+    Schedule schedule;
 
     @Option(names = "--look-from", paramLabel = "X,Y,Z", converter = Vectors.class, description = "Camera position.")
     Vector3d lookFrom;
@@ -240,7 +253,7 @@ final class RenderCommand implements Callable<Integer> {
     private RenderSettings settings() {
         return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0,
                 transport.integrator, transport.lightSamples, timeLimit == null ? Duration.ZERO : timeLimit,
-                new PhotonParameters(transport.photons, transport.photonRadius));
+                new PhotonParameters(transport.photons, transport.photonRadius), accel, schedule);
     }
 
     /**

@@ -42,6 +42,9 @@ final class StatsFile {
                 }
                 json.writeEndArray();
             }
+            json.writeNumberField("thread_idle_seconds", stats.threadIdleSeconds());
+            json.writeStringField("accel", settings.accel().name().toLowerCase(java.util.Locale.ROOT));
+            json.writeStringField("schedule", settings.schedule().name().toLowerCase(java.util.Locale.ROOT));
             json.writeEndObject();
         });
     }

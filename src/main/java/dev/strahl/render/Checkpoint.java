@@ -54,7 +54,7 @@ final class Checkpoint {
     static final int VERSION = 1;
     private static final byte[] MAGIC = "STRAHLCK".getBytes(StandardCharsets.US_ASCII);
     private static final int PIXEL_BYTES = 4 + 3 * 8;
-    private static final Set<String> NOT_IN_FINGERPRINT = Set.of("samplesPerPixel", "threads", "samplesPerPass", "timeLimit");
+    private static final Set<String> NOT_IN_FINGERPRINT = Set.of("samplesPerPixel", "threads", "samplesPerPass", "timeLimit", "schedule");
 
     private final byte[] sceneDigest;
     private final String settingsKey;

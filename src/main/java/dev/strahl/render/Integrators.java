@@ -11,7 +11,9 @@ import dev.strahl.world.World;
 final class Integrators {
     private Integrators() {}
 
-    static Integrator create(World world, RenderSettings s) {
+    static Integrator create(World scene, RenderSettings s) {
+        // the teaching option --accel none: the same world, every ray against every primitive
+        World world = s.accel() == Acceleration.NONE ? scene.bruteForce() : scene;
         boolean uniform = s.hemisphere() == HemisphereSampling.UNIFORM;
         return switch (s.integrator()) {
             case PATH -> new PathTracer(world, s.maxDepth(), uniform, s.cullBackFaces(), PathTracer.Strategy.MIS);

@@ -34,6 +34,11 @@ interface PassRunner {
 
     long rayCount();
 
+    /** Seconds, summed over threads, that threads waited at the ends of passes for the others (0 where not measured: a cluster). */
+    default double idleSeconds() {
+        return 0;
+    }
+
     /** Threads that render (of all members, for a cluster). */
     int threads();
 

@@ -77,7 +77,7 @@ public final class RenderJob implements AutoCloseable {
         var rays = new PinholeRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), settings.width(), settings.height());
         int number = JOB_NUMBER.incrementAndGet();
         this.workers = cluster != null ? cluster.apply(film)
-                : new RenderWorkers(film, rays, integrator, settings.seed(), settings.effectiveThreads(), "strahl-render-" + number);
+                : new RenderWorkers(film, rays, integrator, settings.seed(), settings.effectiveThreads(), settings.schedule(), "strahl-render-" + number);
         this.completedSpp = Math.min(film.minSampleCount(), settings.samplesPerPixel());   // 0, unless the film was restored
         this.restoredSamples = film.totalSamples();
     }
@@ -415,6 +415,6 @@ public final class RenderJob implements AutoCloseable {
 
     private RenderStats stats() {
         return new RenderStats(elapsedSeconds(), workers.samplesDone(), workers.rayCount(), completedSpp, workers.threads(), workers.cancelled(),
-                invalidSamples());
+                invalidSamples(), workers.idleSeconds());
     }
 }

@@ -25,10 +25,13 @@ import java.util.function.Consumer;
  * @param lightSamples    shadow rays per diffuse or glossy hit for the direct and Whitted integrators
  * @param timeLimit       stop at the end of the pass during which this much time has passed; zero for no limit
  * @param photons         the photon mapper's photons per iteration and initial gather radius
+ * @param accel           teaching option: the BVH, or none (every ray against every primitive)
+ * @param schedule        teaching option: tiles from a shared counter, or one stripe per thread
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, long seed, int threads,
                              HemisphereSampling hemisphere, boolean cullBackFaces, int samplesPerPass,
-                             IntegratorKind integrator, int lightSamples, Duration timeLimit, PhotonParameters photons) {
+                             IntegratorKind integrator, int lightSamples, Duration timeLimit, PhotonParameters photons,
+                             Acceleration accel, Schedule schedule) {
 
     /** Largest accepted film edge, to refuse absurd sizes before allocating. */
     public static final int MAX_SIZE = 1 << 15;
@@ -49,6 +52,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * @param lightSamples    shadow rays per diffuse or glossy hit, at least 1
      * @param timeLimit       stop at the end of the pass that crosses this time; zero for no limit
      * @param photons         the photon mapper's parameters
+     * @param accel           how rays find primitives: the BVH, or none (a teaching option)
+     * @param schedule        how threads share the image: tiles, or stripes (a teaching option)
      */
     public RenderSettings {
         if (width <= 0 || height <= 0) {
@@ -76,6 +81,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         Objects.requireNonNull(integrator, "integrator");
         Objects.requireNonNull(timeLimit, "timeLimit");
         Objects.requireNonNull(photons, "photons");
+        Objects.requireNonNull(accel, "accel");
+        Objects.requireNonNull(schedule, "schedule");
         if (timeLimit.isNegative()) {
             throw new IllegalArgumentException("time limit must not be negative, got " + timeLimit);
         }
@@ -83,14 +90,14 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
 
     /**
      * 512×512, 64 spp, unbounded depth, seed 0, all processors, cosine sampling, no culling,
-     * automatic passes, path tracing with one light sample, no time limit, and the photon mapper's
-     * {@linkplain PhotonParameters#defaults() defaults}.
+     * automatic passes, path tracing with one light sample, no time limit, the photon mapper's
+     * {@linkplain PhotonParameters#defaults() defaults}, the BVH and tiles.
      *
      * @return the defaults
      */
     public static RenderSettings defaults() {
         return new RenderSettings(512, 512, 64, -1, 0, 0, HemisphereSampling.COSINE, false, 0, IntegratorKind.PATH, 1, Duration.ZERO,
-                PhotonParameters.defaults());
+                PhotonParameters.defaults(), Acceleration.BVH, Schedule.TILES);
     }
 
     /**
@@ -218,6 +225,26 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
     }
 
     /**
+     * These settings with another acceleration: a teaching option, see {@link Acceleration}.
+     *
+     * @param a the BVH (the default) or none
+     * @return a new settings object
+     */
+    public RenderSettings withAccel(Acceleration a) {
+        return edit(e -> e.accel = a);
+    }
+
+    /**
+     * These settings with another way of sharing the image among threads: a teaching option, see {@link Schedule}.
+     *
+     * @param s tiles (the default) or stripes
+     * @return a new settings object
+     */
+    public RenderSettings withSchedule(Schedule s) {
+        return edit(e -> e.schedule = s);
+    }
+
+    /**
      * The thread count to use.
      *
      * @return {@link #threads()}, or the available processors when it is 0
@@ -231,7 +258,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         Fields f = new Fields(this);
         change.accept(f);
         return new RenderSettings(f.width, f.height, f.samplesPerPixel, f.maxDepth, f.seed, f.threads, f.hemisphere, f.cullBackFaces,
-                f.samplesPerPass, f.integrator, f.lightSamples, f.timeLimit, f.photons);
+                f.samplesPerPass, f.integrator, f.lightSamples, f.timeLimit, f.photons, f.accel, f.schedule);
     }
 
     /** The components as mutable fields, for {@link #edit}. */
@@ -243,6 +270,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         IntegratorKind integrator;
         Duration timeLimit;
         PhotonParameters photons;
+        Acceleration accel;
+        Schedule schedule;
 
         Fields(RenderSettings s) {
             width = s.width;
@@ -258,6 +287,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
             lightSamples = s.lightSamples;
             timeLimit = s.timeLimit;
             photons = s.photons;
+            accel = s.accel;
+            schedule = s.schedule;
         }
     }
 }

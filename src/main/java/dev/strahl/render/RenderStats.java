@@ -10,9 +10,11 @@ package dev.strahl.render;
  * @param threads         worker threads used
  * @param cancelled       whether the render was cancelled before reaching its sample count (a time limit is not a cancellation)
  * @param invalidSamples  samples whose radiance was NaN or infinite and so was dropped
+ * @param threadIdleSeconds summed over the threads: how long each, having finished its part of a
+ *                        pass, waited for the last thread to finish it (this session's passes only)
  */
 public record RenderStats(double seconds, long samples, long rays, int samplesPerPixel, int threads,
-                          boolean cancelled, long invalidSamples) {
+                          boolean cancelled, long invalidSamples, double threadIdleSeconds) {
 
     /**
      * Camera samples per second of wall-clock time.

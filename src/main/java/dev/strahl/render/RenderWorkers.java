@@ -22,7 +22,8 @@ import java.util.function.Consumer;
 
 /**
  * The threads of one render job and what each owns: a fixed pool whose workers take
- * {@value Film#TILE}-pixel tiles from an atomic counter and add a pass's samples of each pixel in
+ * {@value Film#TILE}-pixel tiles from an atomic counter (or, with the teaching option
+ * {@link Schedule#STRIPES}, each renders one horizontal stripe) and add a pass's samples of each pixel in
  * index order, with the random numbers of (seed, pixel, sample index) alone; and the same
  * threads for an integrator's per-sample preparation ({@link Parallel}).
  *
@@ -38,6 +39,9 @@ final class RenderWorkers implements Parallel, PassRunner {
     private final WorkerState[] workers;
     private final AtomicLong samplesDone = new AtomicLong();
     private final AtomicLong invalidSamples = new AtomicLong();
+    /** Summed over threads and passes: how long a thread that had finished its part of a pass waited for the last one. */
+    private final AtomicLong idleNanos = new AtomicLong();
+    private final Schedule schedule;
     private volatile boolean cancelled;
     /** Guards {@link #holds} and {@link #busy}; workers wait on it while a hold is on. */
     private final Object gate = new Object();
@@ -50,9 +54,10 @@ final class RenderWorkers implements Parallel, PassRunner {
         return !"independent".equals(System.getProperty("strahl.sampler"));
     }
 
-    RenderWorkers(Film film, PinholeRays cameraRays, Integrator integrator, long seed, int threads, String name) {
+    RenderWorkers(Film film, PinholeRays cameraRays, Integrator integrator, long seed, int threads, Schedule schedule, String name) {
         this.film = film;
         this.cameraRays = cameraRays;
+        this.schedule = schedule;
         boolean stratified = stratifiedSampler();
         AtomicInteger workerNumber = new AtomicInteger();
         this.pool = Executors.newFixedThreadPool(threads, r -> {
@@ -62,7 +67,7 @@ final class RenderWorkers implements Parallel, PassRunner {
         });
         this.workers = new WorkerState[threads];
         for (int i = 0; i < threads; i++) {
-            workers[i] = new WorkerState(integrator.newWorker(), newSampler(stratified, seed));
+            workers[i] = new WorkerState(i, integrator.newWorker(), newSampler(stratified, seed));
         }
     }
 
@@ -148,6 +153,11 @@ final class RenderWorkers implements Parallel, PassRunner {
     }
 
     @Override
+    public double idleSeconds() {
+        return idleNanos.get() * 1e-9;
+    }
+
+    @Override
     public long rayCount() {
         long rays = 0;
         for (WorkerState w : workers) {
@@ -165,7 +175,27 @@ final class RenderWorkers implements Parallel, PassRunner {
     @Override
     public void renderPass(int firstSample, int endSample) throws InterruptedException, ExecutionException {
         AtomicInteger nextTile = new AtomicInteger();
-        onEveryThread(w -> renderTiles(w, nextTile, firstSample, endSample));
+        try {
+            onEveryThread(w -> {
+                if (schedule == Schedule.STRIPES) {
+                    renderStripe(w, firstSample, endSample);
+                } else {
+                    renderTiles(w, nextTile, firstSample, endSample);
+                }
+                w.finished = System.nanoTime();
+            });
+        } finally {
+            // Idle time: each thread from its own end of the pass to the last thread's end.
+            long last = 0;
+            for (WorkerState w : workers) {
+                last = Math.max(last, w.finished);
+            }
+            long idle = 0;
+            for (WorkerState w : workers) {
+                idle += last - w.finished;
+            }
+            idleNanos.addAndGet(idle);
+        }
     }
 
     /**
@@ -240,31 +270,47 @@ final class RenderWorkers implements Parallel, PassRunner {
         for (int tile = nextTile.getAndIncrement(); tile < tileCount && !cancelled; tile = nextTile.getAndIncrement()) {
             int x0 = (tile % tilesX) * Film.TILE;
             int y0 = (tile / tilesX) * Film.TILE;
-            int x1 = Math.min(x0 + Film.TILE, film.width());
-            int y1 = Math.min(y0 + Film.TILE, film.height());
-            long invalid = 0;
-            for (int y = y0; y < y1 && !cancelled; y++) {
-                long rowSamples = 0;
-                for (int x = x0; x < x1; x++) {
-                    int pixel = film.pixelIndex(x, y);
-                    // a restored film may hold more samples in some pixels: they go on from there
-                    int s0 = Math.max(firstSample, film.sampleCountAt(pixel));
-                    rowSamples += Math.max(0, endSample - s0);
-                    for (int s = s0; s < endSample; s++) {
-                        if (sample(w, cameraRays, x, y, s)) {
-                            film.add(pixel, w.radiance.r, w.radiance.g, w.radiance.b);
-                        } else {
-                            film.add(pixel, 0, 0, 0);
-                            invalid++;
-                        }
+            renderRect(w, x0, y0, Math.min(x0 + Film.TILE, film.width()), Math.min(y0 + Film.TILE, film.height()), firstSample, endSample);
+            passGate();
+        }
+    }
+
+    /**
+     * Teaching option {@link Schedule#STRIPES}: thread i of n renders rows [i·h/n, (i+1)·h/n)
+     * and nothing else (it may hold still between rows, as between tiles).
+     */
+    private void renderStripe(WorkerState w, int firstSample, int endSample) {
+        int n = workers.length, h = film.height();
+        int y0 = (int) ((long) w.index * h / n), y1 = (int) ((long) (w.index + 1) * h / n);
+        for (int y = y0; y < y1 && !cancelled; y++) {
+            renderRect(w, 0, y, film.width(), y + 1, firstSample, endSample);
+            passGate();
+        }
+    }
+
+    /** Samples [firstSample, endSample) of every pixel of the rectangle [x0, x1) × [y0, y1). */
+    private void renderRect(WorkerState w, int x0, int y0, int x1, int y1, int firstSample, int endSample) {
+        long invalid = 0;
+        for (int y = y0; y < y1 && !cancelled; y++) {
+            long rowSamples = 0;
+            for (int x = x0; x < x1; x++) {
+                int pixel = film.pixelIndex(x, y);
+                // a restored film may hold more samples in some pixels: they go on from there
+                int s0 = Math.max(firstSample, film.sampleCountAt(pixel));
+                rowSamples += Math.max(0, endSample - s0);
+                for (int s = s0; s < endSample; s++) {
+                    if (sample(w, cameraRays, x, y, s)) {
+                        film.add(pixel, w.radiance.r, w.radiance.g, w.radiance.b);
+                    } else {
+                        film.add(pixel, 0, 0, 0);
+                        invalid++;
                     }
                 }
-                samplesDone.addAndGet(rowSamples);
             }
-            if (invalid > 0) {
-                invalidSamples.addAndGet(invalid);
-            }
-            passGate();
+            samplesDone.addAndGet(rowSamples);
+        }
+        if (invalid > 0) {
+            invalidSamples.addAndGet(invalid);
         }
     }
 
@@ -289,13 +335,17 @@ final class RenderWorkers implements Parallel, PassRunner {
 
     /** What one worker thread owns: reused for every sample, so the loop allocates nothing. */
     static final class WorkerState {
+        final int index;
+        /** When this thread finished its part of the last pass (System.nanoTime). */
+        long finished;
         final Integrator.Worker integrator;
         final Sampler sampler;
         final Sample2D filmPosition = new Sample2D();
         final Ray ray = new Ray();
         final MutableRgb radiance = new MutableRgb();
 
-        WorkerState(Integrator.Worker integrator, Sampler sampler) {
+        WorkerState(int index, Integrator.Worker integrator, Sampler sampler) {
+            this.index = index;
             this.integrator = integrator;
             this.sampler = sampler;
         }

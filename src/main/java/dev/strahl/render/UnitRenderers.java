@@ -66,6 +66,8 @@ final class UnitRenderers implements UnitService {
             out.writeLong(s.timeLimit().toNanos());
             out.writeInt(s.photons().photonsPerIteration());
             out.writeDouble(s.photons().initialRadius());
+            out.writeUTF(s.accel().name());
+            out.writeUTF(s.schedule().name());
             out.writeBoolean(stratified);
         } catch (IOException e) {
             throw new UncheckedIOException(e);
@@ -81,7 +83,8 @@ final class UnitRenderers implements UnitService {
             }
             var settings = new RenderSettings(in.readInt(), in.readInt(), in.readInt(), in.readInt(), in.readLong(), in.readInt(),
                     HemisphereSampling.valueOf(in.readUTF()), in.readBoolean(), in.readInt(), IntegratorKind.valueOf(in.readUTF()),
-                    in.readInt(), Duration.ofNanos(in.readLong()), new PhotonParameters(in.readInt(), in.readDouble()));
+                    in.readInt(), Duration.ofNanos(in.readLong()), new PhotonParameters(in.readInt(), in.readDouble()),
+                    Acceleration.valueOf(in.readUTF()), Schedule.valueOf(in.readUTF()));
             return new Decoded(settings, in.readBoolean());
         } catch (IOException e) {
             throw new IllegalArgumentException("unreadable settings: " + e.getMessage(), e);
@@ -107,7 +110,7 @@ final class UnitRenderers implements UnitService {
         public void render(WorkUnit unit) {
             RenderWorkers.WorkerState w = idle.poll();
             if (w == null) {
-                w = new RenderWorkers.WorkerState(integrator.newWorker(), RenderWorkers.newSampler(stratified, seed));
+                w = new RenderWorkers.WorkerState(0, integrator.newWorker(), RenderWorkers.newSampler(stratified, seed));
             }
             try {
                 long raysBefore = w.integrator.rayCount();

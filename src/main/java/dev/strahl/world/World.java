@@ -32,13 +32,26 @@ public final class World {
     private final double bvhBuildSeconds;
 
     private World(Geometry geometry, Bvh bvh, Bsdf[] bsdfs, Rgb[] emission, Rgb environment, double bvhBuildSeconds) {
+        this(geometry, bvh, new LightSampler(geometry, emission), bsdfs, emission, environment, bvhBuildSeconds);
+    }
+
+    private World(Geometry geometry, Bvh bvh, LightSampler lights, Bsdf[] bsdfs, Rgb[] emission, Rgb environment,
+                  double bvhBuildSeconds) {
         this.geometry = geometry;
         this.bvh = bvh;
         this.bsdfs = bsdfs;
         this.emission = emission;
         this.environment = environment;
         this.bvhBuildSeconds = bvhBuildSeconds;
-        this.lights = new LightSampler(geometry, emission);
+        this.lights = lights;
+    }
+
+    /**
+     * Teaching option ({@code --accel none}): this world with every ray tested against every
+     * primitive instead of the BVH ({@link Bvh#bruteForce()}); everything else shared.
+     */
+    public World bruteForce() {
+        return new World(geometry, bvh.bruteForce(), lights, bsdfs, emission, environment, bvhBuildSeconds);
     }
 
     /**

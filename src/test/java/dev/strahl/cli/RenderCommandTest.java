@@ -186,6 +186,8 @@ class RenderCommandTest {
             Arguments.of(List.of("--up", "0,1,NaN"), List.of("--up", "finite")),
             Arguments.of(List.of("--spp", "many"), List.of("--spp", "'many'")),
             Arguments.of(List.of("--hemisphere", "sphere"), List.of("--hemisphere", "'sphere'")),
+            Arguments.of(List.of("--accel", "kdtree"), List.of("--accel", "'kdtree'")),
+            Arguments.of(List.of("--schedule", "rows"), List.of("--schedule", "'rows'")),
             Arguments.of(List.of("--frobnicate"), List.of("Unknown option: '--frobnicate'")),
             Arguments.of(List.of("--max-dpeth", "3"), List.of("'--max-dpeth'", "did you mean --max-depth")));
     }
@@ -221,7 +223,8 @@ class RenderCommandTest {
         assertThat(r.code()).isZero();
         assertThat(r.out()).contains("Usage: strahl render").contains("SCENE").contains("--output")
                 .contains("--spp").contains("--max-depth").contains("--hemisphere").contains("cosine|uniform")
-                .contains("--look-from").contains("--fov").contains("--seed").contains("--quiet");
+                .contains("--look-from").contains("--fov").contains("--seed").contains("--quiet")
+                .contains("--accel").contains("bvh|none").contains("--schedule").contains("tiles|stripes").contains("Teaching option");
         assertThat(r.err()).isEmpty();
     }
 
@@ -297,6 +300,17 @@ class RenderCommandTest {
         Image c = renderPfm(CORNELL, "c.pfm", "--seed", "6");
         assertThat(b.rgb()).containsExactly(a.rgb());
         assertThat(c.rgb()).isNotEqualTo(a.rgb());
+    }
+
+    /** The teaching options change the work, not the image; --stats reports them and the threads' idle time. */
+    @Test
+    void teachingOptionsGiveTheSameImageAndAreReportedInTheStats() throws IOException {
+        Image a = renderPfm(CORNELL, "a.pfm", "--seed", "5");
+        Image b = renderPfm(CORNELL, "b.pfm", "--seed", "5", "--accel", "none", "--schedule", "stripes", "--threads", "3",
+                "--stats", out.resolve("b.json").toString());
+        assertThat(b.rgb()).containsExactly(a.rgb());
+        String json = Files.readString(out.resolve("b.json"));
+        assertThat(json).contains("\"accel\" : \"none\"").contains("\"schedule\" : \"stripes\"").contains("\"thread_idle_seconds\" : ");
     }
 
     @Test

@@ -1,0 +1,111 @@
+package dev.strahl.render;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import dev.strahl.geometry.Ray;
+import dev.strahl.image.Image;
+import dev.strahl.integrator.Integrator;
+import dev.strahl.io.SceneLoader;
+import dev.strahl.math.MutableRgb;
+import dev.strahl.sampling.Sampler;
+import dev.strahl.scene.Scene;
+import dev.strahl.testing.Renders;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The teaching options {@code --accel none} and {@code --schedule stripes} change how the image
+ * is computed, never the image: the same bits as the defaults. Stripes really are one stripe per
+ * thread, and the idle time they cause is counted.
+ */
+class TeachingOptionsTest {
+    private static final RenderSettings SETTINGS = RenderSettings.defaults().withSize(70, 50).withSamplesPerPixel(6).withSeed(42);
+
+    @Test
+    void defaultsAreTheBvhAndTiles() {
+        assertThat(RenderSettings.defaults().accel()).isEqualTo(Acceleration.BVH);
+        assertThat(RenderSettings.defaults().schedule()).isEqualTo(Schedule.TILES);
+        assertThat(SETTINGS.withAccel(Acceleration.NONE).withSchedule(Schedule.STRIPES))
+                .extracting(RenderSettings::accel, RenderSettings::schedule).containsExactly(Acceleration.NONE, Schedule.STRIPES);
+        assertThatThrownBy(() -> SETTINGS.withSchedule(null)).isInstanceOf(NullPointerException.class);
+        assertThatThrownBy(() -> SETTINGS.withAccel(null)).isInstanceOf(NullPointerException.class);
+    }
+
+    @Test
+    void bruteForceAndStripesGiveTheDefaultBits() throws Exception {
+        for (String file : List.of("scenes/cornell-box.json", "scenes/cornell-sphere.json")) {
+            Scene scene = SceneLoader.load(Path.of(file));
+            Image reference = Renders.render(scene, SETTINGS.withThreads(2));
+            assertThat(Renders.render(scene, SETTINGS.withThreads(2).withAccel(Acceleration.NONE)).rgb()).as(file).isEqualTo(reference.rgb());
+            for (int threads : new int[] {1, 3, 7}) {              // 50 rows in 3 and 7 stripes: unequal heights
+                assertThat(Renders.render(scene, SETTINGS.withThreads(threads).withSchedule(Schedule.STRIPES)).rgb())
+                        .as("%s, %d stripes", file, threads).isEqualTo(reference.rgb());
+            }
+        }
+    }
+
+    /** Records the camera rays' vertical directions each worker (each thread) saw. */
+    private static final class RowRecorder implements Integrator {
+        final List<double[]> ranges = new ArrayList<>();
+
+        @Override
+        public synchronized Worker newWorker() {
+            double[] range = {Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, 0};
+            ranges.add(range);
+            return new Worker() {
+                @Override
+                public void radiance(Ray ray, Sampler sampler, MutableRgb out) {
+                    double y = ray.d.y / ray.d.length();
+                    range[0] = Math.min(range[0], y);
+                    range[1] = Math.max(range[1], y);
+                    range[2]++;
+                    out.set(0, 0, 0);
+                }
+
+                @Override
+                public long rayCount() {
+                    return 0;
+                }
+            };
+        }
+    }
+
+    @Test
+    void eachThreadRendersOnlyItsOwnStripe() throws Exception {
+        Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
+        RowRecorder rows = new RowRecorder();
+        RenderSettings s = SETTINGS.withThreads(3).withSchedule(Schedule.STRIPES).withSize(16, 60).withSamplesPerPixel(2);
+        try (RenderJob job = TestJobs.start(scene, s, rows, new RenderListener() {})) {
+            RenderStats stats = job.awaitStats();
+            assertThat(stats.threadIdleSeconds()).isGreaterThanOrEqualTo(0);
+        }
+        assertThat(rows.ranges).hasSize(3);
+        List<double[]> sorted = new ArrayList<>(rows.ranges);
+        sorted.sort((a, b) -> Double.compare(a[0], b[0]));
+        for (int i = 0; i < 3; i++) {
+            assertThat(sorted.get(i)[2]).as("samples of stripe %d", i).isEqualTo(16 * 20 * 2);
+            if (i > 0) {
+                // The pixel filter reaches a little past a pixel's edge: neighbouring stripes may
+                // overlap by a fraction of a row, never by more than one (a stripe is 20 rows).
+                double row = (sorted.get(i)[1] - sorted.get(i)[0]) / 20;
+                assertThat(sorted.get(i - 1)[1] - sorted.get(i)[0]).as("overlap of stripes %d and %d", i - 1, i).isLessThan(row);
+            }
+        }
+    }
+
+    @Test
+    void oneThreadNeverWaitsAndStripesOnUnevenWorkDo() throws Exception {
+        Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
+        try (RenderJob job = RenderJob.start(scene, SETTINGS.withThreads(1).withSchedule(Schedule.STRIPES))) {
+            assertThat(job.awaitStats().threadIdleSeconds()).isZero();
+        }
+        // The Cornell Box from its camera: the top stripe (ceiling, light) and the bottom one (floor,
+        // boxes) cost different amounts, so with two stripes one thread waits for the other.
+        try (RenderJob job = RenderJob.start(scene, SETTINGS.withThreads(2).withSchedule(Schedule.STRIPES))) {
+            assertThat(job.awaitStats().threadIdleSeconds()).isPositive();
+        }
+    }
+}
