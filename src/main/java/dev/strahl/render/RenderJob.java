@@ -3,6 +3,7 @@ package dev.strahl.render;
 import dev.strahl.camera.PinholeRays;
 import dev.strahl.film.Film;
 import dev.strahl.image.Image;
+import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.scene.Camera;
 import dev.strahl.scene.Scene;
@@ -10,6 +11,7 @@ import dev.strahl.world.World;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Objects;
+import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
@@ -60,7 +62,8 @@ public final class RenderJob implements AutoCloseable {
                       Checkpoint.Restored restored) {
         this.settings = Objects.requireNonNull(settings, "settings");
         this.listener = Objects.requireNonNull(listener, "listener");
-        this.film = restored != null ? restored.film() : new Film(settings.width(), settings.height());
+        boolean features = !settings.aovs().isEmpty();
+        this.film = restored != null ? restored.film() : new Film(settings.width(), settings.height(), features);
         this.integrator = Objects.requireNonNull(integrator, "integrator");
         this.scene = Objects.requireNonNull(scene, "scene");
         this.identity = identity;
@@ -68,7 +71,9 @@ public final class RenderJob implements AutoCloseable {
         this.earlierSeconds = restored != null ? restored.seconds() : 0;
         Camera c = scene.camera();
         var rays = new PinholeRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), settings.width(), settings.height());
-        this.workers = new RenderWorkers(film, rays, integrator, settings.seed(), settings.effectiveThreads(), "strahl-render-" + JOB_NUMBER.incrementAndGet());
+        World world = World.of(scene);
+        this.workers = new RenderWorkers(film, rays, integrator, features ? () -> new FeatureTracer(world, settings.cullBackFaces()) : null,
+                settings.seed(), settings.effectiveThreads(), "strahl-render-" + JOB_NUMBER.incrementAndGet());
         this.completedSpp = Math.min(film.minSampleCount(), settings.samplesPerPixel());   // 0, unless the film was restored
         this.restoredSamples = film.totalSamples();
     }
@@ -289,6 +294,29 @@ public final class RenderJob implements AutoCloseable {
     public Image awaitCompletion() throws InterruptedException {
         awaitStats();
         return film.toImage();
+    }
+
+    /**
+     * Waits for the render to end and returns its image with the per-pixel variance and the
+     * feature buffers of the settings ({@link RenderSettings#aovs()}): what a {@link Denoiser}
+     * and the EXR output take.
+     *
+     * @return the buffers
+     * @throws InterruptedException if the waiting thread is interrupted
+     * @throws IllegalStateException if the render failed
+     */
+    public RenderBuffers awaitBuffers() throws InterruptedException {
+        awaitStats();
+        return buffers();
+    }
+
+    /** The film's buffers; consistent only while nothing renders into it. */
+    private RenderBuffers buffers() {
+        Set<Aov> aovs = settings.aovs();
+        return new RenderBuffers(film.toImage(), film.varianceImage(),
+                aovs.contains(Aov.ALBEDO) ? film.featureImage(0) : null,
+                aovs.contains(Aov.NORMAL) ? film.featureImage(3) : null,
+                aovs.contains(Aov.DEPTH) ? film.featureImage(6) : null);
     }
 
     /**

@@ -1,7 +1,10 @@
 package dev.strahl.render;
 
 import java.time.Duration;
+import java.util.Collections;
+import java.util.EnumSet;
 import java.util.Objects;
+import java.util.Set;
 import java.util.function.Consumer;
 
 /**
@@ -25,10 +28,12 @@ import java.util.function.Consumer;
  * @param lightSamples    shadow rays per diffuse or glossy hit for the direct and Whitted integrators
  * @param timeLimit       stop at the end of the pass during which this much time has passed; zero for no limit
  * @param photons         the photon mapper's photons per iteration and initial gather radius
+ * @param aovs            the feature buffers to keep beside the image (empty: none); see {@link Aov}
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, long seed, int threads,
                              HemisphereSampling hemisphere, boolean cullBackFaces, int samplesPerPass,
-                             IntegratorKind integrator, int lightSamples, Duration timeLimit, PhotonParameters photons) {
+                             IntegratorKind integrator, int lightSamples, Duration timeLimit, PhotonParameters photons,
+                             Set<Aov> aovs) {
 
     /** Largest accepted film edge, to refuse absurd sizes before allocating. */
     public static final int MAX_SIZE = 1 << 15;
@@ -49,6 +54,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * @param lightSamples    shadow rays per diffuse or glossy hit, at least 1
      * @param timeLimit       stop at the end of the pass that crosses this time; zero for no limit
      * @param photons         the photon mapper's parameters
+     * @param aovs            the feature buffers to keep; copied (iterated in the order of {@link Aov})
      */
     public RenderSettings {
         if (width <= 0 || height <= 0) {
@@ -76,6 +82,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         Objects.requireNonNull(integrator, "integrator");
         Objects.requireNonNull(timeLimit, "timeLimit");
         Objects.requireNonNull(photons, "photons");
+        aovs = aovs.isEmpty() ? Set.of() : Collections.unmodifiableSet(EnumSet.copyOf(aovs));
         if (timeLimit.isNegative()) {
             throw new IllegalArgumentException("time limit must not be negative, got " + timeLimit);
         }
@@ -83,14 +90,14 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
 
     /**
      * 512×512, 64 spp, unbounded depth, seed 0, all processors, cosine sampling, no culling,
-     * automatic passes, path tracing with one light sample, no time limit, and the photon mapper's
-     * {@linkplain PhotonParameters#defaults() defaults}.
+     * automatic passes, path tracing with one light sample, no time limit, the photon mapper's
+     * {@linkplain PhotonParameters#defaults() defaults}, and no feature buffers.
      *
      * @return the defaults
      */
     public static RenderSettings defaults() {
         return new RenderSettings(512, 512, 64, -1, 0, 0, HemisphereSampling.COSINE, false, 0, IntegratorKind.PATH, 1, Duration.ZERO,
-                PhotonParameters.defaults());
+                PhotonParameters.defaults(), Set.of());
     }
 
     /**
@@ -218,6 +225,16 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
     }
 
     /**
+     * These settings with other feature buffers.
+     *
+     * @param kept the feature buffers to keep beside the image; none for an empty set
+     * @return a new settings object
+     */
+    public RenderSettings withAovs(Set<Aov> kept) {
+        return edit(e -> e.aovs = kept);
+    }
+
+    /**
      * The thread count to use.
      *
      * @return {@link #threads()}, or the available processors when it is 0
@@ -231,7 +248,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         Fields f = new Fields(this);
         change.accept(f);
         return new RenderSettings(f.width, f.height, f.samplesPerPixel, f.maxDepth, f.seed, f.threads, f.hemisphere, f.cullBackFaces,
-                f.samplesPerPass, f.integrator, f.lightSamples, f.timeLimit, f.photons);
+                f.samplesPerPass, f.integrator, f.lightSamples, f.timeLimit, f.photons, f.aovs);
     }
 
     /** The components as mutable fields, for {@link #edit}. */
@@ -243,6 +260,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         IntegratorKind integrator;
         Duration timeLimit;
         PhotonParameters photons;
+        Set<Aov> aovs;
 
         Fields(RenderSettings s) {
             width = s.width;
@@ -258,6 +276,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
             lightSamples = s.lightSamples;
             timeLimit = s.timeLimit;
             photons = s.photons;
+            aovs = s.aovs;
         }
     }
 }

@@ -4,6 +4,7 @@ import dev.strahl.math.MutableRgb;
 import dev.strahl.camera.PinholeRays;
 import dev.strahl.film.Film;
 import dev.strahl.geometry.Ray;
+import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Parallel;
 import dev.strahl.sampling.IndependentSampler;
@@ -19,6 +20,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
+import java.util.function.Supplier;
 
 /**
  * The threads of one render job and what each owns: a fixed pool whose workers take
@@ -33,6 +35,7 @@ import java.util.function.Consumer;
  */
 final class RenderWorkers implements Parallel {
     private final Film film;
+    private final long seed;
     private final PinholeRays cameraRays;
     private final ExecutorService pool;
     private final WorkerState[] workers;
@@ -51,6 +54,19 @@ final class RenderWorkers implements Parallel {
     }
 
     RenderWorkers(Film film, PinholeRays cameraRays, Integrator integrator, long seed, int threads, String name) {
+        this(film, cameraRays, integrator, null, seed, threads, name);
+    }
+
+    /**
+     * Workers that also trace the feature buffers of every camera sample, when {@code features}
+     * makes a tracer per thread (the film must then keep features).
+     */
+    RenderWorkers(Film film, PinholeRays cameraRays, Integrator integrator, Supplier<FeatureTracer> features, long seed, int threads,
+                  String name) {
+        if (features != null && !film.hasFeatures()) {
+            throw new IllegalArgumentException("feature buffers need a film that keeps them");
+        }
+        this.seed = seed;
         this.film = film;
         this.cameraRays = cameraRays;
         boolean stratified = stratifiedSampler();
@@ -62,7 +78,8 @@ final class RenderWorkers implements Parallel {
         });
         this.workers = new WorkerState[threads];
         for (int i = 0; i < threads; i++) {
-            workers[i] = new WorkerState(integrator.newWorker(), stratified ? new StratifiedSampler(seed) : new IndependentSampler(seed));
+            workers[i] = new WorkerState(integrator.newWorker(), stratified ? new StratifiedSampler(seed) : new IndependentSampler(seed),
+                    features != null ? features.get() : null);
         }
     }
 
@@ -133,7 +150,7 @@ final class RenderWorkers implements Parallel {
     long rayCount() {
         long rays = 0;
         for (WorkerState w : workers) {
-            rays += w.integrator.rayCount();
+            rays += w.integrator.rayCount() + (w.features != null ? w.features.rayCount() : 0);
         }
         return rays;
     }
@@ -234,6 +251,14 @@ final class RenderWorkers implements Parallel {
                         w.sampler.startPixelSample(x, y, s);
                         w.sampler.getPixel2D(w.filmPosition);
                         cameraRays.generate(x + w.filmPosition.u1, y + w.filmPosition.u2, w.ray);
+                        if (w.features != null) {
+                            // before the integrator, which may change the ray; from streams of its own
+                            w.featureRay.o.set(w.ray.o);
+                            w.featureRay.d.set(w.ray.d);
+                            w.featureRay.tMax = w.ray.tMax;
+                            w.features.trace(w.featureRay, seed, x, y, s, w.featureValues);
+                            film.addFeatures(pixel, w.featureValues);
+                        }
                         w.integrator.radiance(w.ray, w.sampler, w.radiance);
                         if (w.radiance.isFinite()) {
                             film.add(pixel, w.radiance.r, w.radiance.g, w.radiance.b);
@@ -259,10 +284,14 @@ final class RenderWorkers implements Parallel {
         final Sample2D filmPosition = new Sample2D();
         final Ray ray = new Ray();
         final MutableRgb radiance = new MutableRgb();
+        final FeatureTracer features;
+        final Ray featureRay = new Ray();
+        final double[] featureValues = new double[FeatureTracer.CHANNELS];
 
-        WorkerState(Integrator.Worker integrator, Sampler sampler) {
+        WorkerState(Integrator.Worker integrator, Sampler sampler, FeatureTracer features) {
             this.integrator = integrator;
             this.sampler = sampler;
+            this.features = features;
         }
     }
 }
