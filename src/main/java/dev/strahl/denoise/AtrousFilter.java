@@ -19,17 +19,20 @@ import java.util.stream.IntStream;
  *       <ul>
  *         <li>normals: max(0, n·n')^{@value #NORMAL_POWER};</li>
  *         <li>depth: exp(−|z − z'| / ({@value #SIGMA_DEPTH} · |∇z| · d + 10⁻³ z)), with |∇z| the
- *             smaller one-sided difference per axis and d the tap's distance in pixels;</li>
+ *             larger of both pixels' gradients (each the smaller one-sided difference per axis) and
+ *             d the tap's distance in pixels (|Δx| + |Δy|);</li>
  *         <li>albedo: exp(−|a − a'|² / {@value #SIGMA_ALBEDO}²);</li>
- *         <li>luminance: exp(−|l − l'| / ({@value #SIGMA_LUMINANCE} · √(3×3 Gaussian of the variance) + ε));</li>
+ *         <li>luminance: exp(−|l − l'| / ({@value #SIGMA_LUMINANCE} · √(v + v') + ε)), v and v' the 3×3 Gaussian
+ *             of the variance at both pixels;</li>
  *       </ul>
  *       and the variance carried along as Σ w² var / (Σ w)², so that each pass sees how much noise
  *       is left.</li>
  *   <li>Remodulation by the same factor.</li>
  * </ol>
  * Pixels whose camera ray left the scene (normal zero) are filtered only with each other. The
- * weights are normalised, so a flat region keeps its mean: the filter blurs noise, it does not
- * shift colours. Without a variance (all zero), it is estimated from each pixel's 3×3
+ * weights are normalised and symmetric (what a pixel takes from a neighbour, the neighbour takes
+ * from it), so a region keeps its mean: the filter blurs noise, it does not shift colours and does
+ * not lose the energy of bright outliers. Without a variance (all zero), it is estimated from each pixel's 3×3
  * neighbourhood.
  *
  * <p>Rows are filtered in parallel on the common fork-join pool; every pixel's result depends
@@ -147,11 +150,18 @@ public final class AtrousFilter {
         }
         float[] or = new float[n], og = new float[n], ob = new float[n], ovar = new float[n];
         float[] smooth = new float[n];
+        float[] lum = new float[n];
+        float[] weights = new float[25 * n];
+        float[] total = new float[n];
         for (int level = 0; level < LEVELS; level++) {
             blurVariance(var, smooth);
+            for (int p = 0; p < n; p++) {
+                lum[p] = luminance(cr[p], cg[p], cb[p]);
+            }
             int step = 1 << level;
             float[] inR = cr, inG = cg, inB = cb, inV = var, outR = or, outG = og, outB = ob, outV = ovar;
-            IntStream.range(0, h).parallel().forEach(y -> pass(y, step, inR, inG, inB, inV, smooth, outR, outG, outB, outV));
+            IntStream.range(0, h).parallel().forEach(y -> weigh(y, step, lum, smooth, weights, total));
+            IntStream.range(0, h).parallel().forEach(y -> gather(y, step, inR, inG, inB, inV, weights, total, outR, outG, outB, outV));
             float[] t;
             t = cr; cr = or; or = t;
             t = cg; cg = og; og = t;
@@ -167,25 +177,29 @@ public final class AtrousFilter {
         return out;
     }
 
-    private void pass(int y, int step, float[] inR, float[] inG, float[] inB, float[] inV, float[] smoothVar,
-                      float[] outR, float[] outG, float[] outB, float[] outV) {
+    /**
+     * The weights of every tap around the pixels of row y, centred there, into
+     * {@code weights[25 p + k]} (k = 5 (j + 2) + (i + 2); zero outside the image), and their sum
+     * into {@code total[p]}.
+     */
+    private void weigh(int y, int step, float[] lum, float[] smoothVar, float[] weights, float[] total) {
         for (int x = 0; x < w; x++) {
             int p = y * w + x;
-            float l = luminance(inR[p], inG[p], inB[p]);
+            float l = lum[p];
             float lumScale = 1f / (SIGMA_LUMINANCE * (float) Math.sqrt(Math.max(0f, smoothVar[p])) + 1e-6f);
-            float zScale = hasDepth ? SIGMA_DEPTH * gradient[p] * step : 0;
             float zFloor = 1e-3f * depth[p] + 1e-6f;
+            float gradP = gradient[p];
             boolean m = miss[p];
-            double sw = 0, sr = 0, sg = 0, sb = 0, sv = 0;
+            float pnx = nx[p], pny = ny[p], pnz = nz[p], par = ar[p], pag = ag[p], pab = ab[p], pz = depth[p];
+            float sw = 0;
+            int k = 25 * p;
             for (int j = -2; j <= 2; j++) {
                 int yy = y + j * step;
-                if (yy < 0 || yy >= h) {
-                    continue;
-                }
                 float kj = KERNEL[j + 2];
-                for (int i = -2; i <= 2; i++) {
+                for (int i = -2; i <= 2; i++, k++) {
                     int xx = x + i * step;
-                    if (xx < 0 || xx >= w) {
+                    weights[k] = 0;
+                    if (xx < 0 || xx >= w || yy < 0 || yy >= h) {
                         continue;
                     }
                     int q = yy * w + xx;
@@ -196,42 +210,81 @@ public final class AtrousFilter {
                                 continue;
                             }
                             if (!m) {
-                                float d = nx[p] * nx[q] + ny[p] * ny[q] + nz[p] * nz[q];
+                                float d = pnx * nx[q] + pny * ny[q] + pnz * nz[q];
                                 if (d <= 0) {
                                     continue;
                                 }
-                                for (int k = 0; k < 7; k++) {    // d^128
+                                for (int r = 0; r < 7; r++) {    // d^128
                                     d *= d;
                                 }
                                 wgt *= d;
                             }
                         }
-                        float e = Math.abs(l - luminance(inR[q], inG[q], inB[q])) * lumScale;
+                        float e = Math.abs(l - lum[q]) * lumScale;
                         if (hasDepth) {
-                            e += Math.abs(depth[p] - depth[q]) / (zScale * (Math.abs(i) + Math.abs(j)) + zFloor);
+                            float zTolerance = SIGMA_DEPTH * Math.max(gradP, gradient[q]) * step * (Math.abs(i) + Math.abs(j));
+                            e += Math.abs(pz - depth[q]) / (zTolerance + Math.max(zFloor, 1e-3f * depth[q] + 1e-6f));
                         }
                         if (hasAlbedo) {
-                            float dr = ar[p] - ar[q], dg = ag[p] - ag[q], db = ab[p] - ab[q];
+                            float dr = par - ar[q], dg = pag - ag[q], db = pab - ab[q];
                             e += (dr * dr + dg * dg + db * db) * (1 / (SIGMA_ALBEDO * SIGMA_ALBEDO));
                         }
-                        if (e > 30) {
+                        if (e > 20) {
                             continue;
                         }
-                        wgt *= (float) Math.exp(-e);
+                        wgt *= expNeg(e);
                     }
+                    weights[k] = wgt;
                     sw += wgt;
-                    sr += wgt * inR[q];
-                    sg += wgt * inG[q];
-                    sb += wgt * inB[q];
-                    sv += (double) wgt * wgt * inV[q];
                 }
             }
-            double inv = 1 / sw;                           // sw > 0: the centre tap always counts
-            outR[p] = (float) (sr * inv);
-            outG[p] = (float) (sg * inv);
-            outB[p] = (float) (sb * inv);
-            outV[p] = (float) (sv * inv * inv);
+            total[p] = sw;                                  // > 0: the centre tap always counts
         }
+    }
+
+    /** Row y of one pass: each pixel the weighted mean of its taps, the variance carried along as Σ w² v / (Σ w)². */
+    private void gather(int y, int step, float[] inR, float[] inG, float[] inB, float[] inV, float[] weights, float[] total,
+                         float[] outR, float[] outG, float[] outB, float[] outV) {
+        for (int x = 0; x < w; x++) {
+            int p = y * w + x;
+            double sr = 0, sg = 0, sb = 0, sv = 0;
+            int k = 0;
+            for (int j = -2; j <= 2; j++) {
+                int yy = y + j * step;
+                for (int i = -2; i <= 2; i++, k++) {
+                    int xx = x + i * step;
+                    if (xx < 0 || xx >= w || yy < 0 || yy >= h) {
+                        continue;
+                    }
+                    int q = yy * w + xx;
+                    float share = weights[25 * p + k] / total[p];
+                    if (share == 0) {
+                        continue;
+                    }
+                    sr += share * inR[q];
+                    sg += share * inG[q];
+                    sb += share * inB[q];
+                    sv += (double) share * share * inV[q];
+                }
+            }
+            outR[p] = (float) sr;
+            outG[p] = (float) sg;
+            outB[p] = (float) sb;
+            outV[p] = (float) sv;
+        }
+    }
+
+    /**
+     * e^−x for x in [0, 20], to about 10⁻⁵ relative: 2^(−x·log2 e) split into an integer power
+     * (put into the float's exponent) and a quartic for 2^f on [0, 1). Math.exp costs several times
+     * more, and the filter takes 25 weights per pixel and pass.
+     */
+    static float expNeg(float x) {
+        float t = -x * 1.4426950f;
+        float fi = (float) Math.floor(t);
+        float f = t - fi;
+        float p = 1 + f * (0.6931472f + f * (0.2402265f + f * (0.0555041f + f * 0.0096181f)));
+        return Float.intBitsToFloat(Float.floatToRawIntBits(p) + ((int) fi << 23));
     }
 
     /** 3×3 Gaussian (1 2 1) of the variance, the luminance weight's noise level (Schied et al. 2017). */
