@@ -1,6 +1,7 @@
 package dev.strahl.cli;
 
 import dev.strahl.image.Image;
+import dev.strahl.image.ToneMapping;
 import dev.strahl.io.ImageWriters;
 import dev.strahl.io.SceneLoader;
 import dev.strahl.io.image.ImageLimits;
@@ -8,8 +9,11 @@ import dev.strahl.io.json.SceneFile;
 import dev.strahl.io.json.SceneSettings;
 import dev.strahl.io.text.Units;
 import dev.strahl.render.Acceleration;
+import dev.strahl.render.Aov;
 import dev.strahl.render.CheckpointException;
+import dev.strahl.render.Denoiser;
 import dev.strahl.render.PhotonParameters;
+import dev.strahl.render.RenderBuffers;
 import dev.strahl.render.RenderCluster;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderListener;
@@ -28,8 +32,10 @@ import java.math.MathContext;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.EnumSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
 import org.joml.Vector3d;
@@ -48,7 +54,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "render",
         mixinStandardHelpOptions = true,
         versionProvider = Main.Version.class,
-        description = {"Renders a scene (.json scene file, .obj or .ply) to a PNG (sRGB, 8 bit) or PFM (linear float) image.",
+        description = {"Renders a scene (.json scene file, .obj or .ply) to a PNG (sRGB, 8 bit), PFM (linear float) or OpenEXR image.",
             "Without camera options the scene's camera is used; an OBJ is framed from +Z.",
             "Ctrl-C stops and writes the image rendered so far; a second Ctrl-C exits at once."},
         sortOptions = false)
@@ -63,8 +69,37 @@ final class RenderCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "SCENE", description = "Scene file: .json (strahl scene), .obj (with its .mtl) or .ply.")
     Path scene;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE", description = "Output image; the extension chooses the format: .png or .pfm.")
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE",
+            description = "Output image; the extension chooses the format: .png (sRGB, 8 bit), .pfm (linear float) or .exr (OpenEXR, linear).")
     Path output;
+
+    @Option(names = "--aov", split = ",", paramLabel = "LIST",
+            description = "Feature buffers to keep and write: albedo, normal, depth (comma-separated). In an .exr they are channels"
+                    + " of the same file; beside a .png or .pfm they go to NAME.albedo.pfm, NAME.normal.pfm, NAME.depth.pfm.")
+    List<String> aovNames;
+
+    @Option(names = "--exr-type", defaultValue = "half", paramLabel = "half|float",
+            description = "Sample type of .exr output (default: ${DEFAULT-VALUE}); depth is always float.")
+    String exrType;
+
+    @Option(names = "--exr-compression", defaultValue = "zip", paramLabel = "zip|none",
+            description = "Compression of .exr output (default: ${DEFAULT-VALUE}).")
+    String exrCompression;
+
+    @Option(names = "--denoise", description = "Denoise the image before writing it (the feature buffers are then rendered too).")
+    boolean denoise;
+
+    @Option(names = "--denoiser", defaultValue = "strahl", paramLabel = "strahl|oidn",
+            description = "With --denoise: strahl's own (pure Java, the default) or Intel Open Image Denoise's oidnDenoise found on the PATH.")
+    String denoiserName;
+
+    @Option(names = "--tonemap", defaultValue = "clamp", paramLabel = "clamp|aces|agx",
+            description = "Tone curve of .png output (default: ${DEFAULT-VALUE}: values above 1 are white).")
+    String tonemap;
+
+    @Option(names = "--exposure", defaultValue = "0", paramLabel = "EV",
+            description = "Exposure of .png output in stops: values are multiplied by 2^EV before the tone curve (default: ${DEFAULT-VALUE}).")
+    double exposure;
 
     @Option(names = "--width", defaultValue = "512", description = "Image width in pixels (default: ${DEFAULT-VALUE}).")
     int width;
@@ -152,6 +187,10 @@ final class RenderCommand implements Callable<Integer> {
 
     private double loadSeconds;
     private double bvhSeconds;
+    private ImageWriters.Options writeOptions;
+    private OidnDenoiser oidn;
+    /** The feature buffers to write (those the denoiser needs are rendered also when not written). */
+    private Set<Aov> written = Set.of();
 
     @Override
     public Integer call() {
@@ -185,6 +224,13 @@ final class RenderCommand implements Callable<Integer> {
     private int run(PrintWriter err, Interrupts irq) throws SceneException, CheckpointException, InterruptedException {
         RenderSettings settings = settings();
         checkClusterOptions();
+        writeOptions = writeOptions();
+        if (!denoiserName.equals("strahl") && !denoiserName.equals("oidn")) {
+            throw new IllegalArgumentException("--denoiser must be strahl or oidn, got '" + denoiserName + "'");
+        }
+        if (denoise && denoiserName.equals("oidn")) {
+            oidn = OidnDenoiser.onPath();
+        }
         if (fov != null && !(fov > 0 && fov < 180)) {
             throw new IllegalArgumentException("--fov: the field of view must be in (0, 180) degrees, got " + fov);
         }
@@ -203,6 +249,10 @@ final class RenderCommand implements Callable<Integer> {
         loadSeconds = (System.nanoTime() - loadStart) * 1e-9 - bvhSeconds;
         Scene s = loaded.scene().withCamera(camera(loaded.scene().camera()));
         settings = loaded.settings().applyTo(settings, SceneFileOptions.given(spec.commandLine().getParseResult()));
+        written = settings.aovs();
+        if (denoise) {
+            settings = settings.withAovs(EnumSet.allOf(Aov.class));      // the denoiser's guides, written or not
+        }
         if (settings.width() != width || settings.height() != height) {
             HeapCheck.checkFilm(settings.width(), settings.height());          // the scene file's size
         }
@@ -253,7 +303,42 @@ final class RenderCommand implements Callable<Integer> {
     private RenderSettings settings() {
         return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0,
                 transport.integrator, transport.lightSamples, timeLimit == null ? Duration.ZERO : timeLimit,
-                new PhotonParameters(transport.photons, transport.photonRadius), accel, schedule);
+                new PhotonParameters(transport.photons, transport.photonRadius), accel, schedule, aovs());
+    }
+
+    /** The feature buffers asked for with --aov (checked), or none. */
+    private Set<Aov> aovs() {
+        Set<Aov> set = EnumSet.noneOf(Aov.class);
+        if (aovNames != null) {
+            for (String name : aovNames) {
+                try {
+                    set.add(Aov.of(name.trim()));
+                } catch (IllegalArgumentException e) {
+                    throw new IllegalArgumentException("--aov: " + e.getMessage());
+                }
+            }
+        }
+        return set;
+    }
+
+    /** The PNG's tone curve and exposure, the EXR's type and compression, from the options (checked). */
+    private ImageWriters.Options writeOptions() {
+        ToneMapping curve;
+        try {
+            curve = ToneMapping.of(tonemap);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("--tonemap: " + e.getMessage());
+        }
+        if (!Double.isFinite(exposure)) {
+            throw new IllegalArgumentException("--exposure must be a finite number of stops, got " + exposure);
+        }
+        if (!exrType.equals("half") && !exrType.equals("float")) {
+            throw new IllegalArgumentException("--exr-type must be half or float, got '" + exrType + "'");
+        }
+        if (!exrCompression.equals("zip") && !exrCompression.equals("none")) {
+            throw new IllegalArgumentException("--exr-compression must be zip or none, got '" + exrCompression + "'");
+        }
+        return new ImageWriters.Options(curve, exposure, exrType.equals("float"), exrCompression.equals("zip"));
     }
 
     /**
@@ -263,7 +348,7 @@ final class RenderCommand implements Callable<Integer> {
     /** Refuses an unwritable output before spending time on the render. */
     private void checkOutput(Path file, String what) {
         if (!ImageWriters.isSupported(file)) {
-            throw new IllegalArgumentException("unknown image format of " + file + ": use .png or .pfm");
+            throw new IllegalArgumentException("unknown image format of " + file + ": use .png, .pfm or .exr");
         }
         checkWritable(file, what);
     }
@@ -354,7 +439,7 @@ final class RenderCommand implements Callable<Integer> {
         boolean showProgress = !quiet && Terminal.isStderrTerminal();
         ProgressBar bar = new ProgressBar(System.err);
         RenderStats stats;
-        Image image;
+        RenderBuffers buffers;
         try (RenderJob job = start(s, settings, saver != null ? saver : new RenderListener() {}, err, members)) {
             if (saver != null) {
                 saver.attach(job);
@@ -374,7 +459,7 @@ final class RenderCommand implements Callable<Integer> {
                 }
                 throw new RenderFailure("the render failed: " + e.getCause(), e.getCause());
             }
-            image = job.awaitCompletion();
+            buffers = job.awaitBuffers();
             if (saver != null) {
                 saver.saveFinal();
             }
@@ -383,8 +468,22 @@ final class RenderCommand implements Callable<Integer> {
                 bar.finish();
             }
         }
+        double denoiseSeconds = 0;
+        if (denoise) {
+            long t0 = System.nanoTime();
+            Image clean;
+            try {
+                clean = oidn != null ? oidn.denoise(buffers) : Denoiser.create().denoise(buffers);
+            } catch (IOException e) {
+                throw new RenderFailure("oidnDenoise failed: " + e.getMessage(), e);
+            }
+            denoiseSeconds = (System.nanoTime() - t0) * 1e-9;
+            buffers = buffers.withColor(clean);
+        }
+        buffers = new RenderBuffers(buffers.color(), buffers.variance(), written.contains(Aov.ALBEDO) ? buffers.albedo() : null,
+                written.contains(Aov.NORMAL) ? buffers.normal() : null, written.contains(Aov.DEPTH) ? buffers.depth() : null);
         try {
-            ImageWriters.write(image, output);
+            ImageWriters.write(buffers, output, writeOptions);
         } catch (IOException | UncheckedIOException e) {
             throw new RenderFailure("cannot write " + output + ": " + e.getMessage(), e);
         }
@@ -411,6 +510,10 @@ final class RenderCommand implements Callable<Integer> {
             err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %d spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
                     settings.integrator().id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
                     Units.si(stats.samplesPerSecond()), Units.si(stats.raysPerSecond()), stats.threads(), output));
+            if (denoise) {
+                err.println(String.format(Locale.ROOT, "strahl: denoised with %s in %.2f s", oidn != null ? "oidnDenoise" : "strahl's denoiser",
+                        denoiseSeconds));
+            }
         }
         if (!quiet && invalid > 0) {
             err.println("strahl: warning: " + invalid + " samples were NaN or infinite and counted as black");

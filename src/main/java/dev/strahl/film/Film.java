@@ -3,8 +3,10 @@ package dev.strahl.film;
 import dev.strahl.image.Image;
 
 /**
- * The HDR accumulation buffer of a render: per pixel the sums of r, g, b in double precision and
- * the number of samples. Memory is laid out tile by tile ({@value #TILE}×{@value #TILE} pixels),
+ * The HDR accumulation buffer of a render: per pixel the sums of r, g, b in double precision, the
+ * sum of the squared luminance of the samples (for the per-pixel variance a denoiser needs), the
+ * number of samples and, optionally, the sums of the feature buffers (albedo, normal, depth: see
+ * {@code dev.strahl.integrator.FeatureTracer}). Memory is laid out tile by tile ({@value #TILE}×{@value #TILE} pixels),
  * so that a worker rendering one tile writes one contiguous block.
  *
  * <p>Each pixel is written by one thread at a time (the renderer hands out disjoint tiles), and
@@ -19,7 +21,13 @@ public final class Film {
     private final int width;
     private final int height;
     private final int tilesX;
+    /** Values per pixel of the feature sums: albedo r, g, b, normal x, y, z, depth. */
+    public static final int FEATURES = 7;
+
     private final double[] sum;
+    private final double[] sumSquares;
+    /** Feature sums, {@value #FEATURES} per pixel, or null without feature buffers. */
+    private final double[] features;
     private final int[] count;
 
     /**
@@ -29,6 +37,17 @@ public final class Film {
      * @param height height in pixels, positive
      */
     public Film(int width, int height) {
+        this(width, height, false);
+    }
+
+    /**
+     * An empty film, with or without feature buffers.
+     *
+     * @param width    width in pixels, positive
+     * @param height   height in pixels, positive
+     * @param features whether to keep the sums of the feature buffers
+     */
+    public Film(int width, int height, boolean features) {
         if (width <= 0 || height <= 0) {
             throw new IllegalArgumentException("film size must be positive, got " + width + "x" + height);
         }
@@ -37,10 +56,12 @@ public final class Film {
         this.tilesX = (width + TILE - 1) / TILE;
         int tilesY = (height + TILE - 1) / TILE;
         long pixels = (long) tilesX * tilesY * TILE * TILE;
-        if (3 * pixels > Integer.MAX_VALUE - 8) {
+        if ((features ? FEATURES : 3) * pixels > Integer.MAX_VALUE - 8) {
             throw new IllegalArgumentException("film " + width + "x" + height + " is too large");
         }
         this.sum = new double[(int) (3 * pixels)];
+        this.sumSquares = new double[(int) pixels];
+        this.features = features ? new double[(int) (FEATURES * pixels)] : null;
         this.count = new int[(int) pixels];
     }
 
@@ -52,8 +73,29 @@ public final class Film {
      * @return the bytes of its buffers
      */
     public static long bytesNeeded(int width, int height) {
+        return bytesNeeded(width, height, false);
+    }
+
+    /**
+     * Bytes a film of this size needs, with or without feature buffers.
+     *
+     * @param width    width in pixels
+     * @param height   height in pixels
+     * @param features whether it keeps feature sums
+     * @return the bytes of its buffers
+     */
+    public static long bytesNeeded(int width, int height, boolean features) {
         long tiles = (long) ((width + TILE - 1) / TILE) * ((height + TILE - 1) / TILE);
-        return tiles * TILE * TILE * (3 * 8 + 4);
+        return tiles * TILE * TILE * (4 * 8 + 4 + (features ? FEATURES * 8 : 0));
+    }
+
+    /**
+     * Whether the film keeps feature buffers.
+     *
+     * @return true if {@link #addFeatures} may be called
+     */
+    public boolean hasFeatures() {
+        return features != null;
     }
 
     /**
@@ -118,7 +160,32 @@ public final class Film {
         sum[k] += r;
         sum[k + 1] += g;
         sum[k + 2] += b;
+        double y = luminance(r, g, b);
+        sumSquares[pixelIndex] += y * y;
         count[pixelIndex]++;
+    }
+
+    /**
+     * Adds one sample's features ({@value #FEATURES} values from {@code f}) to a pixel; call it
+     * with {@link #add} for the same sample. Not thread-safe, like {@link #add}.
+     *
+     * @param pixelIndex the pixel
+     * @param f          albedo r, g, b, normal x, y, z, depth
+     * @throws IllegalStateException if the film keeps no features
+     */
+    public void addFeatures(int pixelIndex, double[] f) {
+        if (features == null) {
+            throw new IllegalStateException("this film keeps no feature buffers");
+        }
+        int k = FEATURES * pixelIndex;
+        for (int i = 0; i < FEATURES; i++) {
+            features[k + i] += f[i];
+        }
+    }
+
+    /** Rec. 709 luminance of linear RGB: the quantity whose variance the film keeps. */
+    public static double luminance(double r, double g, double b) {
+        return 0.2126 * r + 0.7152 * g + 0.0722 * b;
     }
 
     /** Samples taken over all pixels. */
@@ -170,12 +237,14 @@ public final class Film {
 
     /**
      * The saved state of pixel (x, y), for checkpoints: its r, g, b sums go into
-     * {@code sumsDest[0..2]}, and its sample count is returned. Only consistent while nothing
+     * {@code sumsDest[0..2]}, its sum of squared luminance into {@code sumsDest[3]}, with feature
+     * buffers their {@value #FEATURES} sums into {@code sumsDest[4..10]}, and its sample count is
+     * returned. Only consistent while nothing
      * renders into the film (between passes, or after the render).
      *
      * @param x        column
      * @param y        row
-     * @param sumsDest receives the r, g, b sums
+     * @param sumsDest receives the sums: 4 values, or 4 + {@value #FEATURES} with feature buffers
      * @return the pixel's sample count
      */
     public int pixelState(int x, int y, double[] sumsDest) {
@@ -183,7 +252,20 @@ public final class Film {
         sumsDest[0] = sum[3 * p];
         sumsDest[1] = sum[3 * p + 1];
         sumsDest[2] = sum[3 * p + 2];
+        sumsDest[3] = sumSquares[p];
+        if (features != null) {
+            System.arraycopy(features, FEATURES * p, sumsDest, 4, FEATURES);
+        }
         return count[p];
+    }
+
+    /**
+     * How many sums {@link #pixelState} writes per pixel.
+     *
+     * @return 4, or 4 + {@value #FEATURES} with feature buffers
+     */
+    public int stateSums() {
+        return features != null ? 4 + FEATURES : 4;
     }
 
     /**
@@ -200,13 +282,34 @@ public final class Film {
      * @throws IllegalArgumentException if {@code samples} is negative
      */
     public void restorePixel(int x, int y, int samples, double r, double g, double b) {
+        restorePixel(x, y, samples, new double[] {r, g, b, 0});
+    }
+
+    /**
+     * Sets pixel (x, y) to a state saved by {@link #pixelState}: {@link #stateSums()} sums in the
+     * order {@code pixelState} writes them.
+     *
+     * @param x       column
+     * @param y       row
+     * @param samples the pixel's sample count
+     * @param sums    r, g, b, squared luminance and (with feature buffers) the feature sums
+     * @throws IllegalArgumentException if {@code samples} is negative or too few sums are given
+     */
+    public void restorePixel(int x, int y, int samples, double[] sums) {
         if (samples < 0) {
             throw new IllegalArgumentException("sample count must not be negative, got " + samples);
         }
+        if (sums.length < stateSums()) {
+            throw new IllegalArgumentException(stateSums() + " sums per pixel expected, got " + sums.length);
+        }
         int p = pixelIndex(x, y);
-        sum[3 * p] = r;
-        sum[3 * p + 1] = g;
-        sum[3 * p + 2] = b;
+        sum[3 * p] = sums[0];
+        sum[3 * p + 1] = sums[1];
+        sum[3 * p + 2] = sums[2];
+        sumSquares[p] = sums[3];
+        if (features != null) {
+            System.arraycopy(sums, 4, features, FEATURES * p, FEATURES);
+        }
         count[p] = samples;
     }
 
@@ -231,5 +334,61 @@ public final class Film {
             }
         }
         return new Image(width, height, rgb);
+    }
+
+    /**
+     * The variance of each pixel's mean luminance: the samples' unbiased variance divided by their
+     * count, (Σy² − (Σy)²/n) / ((n − 1) n), in r, g and b alike; 0 for pixels with fewer than two
+     * samples. In row-major order, like {@link #toImage()}.
+     *
+     * @return a new image
+     */
+    public Image varianceImage() {
+        float[] v = new float[3 * width * height];
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                int p = pixelIndex(x, y);
+                int n = count[p];
+                if (n > 1) {
+                    double s = luminance(sum[3 * p], sum[3 * p + 1], sum[3 * p + 2]);
+                    double var = Math.max(0, (sumSquares[p] - s * s / n) / ((n - 1.0) * n));
+                    int o = 3 * (y * width + x);
+                    v[o] = v[o + 1] = v[o + 2] = (float) var;
+                }
+            }
+        }
+        return new Image(width, height, v);
+    }
+
+    /**
+     * The mean of a feature buffer per pixel: albedo (offset 0) or normal (offset 3) as three
+     * channels, or depth (offset 6) in all three channels.
+     *
+     * @param offset 0 (albedo), 3 (normal) or 6 (depth)
+     * @return a new image
+     * @throws IllegalStateException if the film keeps no features
+     */
+    public Image featureImage(int offset) {
+        if (features == null) {
+            throw new IllegalStateException("this film keeps no feature buffers");
+        }
+        if (offset != 0 && offset != 3 && offset != 6) {
+            throw new IllegalArgumentException("feature offset must be 0, 3 or 6, got " + offset);
+        }
+        float[] v = new float[3 * width * height];
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                int p = pixelIndex(x, y);
+                int n = count[p];
+                if (n > 0) {
+                    int o = 3 * (y * width + x);
+                    int k = FEATURES * p + offset;
+                    for (int c = 0; c < 3; c++) {
+                        v[o + c] = (float) (features[offset == 6 ? k : k + c] / n);
+                    }
+                }
+            }
+        }
+        return new Image(width, height, v);
     }
 }

@@ -1,13 +1,15 @@
 package dev.strahl.film;
 
 import dev.strahl.image.Image;
+import dev.strahl.image.ToneMapping;
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
 
 /**
  * Display encoding of linear radiance: the sRGB transfer function, 8-bit quantisation, and the
- * conversion of an {@link Image} to a {@link BufferedImage} used by the PNG writer and the viewer.
- * No tone curve beyond clamping: values above 1 saturate to white.
+ * conversion of an {@link Image} to a {@link BufferedImage} used by the PNG writer and the viewer,
+ * with one of the tone curves of {@link ToneMapping} (clamping by default: values above 1 saturate
+ * to white).
  */
 public final class Tonemap {
 
@@ -132,6 +134,25 @@ public final class Tonemap {
      * @throws IllegalArgumentException if exposureStops is NaN or infinite
      */
     public static BufferedImage toBufferedImage(Image img, double exposureStops) {
+        return toBufferedImage(img, exposureStops, ToneMapping.CLAMP);
+    }
+
+    /**
+     * Converts a linear image to an 8-bit sRGB image with a tone curve: each channel is
+     * multiplied by 2^exposureStops, mapped by the curve to display-linear [0, 1] and encoded as
+     * {@link #toSrgb8} would. With {@link ToneMapping#CLAMP} the result is that of
+     * {@link #toBufferedImage(Image, double)}.
+     *
+     * @param img           the linear image
+     * @param exposureStops exposure in photographic stops
+     * @param curve         the tone curve
+     * @return a new {@link BufferedImage#TYPE_INT_RGB} image of the same size
+     * @throws IllegalArgumentException if exposureStops is NaN or infinite
+     */
+    public static BufferedImage toBufferedImage(Image img, double exposureStops, ToneMapping curve) {
+        if (curve != ToneMapping.CLAMP) {
+            return curved(img, exposureStops, curve);
+        }
         if (!Double.isFinite(exposureStops)) {
             throw new IllegalArgumentException("exposure must be a finite number of stops, got " + exposureStops);
         }
@@ -149,5 +170,101 @@ public final class Tonemap {
             }
         }
         return out;
+    }
+
+    private static BufferedImage curved(Image img, double exposureStops, ToneMapping curve) {
+        if (!Double.isFinite(exposureStops)) {
+            throw new IllegalArgumentException("exposure must be a finite number of stops, got " + exposureStops);
+        }
+        double scale = Math.pow(2, exposureStops);
+        int w = img.width();
+        int h = img.height();
+        BufferedImage out = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        int[] px = ((DataBufferInt) out.getRaster().getDataBuffer()).getData();
+        double[] c = new double[3];
+        int i = 0;
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++, i++) {
+                c[0] = img.get(x, y, 0) * scale;
+                c[1] = img.get(x, y, 1) * scale;
+                c[2] = img.get(x, y, 2) * scale;
+                if (curve == ToneMapping.ACES) {
+                    c[0] = aces(c[0]);
+                    c[1] = aces(c[1]);
+                    c[2] = aces(c[2]);
+                } else {
+                    agx(c);
+                }
+                px[i] = encode8(c[0]) << 16 | encode8(c[1]) << 8 | encode8(c[2]);
+            }
+        }
+        return out;
+    }
+
+    /**
+     * Narkowicz's ACES filmic fit ("ACES Filmic Tone Mapping Curve", 2016):
+     * x(2.51x + 0.03) / (x(2.43x + 0.59) + 0.14), clamped to [0, 1]; negatives and NaN give 0.
+     *
+     * @param x linear radiance after exposure
+     * @return display-linear value in [0, 1]
+     */
+    public static double aces(double x) {
+        if (!(x > 0)) {
+            return 0;
+        }
+        double v = x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14);
+        return Math.min(1, v);
+    }
+
+    // AgX (Troy Sobotka, 2022) as Benjamin Wrensch's "Minimal AgX implementation" (2023) gives it:
+    // the inset and outset matrices (here as rows acting on (r, g, b)), the log2 range, the
+    // sixth-order polynomial fit of the default contrast curve, and the 2.2 display power.
+    private static final double[] AGX_INSET = {
+        0.842479062253094, 0.0784335999999992, 0.0792237451477643,
+        0.0423282422610123, 0.878468636469772, 0.0791661274605434,
+        0.0423756549057051, 0.0784336, 0.879142973793104};
+    private static final double[] AGX_OUTSET = {
+        1.19687900512017, -0.0980208811401368, -0.0990297440797205,
+        -0.0528968517574562, 1.15190312990417, -0.0989611768448433,
+        -0.0529716355144438, -0.0980434501171241, 1.15107367264116};
+    private static final double AGX_MIN_EV = -12.47393;
+    private static final double AGX_MAX_EV = 4.026069;
+
+    /**
+     * AgX in place: linear radiance after exposure in, display-linear values in [0, 1] out.
+     *
+     * @param c r, g, b
+     */
+    public static void agx(double[] c) {
+        double r = AGX_INSET[0] * c[0] + AGX_INSET[1] * c[1] + AGX_INSET[2] * c[2];
+        double g = AGX_INSET[3] * c[0] + AGX_INSET[4] * c[1] + AGX_INSET[5] * c[2];
+        double b = AGX_INSET[6] * c[0] + AGX_INSET[7] * c[1] + AGX_INSET[8] * c[2];
+        r = agxContrast(agxLog(r));
+        g = agxContrast(agxLog(g));
+        b = agxContrast(agxLog(b));
+        double r2 = AGX_OUTSET[0] * r + AGX_OUTSET[1] * g + AGX_OUTSET[2] * b;
+        double g2 = AGX_OUTSET[3] * r + AGX_OUTSET[4] * g + AGX_OUTSET[5] * b;
+        double b2 = AGX_OUTSET[6] * r + AGX_OUTSET[7] * g + AGX_OUTSET[8] * b;
+        c[0] = agxDisplay(r2);
+        c[1] = agxDisplay(g2);
+        c[2] = agxDisplay(b2);
+    }
+
+    /** log2 of the value, clamped to the range of AgX's log encoding and scaled to [0, 1]. */
+    private static double agxLog(double v) {
+        double ev = v > 0 ? Math.log(v) / Math.log(2) : AGX_MIN_EV;     // NaN and negatives: black
+        ev = Math.max(AGX_MIN_EV, Math.min(AGX_MAX_EV, ev));
+        return (ev - AGX_MIN_EV) / (AGX_MAX_EV - AGX_MIN_EV);
+    }
+
+    /** The sixth-order polynomial fit of AgX's default contrast sigmoid over [0, 1]. */
+    private static double agxContrast(double x) {
+        double x2 = x * x;
+        double x4 = x2 * x2;
+        return 15.5 * x4 * x2 - 40.14 * x4 * x + 31.96 * x4 - 6.868 * x2 * x + 0.4298 * x2 + 0.1191 * x - 0.00232;
+    }
+
+    private static double agxDisplay(double v) {
+        return v > 0 ? Math.min(1, Math.pow(v, 2.2)) : 0;
     }
 }

@@ -1,28 +1,76 @@
 package dev.strahl.io;
 
 import dev.strahl.film.Film;
+import dev.strahl.film.Tonemap;
 import dev.strahl.image.Image;
+import dev.strahl.image.ToneMapping;
+import dev.strahl.io.exr.ExrCompression;
+import dev.strahl.io.exr.ExrPixelType;
+import dev.strahl.io.exr.ExrWriter;
 import dev.strahl.io.image.AtomicFile;
 import dev.strahl.io.image.PfmWriter;
 import dev.strahl.io.image.PngWriter;
+import dev.strahl.render.Aov;
+import dev.strahl.render.RenderBuffers;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
 
 /**
  * Writes images to files, choosing the format by the file name's extension (case-insensitive):
  * <ul>
- *   <li>{@code .png} — 8-bit sRGB: clamped to [0, 1], sRGB transfer function, no exposure;</li>
- *   <li>{@code .pfm} — linear 32-bit float RGB, the values exactly as rendered.</li>
+ *   <li>{@code .png} — 8-bit sRGB: exposure and tone curve ({@link Options}; by default none and
+ *       clamping to [0, 1]), then the sRGB transfer function;</li>
+ *   <li>{@code .pfm} — linear 32-bit float RGB, the values exactly as rendered;</li>
+ *   <li>{@code .exr} — OpenEXR, scanline, linear: channels {@code R}, {@code G}, {@code B} and,
+ *       from {@link RenderBuffers}, the feature buffers in the same file as {@code albedo.R/G/B},
+ *       {@code normal.X/Y/Z} and {@code depth.Z} (always 32-bit float: depths exceed half's
+ *       range); {@code half} samples (the default) or {@code float}, ZIP compression (the
+ *       default) or none.</li>
  * </ul>
- * Writes are atomic ({@link AtomicFile}): the image goes to a temporary file in the same
+ * With PNG or PFM output, the feature buffers go to files beside it, named after it:
+ * {@code out.albedo.pfm}, {@code out.normal.pfm}, {@code out.depth.pfm} (linear float; depth in
+ * all three channels).
+ *
+ * <p>Writes are atomic ({@link AtomicFile}): the image goes to a temporary file in the same
  * directory, which is then renamed over the target. An interrupted or failed write leaves the
  * previous file (if any) untouched and no partial or temporary file behind.
  */
 public final class ImageWriters {
 
-    private enum Format { PNG, PFM }
+    private enum Format { PNG, PFM, EXR }
+
+    /**
+     * How to write: the PNG's exposure and tone curve, the EXR's sample type and compression.
+     * Linear outputs (PFM, EXR) hold the values as rendered whatever the exposure and curve.
+     *
+     * @param toneMapping the PNG's tone curve
+     * @param exposure    the PNG's exposure in stops: each value is multiplied by 2^exposure
+     * @param exrFloat    EXR samples as 32-bit float rather than 16-bit half
+     * @param exrZip      ZIP-compress the EXR (else uncompressed)
+     */
+    public record Options(ToneMapping toneMapping, double exposure, boolean exrFloat, boolean exrZip) {
+        /** Clamping, exposure 0, half samples, ZIP: PNGs as they always were, EXRs as Mitsuba writes them. */
+        public static final Options DEFAULT = new Options(ToneMapping.CLAMP, 0, false, true);
+
+        /**
+         * Checks the values.
+         *
+         * @param toneMapping the PNG's tone curve
+         * @param exposure    the PNG's exposure in stops, finite
+         * @param exrFloat    EXR samples as float rather than half
+         * @param exrZip      ZIP-compress the EXR
+         */
+        public Options {
+            Objects.requireNonNull(toneMapping, "toneMapping");
+            if (!Double.isFinite(exposure)) {
+                throw new IllegalArgumentException("exposure must be a finite number of stops, got " + exposure);
+            }
+        }
+    }
 
     private ImageWriters() {
     }
@@ -38,14 +86,89 @@ public final class ImageWriters {
      */
     public static void write(Image img, Path out) throws IOException {
         Objects.requireNonNull(img, "img");
+        write(RenderBuffers.of(img), out, Options.DEFAULT);
+    }
+
+    /**
+     * Writes a render's image and its feature buffers (those that are not null): in one EXR file,
+     * or beside a PNG or PFM as {@code NAME.albedo.pfm}, {@code NAME.normal.pfm},
+     * {@code NAME.depth.pfm} (where {@code NAME} is {@code out} without its extension). The
+     * variance is not written.
+     *
+     * @param buffers the image and its feature buffers
+     * @param out     the file to write, ending in {@code .png}, {@code .pfm} or {@code .exr}
+     * @param options the PNG's tone curve and exposure, the EXR's sample type and compression
+     * @throws IllegalArgumentException if the extension is not a supported format (nothing is written)
+     * @throws IOException              if a file cannot be written; each file is replaced atomically
+     */
+    public static void write(RenderBuffers buffers, Path out, Options options) throws IOException {
+        Objects.requireNonNull(buffers, "buffers");
+        Objects.requireNonNull(options, "options");
         Format format = formatOf(out);
+        Image img = buffers.color();
+        if (format == Format.EXR) {
+            writeExr(buffers, out, options);
+            return;
+        }
         AtomicFile.write(out, os -> {
             if (format == Format.PNG) {
-                PngWriter.write(img, os);
+                PngWriter.write(Tonemap.toBufferedImage(img, options.exposure(), options.toneMapping()), os);
             } else {
                 PfmWriter.write(img, os);
             }
         });
+        for (Aov aov : Aov.values()) {
+            Image feature = buffers.aov(aov);
+            if (feature != null) {
+                Path side = featureFile(out, aov);
+                AtomicFile.write(side, os -> PfmWriter.write(feature, os));
+            }
+        }
+    }
+
+    /**
+     * Where {@link #write(RenderBuffers, Path, Options)} puts a feature buffer beside a PNG or PFM.
+     *
+     * @param out the image file
+     * @param aov the feature buffer
+     * @return {@code NAME.albedo.pfm} and so on, in the directory of {@code out}
+     */
+    public static Path featureFile(Path out, Aov aov) {
+        String name = out.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        String base = dot < 0 ? name : name.substring(0, dot);
+        return out.resolveSibling(base + "." + aov.id() + ".pfm");
+    }
+
+    private static void writeExr(RenderBuffers buffers, Path out, Options options) throws IOException {
+        Image img = buffers.color();
+        int w = img.width();
+        int h = img.height();
+        List<ExrWriter.Channel> channels = new ArrayList<>();
+        addChannels(channels, img, new String[] {"R", "G", "B"}, null);
+        if (buffers.albedo() != null) {
+            addChannels(channels, buffers.albedo(), new String[] {"albedo.R", "albedo.G", "albedo.B"}, null);
+        }
+        if (buffers.normal() != null) {
+            addChannels(channels, buffers.normal(), new String[] {"normal.X", "normal.Y", "normal.Z"}, null);
+        }
+        if (buffers.depth() != null) {
+            addChannels(channels, buffers.depth(), new String[] {"depth.Z"}, ExrPixelType.FLOAT);
+        }
+        ExrWriter.write(out, w, h, channels, new ExrWriter.Options(options.exrFloat() ? ExrPixelType.FLOAT : ExrPixelType.HALF,
+                options.exrZip() ? ExrCompression.ZIP : ExrCompression.NONE));
+    }
+
+    private static void addChannels(List<ExrWriter.Channel> dest, Image img, String[] names, ExrPixelType type) {
+        int pixels = img.width() * img.height();
+        float[] rgb = img.rgb();
+        for (int c = 0; c < names.length; c++) {
+            float[] v = new float[pixels];
+            for (int p = 0; p < pixels; p++) {
+                v[p] = rgb[3 * p + c];
+            }
+            dest.add(new ExrWriter.Channel(names[c], v, type));
+        }
     }
 
     /**
@@ -68,11 +191,11 @@ public final class ImageWriters {
      * Whether {@link #write(Image, Path)} can write a file of this name.
      *
      * @param path a file name or path
-     * @return true if its extension is {@code .png} or {@code .pfm}, in any case
+     * @return true if its extension is {@code .png}, {@code .pfm} or {@code .exr}, in any case
      */
     public static boolean isSupported(Path path) {
         String ext = extension(path);
-        return ext.equals("png") || ext.equals("pfm");
+        return ext.equals("png") || ext.equals("pfm") || ext.equals("exr");
     }
 
     private static Format formatOf(Path out) {
@@ -82,12 +205,14 @@ public final class ImageWriters {
                 return Format.PNG;
             case "pfm":
                 return Format.PFM;
+            case "exr":
+                return Format.EXR;
             case "":
-                throw new IllegalArgumentException("image file name " + out + " has no extension: use .png or .pfm");
+                throw new IllegalArgumentException("image file name " + out + " has no extension: use .png, .pfm or .exr");
             default:
                 String given = out.getFileName().toString();
                 throw new IllegalArgumentException("unknown image format '" + given.substring(given.lastIndexOf('.'))
-                        + "' of " + out + ": use .png or .pfm");
+                        + "' of " + out + ": use .png, .pfm or .exr");
         }
     }
 

@@ -23,6 +23,24 @@ public sealed interface Bsdf permits Lambert, Glossy, DeltaBsdf {
      */
     boolean sample(Vector3dc wo, double uc, double u1, double u2, BsdfSample out);
 
+    /**
+     * The albedo of this surface seen from {@code wo}, into {@code dest}: what the feature buffers
+     * (and so the denoiser) take as the surface's colour. The contract every BSDF keeps:
+     * <ul>
+     *   <li>each channel lies in [0, 1] and approximates the directional albedo
+     *       ∫ f(wo, wi) |cosθi| dωi (the fraction of light arriving along wo that the surface
+     *       scatters, reflection and transmission together); an exact integral is not required,
+     *       a closed form that follows the colour the eye sees is (Kd + Ks for a diffuse base
+     *       under a glossy coat; the texture's value at the point for a textured surface);</li>
+     *   <li>deterministic and cheap: no random numbers, no tracing, no allocation;</li>
+     *   <li>for a BSDF whose lobes are all deltas ({@link #isDelta()}), the tint its specular
+     *       interaction gives whatever is seen through or in it (a mirror's Ks, 1 for clear
+     *       glass): the feature tracer looks through such surfaces and multiplies by it;</li>
+     *   <li>defined for wo on either side (two-sided surfaces may ignore the side).</li>
+     * </ul>
+     */
+    void albedo(Vector3dc wo, MutableRgb dest);
+
     /** Whether every lobe is a delta (no light sampling possible at this surface). */
     default boolean isDelta() {
         return false;

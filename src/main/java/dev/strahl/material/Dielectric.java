@@ -1,6 +1,7 @@
 package dev.strahl.material;
 
 import dev.strahl.image.Rgb;
+import dev.strahl.math.MutableRgb;
 import org.joml.Vector3dc;
 
 /**
@@ -66,5 +67,11 @@ public record Dielectric(double eta) implements DeltaBsdf {
     @Override
     public boolean isTwoSided() {
         return false;
+    }
+
+    /** 1: clear glass scatters (reflects or transmits) all light, untinted. */
+    @Override
+    public void albedo(Vector3dc wo, MutableRgb dest) {
+        dest.set(1, 1, 1);
     }
 }

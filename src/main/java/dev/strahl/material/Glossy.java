@@ -310,4 +310,14 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, boolean uniform) i
     private static double maxSum(Rgb a, Rgb b) {
         return Math.max(a.r() + b.r(), Math.max(a.g() + b.g(), a.b() + b.b()));
     }
+
+    /**
+     * Kd + Ks: the diffuse lobe's directional albedo is exactly Kd; the microfacet mirror's is Ks
+     * less what masking and the lobe's part below the horizon lose (a few percent but at grazing
+     * angles), so Kd + Ks is the colour of the surface as its highlights show it.
+     */
+    @Override
+    public void albedo(Vector3dc wo, MutableRgb dest) {
+        dest.set(diffuse.r() + specular.r(), diffuse.g() + specular.g(), diffuse.b() + specular.b());
+    }
 }

@@ -79,4 +79,10 @@ public record Lambert(Rgb albedo, boolean uniform) implements Bsdf {
     public Bsdf withUniformHemisphere(boolean u) {
         return u == uniform ? this : new Lambert(albedo, u);
     }
+
+    /** The albedo, on either side. */
+    @Override
+    public void albedo(Vector3dc wo, MutableRgb dest) {
+        dest.set(albedo);
+    }
 }

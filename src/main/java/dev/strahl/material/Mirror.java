@@ -1,6 +1,7 @@
 package dev.strahl.material;
 
 import dev.strahl.image.Rgb;
+import dev.strahl.math.MutableRgb;
 import java.util.Objects;
 import org.joml.Vector3dc;
 
@@ -39,5 +40,11 @@ public record Mirror(Rgb reflectance) implements DeltaBsdf {
         out.delta = true;
         out.eta = 1;
         return true;
+    }
+
+    /** Ks: the tint of everything seen in the mirror. */
+    @Override
+    public void albedo(Vector3dc wo, MutableRgb dest) {
+        dest.set(reflectance);
     }
 }

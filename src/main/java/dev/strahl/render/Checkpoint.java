@@ -33,7 +33,7 @@ import java.util.zip.CheckedOutputStream;
  * the image. Resuming ({@link RenderJob#resumeFrom}) continues every pixel from the sample index it
  * reached, so an interrupted and resumed render is bit-identical to an uninterrupted one.
  *
- * <p>File format (big-endian), version 1:
+ * <p>File format (big-endian), version 2:
  * <pre>
  *   8 bytes   magic "STRAHLCK"
  *   int       format version
@@ -43,29 +43,41 @@ import java.util.zip.CheckedOutputStream;
  *   int       samples per pixel every pixel has reached
  *   long      samples that were NaN or infinite (counted as black)
  *   double    seconds of rendering so far
- *   per pixel, row by row from the top: int sample count, double r, g, b sums
+ *   per pixel, row by row from the top: int sample count, double r, g, b sums, double sum of
+ *             the squared luminance and, if the settings keep feature buffers, 7 doubles: the
+ *             sums of albedo r, g, b, normal x, y, z and depth
  *   int       CRC-32C of all bytes before it
  * </pre>
+ * Version 1 (before the film kept the squared luminance for the denoiser's variance) is refused
+ * with a message that says so: its films lack what the variance needs, and a resumed render must
+ * be the same bits as one never interrupted.
  * The settings excluded from the fingerprint are those that do not change the bits of the image:
  * the target samples per pixel (a render may be resumed to go further), the thread count, the
  * pass size and the time limit. Every other setting, including any added later, is part of it.
  */
 final class Checkpoint {
-    static final int VERSION = 1;
+    static final int VERSION = 2;
     private static final byte[] MAGIC = "STRAHLCK".getBytes(StandardCharsets.US_ASCII);
     private static final int PIXEL_BYTES = 4 + 3 * 8;
-    private static final Set<String> NOT_IN_FINGERPRINT = Set.of("samplesPerPixel", "threads", "samplesPerPass", "timeLimit", "schedule");
+    private static final Set<String> NOT_IN_FINGERPRINT = Set.of("samplesPerPixel", "threads", "samplesPerPass", "timeLimit", "schedule", "aovs");
 
     private final byte[] sceneDigest;
     private final String settingsKey;
     private final int width;
     private final int height;
+    private final boolean features;
 
-    private Checkpoint(byte[] sceneDigest, String settingsKey, int width, int height) {
+    private Checkpoint(byte[] sceneDigest, String settingsKey, int width, int height, boolean features) {
         this.sceneDigest = sceneDigest;
         this.settingsKey = settingsKey;
         this.width = width;
         this.height = height;
+        this.features = features;
+    }
+
+    /** Bytes per pixel: the count, the r, g, b sums, the squared luminance and any feature sums. */
+    private int pixelBytes() {
+        return 4 + 4 * 8 + (features ? Film.FEATURES * 8 : 0);
     }
 
     /**
@@ -77,7 +89,7 @@ final class Checkpoint {
      * @return the identity, to save and restore checkpoints of that render
      */
     static Checkpoint of(Scene scene, RenderSettings settings) {
-        return new Checkpoint(sceneDigest(scene), settingsKey(settings), settings.width(), settings.height());
+        return new Checkpoint(sceneDigest(scene), settingsKey(settings), settings.width(), settings.height(), !settings.aovs().isEmpty());
     }
 
     /** The fingerprint of the scene's content (SHA-256). */
@@ -113,7 +125,7 @@ final class Checkpoint {
      * @return bytes
      */
     long fileSize() {
-        return headerSize(settingsKey) + (long) width * height * PIXEL_BYTES + 4;
+        return headerSize(settingsKey) + (long) width * height * pixelBytes() + 4;
     }
 
     /**
@@ -131,6 +143,9 @@ final class Checkpoint {
         if (film.width() != width || film.height() != height) {
             throw new IllegalArgumentException("film " + film.width() + "x" + film.height() + " is not " + width + "x" + height);
         }
+        if (film.hasFeatures() != features) {
+            throw new IllegalArgumentException("the film " + (features ? "lacks" : "has") + " the feature buffers of the settings");
+        }
         int reached = film.minSampleCount();
         AtomicFile.write(file, os -> {
             var crc = new CRC32C();
@@ -144,13 +159,13 @@ final class Checkpoint {
             out.writeInt(reached);
             out.writeLong(invalidSamples);
             out.writeDouble(seconds);
-            double[] sums = new double[3];
+            double[] sums = new double[film.stateSums()];
             for (int y = 0; y < height; y++) {
                 for (int x = 0; x < width; x++) {
                     out.writeInt(film.pixelState(x, y, sums));
-                    out.writeDouble(sums[0]);
-                    out.writeDouble(sums[1]);
-                    out.writeDouble(sums[2]);
+                    for (double v : sums) {
+                        out.writeDouble(v);
+                    }
                 }
             }
             out.flush();
@@ -182,6 +197,10 @@ final class Checkpoint {
                 throw new CheckpointException(file, "not a strahl checkpoint");
             }
             int version = in.readInt();
+            if (version == 1) {
+                throw new CheckpointException(file, "checkpoint format version 1, made before strahl kept the per-pixel variance;"
+                        + " this strahl reads version " + VERSION + " only: render anew");
+            }
             if (version != VERSION) {
                 throw new CheckpointException(file, "checkpoint format version " + version + "; this strahl reads version " + VERSION);
             }
@@ -190,7 +209,7 @@ final class Checkpoint {
             int w = in.readInt();
             int h = in.readInt();
             // The size the header announces, checked before anything is allocated
-            long expected = headerSize(settings) + (long) Math.max(w, 0) * Math.max(h, 0) * PIXEL_BYTES + 4;
+            long expected = headerSize(settings) + (long) Math.max(w, 0) * Math.max(h, 0) * pixelBytes() + 4;
             if (w <= 0 || h <= 0 || size > expected) {
                 throw new CheckpointException(file, "corrupt checkpoint (" + size + " bytes for a " + w + "x" + h + " film)");
             }
@@ -211,16 +230,21 @@ final class Checkpoint {
             int reached = in.readInt();
             long invalid = in.readLong();
             double seconds = in.readDouble();
-            Film film = new Film(width, height);
+            Film film = new Film(width, height, features);
+            double[] sums = new double[film.stateSums()];
             int min = Integer.MAX_VALUE;
             for (int y = 0; y < height; y++) {
                 for (int x = 0; x < width; x++) {
                     int n = in.readInt();
-                    double r = in.readDouble(), g = in.readDouble(), b = in.readDouble();
-                    if (n < 0 || !Double.isFinite(r) || !Double.isFinite(g) || !Double.isFinite(b)) {
+                    boolean finite = n >= 0;
+                    for (int i = 0; i < sums.length; i++) {
+                        sums[i] = in.readDouble();
+                        finite &= Double.isFinite(sums[i]);
+                    }
+                    if (!finite) {
                         throw new CheckpointException(file, "corrupt checkpoint (pixel " + x + "," + y + ")");
                     }
-                    film.restorePixel(x, y, n, r, g, b);
+                    film.restorePixel(x, y, n, sums);
                     min = Math.min(min, n);
                 }
             }
@@ -295,7 +319,9 @@ final class Checkpoint {
         StringBuilder sb = new StringBuilder();
         appendComponents(sb, "", settings);
         // Not a setting but decides the samples as much: the sample mode of the JVM (-Dstrahl.sampler).
-        return sb.append(";sampler=").append(RenderWorkers.stratifiedSampler() ? "stratified" : "independent").toString();
+        sb.append(";sampler=").append(RenderWorkers.stratifiedSampler() ? "stratified" : "independent");
+        // Which buffers are written does not matter, whether the film keeps features does (its layout).
+        return sb.append(";features=").append(!settings.aovs().isEmpty()).toString();
     }
 
     private static void appendComponents(StringBuilder sb, String prefix, Record record) {

@@ -3,6 +3,7 @@ package dev.strahl.render;
 import dev.strahl.camera.PinholeRays;
 import dev.strahl.film.Film;
 import dev.strahl.image.Image;
+import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.scene.Camera;
 import dev.strahl.scene.Scene;
@@ -10,6 +11,7 @@ import dev.strahl.world.World;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Objects;
+import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
@@ -67,7 +69,12 @@ public final class RenderJob implements AutoCloseable {
                       Checkpoint.Restored restored, Function<Film, PassRunner> cluster) {
         this.settings = Objects.requireNonNull(settings, "settings");
         this.listener = Objects.requireNonNull(listener, "listener");
-        this.film = restored != null ? restored.film() : new Film(settings.width(), settings.height());
+        boolean features = !settings.aovs().isEmpty();
+        if (features && cluster != null) {
+            // a work unit carries a tile's colour sums and counts, not its feature sums
+            throw new IllegalArgumentException("feature buffers (--aov, --denoise) are not rendered by a cluster yet: render them locally");
+        }
+        this.film = restored != null ? restored.film() : new Film(settings.width(), settings.height(), features);
         this.integrator = Objects.requireNonNull(integrator, "integrator");
         this.scene = Objects.requireNonNull(scene, "scene");
         this.identity = identity;
@@ -75,9 +82,11 @@ public final class RenderJob implements AutoCloseable {
         this.earlierSeconds = restored != null ? restored.seconds() : 0;
         Camera c = scene.camera();
         var rays = new PinholeRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), settings.width(), settings.height());
+        World world = World.of(scene);
         int number = JOB_NUMBER.incrementAndGet();
         this.workers = cluster != null ? cluster.apply(film)
-                : new RenderWorkers(film, rays, integrator, settings.seed(), settings.effectiveThreads(), settings.schedule(), "strahl-render-" + number);
+                : new RenderWorkers(film, rays, integrator, features ? () -> new FeatureTracer(world, settings.cullBackFaces()) : null,
+                        settings.seed(), settings.effectiveThreads(), settings.schedule(), "strahl-render-" + number);
         this.completedSpp = Math.min(film.minSampleCount(), settings.samplesPerPixel());   // 0, unless the film was restored
         this.restoredSamples = film.totalSamples();
     }
@@ -309,6 +318,29 @@ public final class RenderJob implements AutoCloseable {
     public Image awaitCompletion() throws InterruptedException {
         awaitStats();
         return film.toImage();
+    }
+
+    /**
+     * Waits for the render to end and returns its image with the per-pixel variance and the
+     * feature buffers of the settings ({@link RenderSettings#aovs()}): what a {@link Denoiser}
+     * and the EXR output take.
+     *
+     * @return the buffers
+     * @throws InterruptedException if the waiting thread is interrupted
+     * @throws IllegalStateException if the render failed
+     */
+    public RenderBuffers awaitBuffers() throws InterruptedException {
+        awaitStats();
+        return buffers();
+    }
+
+    /** The film's buffers; consistent only while nothing renders into it. */
+    private RenderBuffers buffers() {
+        Set<Aov> aovs = settings.aovs();
+        return new RenderBuffers(film.toImage(), film.varianceImage(),
+                aovs.contains(Aov.ALBEDO) ? film.featureImage(0) : null,
+                aovs.contains(Aov.NORMAL) ? film.featureImage(3) : null,
+                aovs.contains(Aov.DEPTH) ? film.featureImage(6) : null);
     }
 
     /**

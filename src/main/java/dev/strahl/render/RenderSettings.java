@@ -1,7 +1,10 @@
 package dev.strahl.render;
 
 import java.time.Duration;
+import java.util.Collections;
+import java.util.EnumSet;
 import java.util.Objects;
+import java.util.Set;
 import java.util.function.Consumer;
 
 /**
@@ -27,11 +30,12 @@ import java.util.function.Consumer;
  * @param photons         the photon mapper's photons per iteration and initial gather radius
  * @param accel           teaching option: the BVH, or none (every ray against every primitive)
  * @param schedule        teaching option: tiles from a shared counter, or one stripe per thread
+ * @param aovs            the feature buffers to keep beside the image (empty: none); see {@link Aov}
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, long seed, int threads,
                              HemisphereSampling hemisphere, boolean cullBackFaces, int samplesPerPass,
                              IntegratorKind integrator, int lightSamples, Duration timeLimit, PhotonParameters photons,
-                             Acceleration accel, Schedule schedule) {
+                             Acceleration accel, Schedule schedule, Set<Aov> aovs) {
 
     /** Largest accepted film edge, to refuse absurd sizes before allocating. */
     public static final int MAX_SIZE = 1 << 15;
@@ -54,6 +58,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * @param photons         the photon mapper's parameters
      * @param accel           how rays find primitives: the BVH, or none (a teaching option)
      * @param schedule        how threads share the image: tiles, or stripes (a teaching option)
+     * @param aovs            the feature buffers to keep; copied (iterated in the order of {@link Aov})
      */
     public RenderSettings {
         if (width <= 0 || height <= 0) {
@@ -83,6 +88,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         Objects.requireNonNull(photons, "photons");
         Objects.requireNonNull(accel, "accel");
         Objects.requireNonNull(schedule, "schedule");
+        aovs = aovs.isEmpty() ? Set.of() : Collections.unmodifiableSet(EnumSet.copyOf(aovs));
         if (timeLimit.isNegative()) {
             throw new IllegalArgumentException("time limit must not be negative, got " + timeLimit);
         }
@@ -91,13 +97,13 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
     /**
      * 512×512, 64 spp, unbounded depth, seed 0, all processors, cosine sampling, no culling,
      * automatic passes, path tracing with one light sample, no time limit, the photon mapper's
-     * {@linkplain PhotonParameters#defaults() defaults}, the BVH and tiles.
+     * {@linkplain PhotonParameters#defaults() defaults}, the BVH and tiles, and no feature buffers.
      *
      * @return the defaults
      */
     public static RenderSettings defaults() {
         return new RenderSettings(512, 512, 64, -1, 0, 0, HemisphereSampling.COSINE, false, 0, IntegratorKind.PATH, 1, Duration.ZERO,
-                PhotonParameters.defaults(), Acceleration.BVH, Schedule.TILES);
+                PhotonParameters.defaults(), Acceleration.BVH, Schedule.TILES, Set.of());
     }
 
     /**
@@ -245,6 +251,16 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
     }
 
     /**
+     * These settings with other feature buffers.
+     *
+     * @param kept the feature buffers to keep beside the image; none for an empty set
+     * @return a new settings object
+     */
+    public RenderSettings withAovs(Set<Aov> kept) {
+        return edit(e -> e.aovs = kept);
+    }
+
+    /**
      * The thread count to use.
      *
      * @return {@link #threads()}, or the available processors when it is 0
@@ -258,7 +274,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         Fields f = new Fields(this);
         change.accept(f);
         return new RenderSettings(f.width, f.height, f.samplesPerPixel, f.maxDepth, f.seed, f.threads, f.hemisphere, f.cullBackFaces,
-                f.samplesPerPass, f.integrator, f.lightSamples, f.timeLimit, f.photons, f.accel, f.schedule);
+                f.samplesPerPass, f.integrator, f.lightSamples, f.timeLimit, f.photons, f.accel, f.schedule, f.aovs);
     }
 
     /** The components as mutable fields, for {@link #edit}. */
@@ -272,6 +288,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         PhotonParameters photons;
         Acceleration accel;
         Schedule schedule;
+        Set<Aov> aovs;
 
         Fields(RenderSettings s) {
             width = s.width;
@@ -289,6 +306,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
             photons = s.photons;
             accel = s.accel;
             schedule = s.schedule;
+            aovs = s.aovs;
         }
     }
 }

@@ -4,6 +4,7 @@ import dev.strahl.math.MutableRgb;
 import dev.strahl.camera.PinholeRays;
 import dev.strahl.film.Film;
 import dev.strahl.geometry.Ray;
+import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Parallel;
 import dev.strahl.sampling.IndependentSampler;
@@ -19,6 +20,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
+import java.util.function.Supplier;
 
 /**
  * The threads of one render job and what each owns: a fixed pool whose workers take
@@ -34,6 +36,7 @@ import java.util.function.Consumer;
  */
 final class RenderWorkers implements Parallel, PassRunner {
     private final Film film;
+    private final long seed;
     private final PinholeRays cameraRays;
     private final ExecutorService pool;
     private final WorkerState[] workers;
@@ -54,7 +57,16 @@ final class RenderWorkers implements Parallel, PassRunner {
         return !"independent".equals(System.getProperty("strahl.sampler"));
     }
 
-    RenderWorkers(Film film, PinholeRays cameraRays, Integrator integrator, long seed, int threads, Schedule schedule, String name) {
+    /**
+     * Workers for a film; {@code features}, when not null, makes a tracer per thread for the
+     * feature buffers of every camera sample (the film must then keep features).
+     */
+    RenderWorkers(Film film, PinholeRays cameraRays, Integrator integrator, Supplier<FeatureTracer> features, long seed, int threads,
+                  Schedule schedule, String name) {
+        if (features != null && !film.hasFeatures()) {
+            throw new IllegalArgumentException("feature buffers need a film that keeps them");
+        }
+        this.seed = seed;
         this.film = film;
         this.cameraRays = cameraRays;
         this.schedule = schedule;
@@ -67,7 +79,7 @@ final class RenderWorkers implements Parallel, PassRunner {
         });
         this.workers = new WorkerState[threads];
         for (int i = 0; i < threads; i++) {
-            workers[i] = new WorkerState(i, integrator.newWorker(), newSampler(stratified, seed));
+            workers[i] = new WorkerState(i, integrator.newWorker(), newSampler(stratified, seed), features != null ? features.get() : null);
         }
     }
 
@@ -161,7 +173,7 @@ final class RenderWorkers implements Parallel, PassRunner {
     public long rayCount() {
         long rays = 0;
         for (WorkerState w : workers) {
-            rays += w.integrator.rayCount();
+            rays += w.integrator.rayCount() + (w.features != null ? w.features.rayCount() : 0);
         }
         return rays;
     }
@@ -299,7 +311,11 @@ final class RenderWorkers implements Parallel, PassRunner {
                 int s0 = Math.max(firstSample, film.sampleCountAt(pixel));
                 rowSamples += Math.max(0, endSample - s0);
                 for (int s = s0; s < endSample; s++) {
-                    if (sample(w, cameraRays, x, y, s)) {
+                    boolean finite = sample(w, cameraRays, seed, x, y, s);
+                    if (w.features != null) {
+                        film.addFeatures(pixel, w.featureValues);
+                    }
+                    if (finite) {
                         film.add(pixel, w.radiance.r, w.radiance.g, w.radiance.b);
                     } else {
                         film.add(pixel, 0, 0, 0);
@@ -320,10 +336,17 @@ final class RenderWorkers implements Parallel, PassRunner {
      *
      * @return whether the radiance is finite (otherwise the caller adds black and counts it)
      */
-    static boolean sample(WorkerState w, PinholeRays cameraRays, int x, int y, int s) {
+    static boolean sample(WorkerState w, PinholeRays cameraRays, long seed, int x, int y, int s) {
         w.sampler.startPixelSample(x, y, s);
         w.sampler.getPixel2D(w.filmPosition);
         cameraRays.generate(x + w.filmPosition.u1, y + w.filmPosition.u2, w.ray);
+        if (w.features != null) {
+            // before the integrator, which may change the ray; from streams of its own
+            w.featureRay.o.set(w.ray.o);
+            w.featureRay.d.set(w.ray.d);
+            w.featureRay.tMax = w.ray.tMax;
+            w.features.trace(w.featureRay, seed, x, y, s, w.featureValues);
+        }
         w.integrator.radiance(w.ray, w.sampler, w.radiance);
         return w.radiance.isFinite();
     }
@@ -343,11 +366,15 @@ final class RenderWorkers implements Parallel, PassRunner {
         final Sample2D filmPosition = new Sample2D();
         final Ray ray = new Ray();
         final MutableRgb radiance = new MutableRgb();
+        final FeatureTracer features;
+        final Ray featureRay = new Ray();
+        final double[] featureValues = new double[FeatureTracer.CHANNELS];
 
-        WorkerState(int index, Integrator.Worker integrator, Sampler sampler) {
+        WorkerState(int index, Integrator.Worker integrator, Sampler sampler, FeatureTracer features) {
             this.index = index;
             this.integrator = integrator;
             this.sampler = sampler;
+            this.features = features;
         }
     }
 }

@@ -16,6 +16,7 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.time.Duration;
 import java.util.Arrays;
+import java.util.Set;
 import java.util.concurrent.ConcurrentLinkedQueue;
 
 /**
@@ -84,7 +85,7 @@ final class UnitRenderers implements UnitService {
             var settings = new RenderSettings(in.readInt(), in.readInt(), in.readInt(), in.readInt(), in.readLong(), in.readInt(),
                     HemisphereSampling.valueOf(in.readUTF()), in.readBoolean(), in.readInt(), IntegratorKind.valueOf(in.readUTF()),
                     in.readInt(), Duration.ofNanos(in.readLong()), new PhotonParameters(in.readInt(), in.readDouble()),
-                    Acceleration.valueOf(in.readUTF()), Schedule.valueOf(in.readUTF()));
+                    Acceleration.valueOf(in.readUTF()), Schedule.valueOf(in.readUTF()), Set.of());   // a cluster renders no feature buffers (RenderJob refuses them)
             return new Decoded(settings, in.readBoolean());
         } catch (IOException e) {
             throw new IllegalArgumentException("unreadable settings: " + e.getMessage(), e);
@@ -110,7 +111,7 @@ final class UnitRenderers implements UnitService {
         public void render(WorkUnit unit) {
             RenderWorkers.WorkerState w = idle.poll();
             if (w == null) {
-                w = new RenderWorkers.WorkerState(0, integrator.newWorker(), RenderWorkers.newSampler(stratified, seed));
+                w = new RenderWorkers.WorkerState(0, integrator.newWorker(), RenderWorkers.newSampler(stratified, seed), null);
             }
             try {
                 long raysBefore = w.integrator.rayCount();
@@ -126,7 +127,7 @@ final class UnitRenderers implements UnitService {
                         int k = 3 * i;
                         // as RenderWorkers.renderTiles and Film.add: each sample added to the sums in index order
                         for (int s = Math.max(unit.firstSample(), counts[i]); s < end; s++) {
-                            if (RenderWorkers.sample(w, rays, x, y, s)) {
+                            if (RenderWorkers.sample(w, rays, seed, x, y, s)) {
                                 sums[k] += w.radiance.r;
                                 sums[k + 1] += w.radiance.g;
                                 sums[k + 2] += w.radiance.b;

@@ -216,7 +216,7 @@ class BadInputTest {
             refused("checkpoint interval zero", files(), scene(CORNELL, "--checkpoint-interval", "0s"), "must be a positive duration"),
             refused("output directory missing", files(), scene(CORNELL, "-o", "$OUT/no/a.png"), "output directory does not exist: $OUT/no"),
             refused("output is a directory", files("d.png/x", ""), scene(CORNELL, "-o", "$IN/d.png"), "output $IN/d.png is a directory"),
-            refused("output extension unknown", files(), scene(CORNELL, "-o", "$OUT/a.jpg"), "unknown image format of $OUT/a.jpg: use .png or .pfm"),
+            refused("output extension unknown", files(), scene(CORNELL, "-o", "$OUT/a.jpg"), "unknown image format of $OUT/a.jpg: use .png, .pfm or .exr"),
             refused("output without extension", files(), scene(CORNELL, "-o", "$OUT/a"), "unknown image format of $OUT/a"),
             // ---- checkpoints ----
             refused("resume from a missing checkpoint", files(), scene(CORNELL, "--resume", "$IN/none.ck"), "$IN/none.ck: checkpoint not found"),

@@ -21,7 +21,7 @@ class HeapCheckTest {
         assertThat(need).isEqualTo(Film.bytesNeeded(8000, 8000) + 28L * 8000 * 8000);
         assertThatThrownBy(() -> HeapCheck.checkFilm(8000, 8000, GIB, 24L << 20))
                 .isInstanceOf(IllegalArgumentException.class)
-                .hasMessage("a 8000x8000 image needs 3.3 GiB for its film and image buffers, but the Java heap has 1000.0 MiB free"
+                .hasMessage("a 8000x8000 image needs 3.8 GiB for its film and image buffers, but the Java heap has 1000.0 MiB free"
                         + " of at most 1.0 GiB; render a smaller image or give Java more memory (java -Xmx...)");
     }
 

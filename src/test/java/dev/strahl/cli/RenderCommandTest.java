@@ -155,12 +155,12 @@ class RenderCommandTest {
 
     @Test
     void unknownOutputExtension() throws IOException {
-        assertRefused(render(CORNELL, out.resolve("a.jpg")), "a.jpg", ".png or .pfm");
+        assertRefused(render(CORNELL, out.resolve("a.jpg")), "a.jpg", ".png, .pfm or .exr");
     }
 
     @Test
     void outputWithoutExtension() throws IOException {
-        assertRefused(render(CORNELL, out.resolve("image")), "image", ".png or .pfm");
+        assertRefused(render(CORNELL, out.resolve("image")), "image", ".png, .pfm or .exr");
     }
 
     @Test

@@ -176,4 +176,56 @@ class TonemapTest {
     private static int[] pixels(BufferedImage bi) {
         return bi.getRGB(0, 0, bi.getWidth(), bi.getHeight(), null, 0, bi.getWidth());
     }
+
+    @Test
+    void acesIsNarkowiczsFitClampedToOne() {
+        assertThat(Tonemap.aces(0)).isEqualTo(0.0);
+        assertThat(Tonemap.aces(-1)).isEqualTo(0.0);
+        assertThat(Tonemap.aces(Double.NaN)).isEqualTo(0.0);
+        // x = 1: (2.51 + 0.03) / (2.43 + 0.59 + 0.14) = 2.54 / 3.16
+        assertThat(Tonemap.aces(1)).isCloseTo(2.54 / 3.16, within(1e-12));
+        assertThat(Tonemap.aces(1e6)).isEqualTo(1.0);
+        double prev = 0;
+        for (double x = 0.001; x < 100; x *= 1.1) {
+            double v = Tonemap.aces(x);
+            assertThat(v).isGreaterThanOrEqualTo(prev).isLessThanOrEqualTo(1);
+            prev = v;
+        }
+    }
+
+    @Test
+    void agxIsMonotoneOnGreysStaysInRangeAndDesaturatesHighlights() {
+        double prev = -1;
+        for (double x = 1e-4; x < 1000; x *= 1.2) {
+            double[] c = {x, x, x};
+            Tonemap.agx(c);
+            assertThat(c[0]).isGreaterThanOrEqualTo(prev).isBetween(0.0, 1.0);
+            assertThat(c[1]).isCloseTo(c[0], within(1e-3));
+            prev = c[0];
+        }
+        double[] black = {0, 0, Double.NaN};
+        Tonemap.agx(black);
+        assertThat(black[0]).isBetween(0.0, 0.01);
+        // a very bright saturated red comes out brighter in green and blue than a dim one: towards white
+        double[] dim = {0.5, 0.05, 0.05}, bright = {50, 5, 5};
+        Tonemap.agx(dim);
+        Tonemap.agx(bright);
+        assertThat(bright[1] / bright[0]).isGreaterThan(dim[1] / dim[0]);
+    }
+
+    @Test
+    void clampIsTheDefaultCurveBitForBit() {
+        float[] v = new float[3 * 64];
+        for (int i = 0; i < v.length; i++) {
+            v[i] = (float) Math.pow(1.1, i - 90);
+        }
+        Image img = new Image(8, 8, v);
+        var a = Tonemap.toBufferedImage(img, 0.5);
+        var b = Tonemap.toBufferedImage(img, 0.5, dev.strahl.image.ToneMapping.CLAMP);
+        for (int y = 0; y < 8; y++) {
+            for (int x = 0; x < 8; x++) {
+                assertThat(b.getRGB(x, y)).isEqualTo(a.getRGB(x, y));
+            }
+        }
+    }
 }

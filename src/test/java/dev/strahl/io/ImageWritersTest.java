@@ -4,7 +4,19 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import static dev.strahl.io.exr.ExrPixelType.FLOAT;
+import static dev.strahl.io.exr.ExrPixelType.HALF;
+
 import dev.strahl.film.Film;
+import dev.strahl.film.Tonemap;
+import dev.strahl.image.ToneMapping;
+import dev.strahl.io.exr.ExrCompression;
+import dev.strahl.io.exr.ExrHeader;
+import dev.strahl.io.exr.ExrReader;
+import dev.strahl.io.exr.Half;
+import dev.strahl.io.image.ChannelImage;
+import dev.strahl.render.Aov;
+import dev.strahl.render.RenderBuffers;
 import dev.strahl.io.image.AtomicFile;
 import dev.strahl.io.image.PfmReader;
 import dev.strahl.image.Image;
@@ -98,10 +110,11 @@ class ImageWritersTest {
     }
 
     @Test
-    void isSupportedKnowsPngAndPfmInAnyCase() {
+    void isSupportedKnowsPngPfmAndExrInAnyCase() {
         assertThat(ImageWriters.isSupported(Path.of("a.png"))).isTrue();
         assertThat(ImageWriters.isSupported(Path.of("dir/b.PFM"))).isTrue();
-        assertThat(ImageWriters.isSupported(Path.of("c.exr"))).isFalse();
+        assertThat(ImageWriters.isSupported(Path.of("c.Exr"))).isTrue();
+        assertThat(ImageWriters.isSupported(Path.of("d.hdr"))).isFalse();
         assertThat(ImageWriters.isSupported(Path.of("png"))).isFalse();
         assertThat(ImageWriters.isSupported(Path.of("archive.png.gz"))).isFalse();
     }
@@ -111,7 +124,7 @@ class ImageWritersTest {
         Path out = dir.resolve("out.xyz");
         assertThatThrownBy(() -> ImageWriters.write(gradient(1, 1, 0), out))
                 .isExactlyInstanceOf(IllegalArgumentException.class)
-                .hasMessage("unknown image format '.xyz' of " + out + ": use .png or .pfm");
+                .hasMessage("unknown image format '.xyz' of " + out + ": use .png, .pfm or .exr");
         Path bare = dir.resolve("out");
         assertThatThrownBy(() -> ImageWriters.write(new Film(1, 1), bare))
                 .isExactlyInstanceOf(IllegalArgumentException.class)
@@ -179,5 +192,117 @@ class ImageWritersTest {
         ImageWriters.write(gradient(1, 1, 0), out);
         assertThat(PosixFilePermissions.toString(Files.getPosixFilePermissions(out)))
                 .isEqualTo(PosixFilePermissions.toString(Files.getPosixFilePermissions(plain)));
+    }
+
+    /** Buffers whose every value differs: color ramps, albedo, normal, a depth beyond half's range. */
+    private static RenderBuffers buffers(int w, int h) {
+        float[] albedo = new float[3 * w * h], normal = new float[3 * w * h], depth = new float[3 * w * h];
+        for (int p = 0; p < w * h; p++) {
+            for (int c = 0; c < 3; c++) {
+                albedo[3 * p + c] = 0.1f * c + 0.001f * p;
+                normal[3 * p + c] = c == 2 ? 1 - 0.01f * p : -0.5f + 0.02f * p;
+                depth[3 * p + c] = 70000f + p;                         // above 65504: FLOAT, not HALF
+            }
+        }
+        Image color = gradient(w, h, 0.25f);
+        return new RenderBuffers(color, new Image(w, h, new float[3 * w * h]), new Image(w, h, albedo), new Image(w, h, normal),
+                new Image(w, h, depth));
+    }
+
+    @Test
+    void exrHoldsTheImageAndItsFeatureBuffersInOneFileWithTheNamesOfTheLayers() throws IOException {
+        RenderBuffers b = buffers(5, 3);
+        Path out = dir.resolve("out.exr");
+        ImageWriters.write(b, out, ImageWriters.Options.DEFAULT);
+        ExrReader.ExrImage read = ExrReader.readFile(out);
+        assertThat(read.header().compression()).isEqualTo(ExrCompression.ZIP);
+        assertThat(read.header().channels()).extracting(ExrHeader.Channel::name)
+                .containsExactly("B", "G", "R", "albedo.B", "albedo.G", "albedo.R", "depth.Z", "normal.X", "normal.Y", "normal.Z");
+        assertThat(read.header().channels()).extracting(ExrHeader.Channel::type)
+                .containsExactly(HALF, HALF, HALF, HALF, HALF, HALF, FLOAT, HALF, HALF, HALF);
+        ChannelImage px = read.pixels();
+        String[][] layers = {{"R", "G", "B"}, {"albedo.R", "albedo.G", "albedo.B"}, {"normal.X", "normal.Y", "normal.Z"}};
+        Image[] images = {b.color(), b.albedo(), b.normal()};
+        for (int l = 0; l < 3; l++) {
+            for (int y = 0; y < 3; y++) {
+                for (int x = 0; x < 5; x++) {
+                    for (int c = 0; c < 3; c++) {
+                        float v = images[l].get(x, y, c);
+                        assertThat(px.get(x, y, px.channel(layers[l][c]))).as("%s at %d,%d", layers[l][c], x, y)
+                                .isEqualTo(Half.toFloat(Half.fromFloat(v)));
+                    }
+                }
+                for (int x = 0; x < 5; x++) {
+                    assertThat(px.get(x, y, px.channel("depth.Z"))).isEqualTo(b.depth().get(x, y, 0));
+                }
+            }
+        }
+        // float samples, no compression: every value exactly
+        Path flat = dir.resolve("flat.exr");
+        ImageWriters.write(b, flat, new ImageWriters.Options(ToneMapping.CLAMP, 0, true, false));
+        ExrReader.ExrImage f = ExrReader.readFile(flat);
+        assertThat(f.header().compression()).isEqualTo(ExrCompression.NONE);
+        assertThat(f.header().channels()).extracting(ExrHeader.Channel::type).containsOnly(FLOAT);
+        assertThat(f.pixels().get(4, 2, f.pixels().channel("normal.Y"))).isEqualTo(b.normal().get(4, 2, 1));
+        // an image alone: R, G, B only
+        ImageWriters.write(b.color(), dir.resolve("plain.exr"));
+        assertThat(ExrReader.readFile(dir.resolve("plain.exr")).header().channels()).extracting(ExrHeader.Channel::name)
+                .containsExactly("B", "G", "R");
+    }
+
+    @Test
+    void openExrReadsTheLayersStrahlWrites() throws Exception {
+        boolean available;
+        try {
+            Process p = new ProcessBuilder("python3", "-c", "import OpenEXR, numpy").redirectErrorStream(true).start();
+            p.getInputStream().readAllBytes();
+            available = p.waitFor() == 0;
+        } catch (IOException e) {
+            available = false;
+        }
+        assumeTrue(available, "python3 with the OpenEXR package is not installed");
+        RenderBuffers b = buffers(4, 2);
+        Path out = dir.resolve("layers.exr");
+        ImageWriters.write(b, out, ImageWriters.Options.DEFAULT);
+        Process p = new ProcessBuilder("python3", "docs/anchors/exr_dump.py", out.toString()).redirectErrorStream(true).start();
+        String dump = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        assertThat(p.waitFor()).as(dump).isZero();
+        List<String> channels = dump.lines().filter(l -> l.startsWith("channel ")).map(l -> l.split(" ")[1] + " " + l.split(" ")[2])
+                .collect(Collectors.toList());
+        assertThat(channels).containsExactly("B HALF", "G HALF", "R HALF", "albedo.B HALF", "albedo.G HALF", "albedo.R HALF",
+                "depth.Z FLOAT", "normal.X HALF", "normal.Y HALF", "normal.Z HALF");
+        // the first depth sample, as OpenEXR read it: the float's bits
+        String depth = dump.lines().filter(l -> l.startsWith("channel depth.Z ")).findFirst().orElseThrow();
+        assertThat(Integer.parseUnsignedInt(depth.split(" ")[3], 16)).isEqualTo(Float.floatToIntBits(70000f));
+    }
+
+    @Test
+    void featureBuffersGoBesideAPngOrPfmAsPfmFiles() throws IOException {
+        RenderBuffers b = buffers(3, 2);
+        Path png = dir.resolve("shot.png");
+        ImageWriters.write(new RenderBuffers(b.color(), b.variance(), b.albedo(), null, b.depth()), png, ImageWriters.Options.DEFAULT);
+        assertThat(filesIn(dir)).containsExactly("shot.albedo.pfm", "shot.depth.pfm", "shot.png");
+        assertThat(PfmReader.read(dir.resolve("shot.albedo.pfm"))).isEqualTo(b.albedo());
+        assertThat(PfmReader.read(dir.resolve("shot.depth.pfm"))).isEqualTo(b.depth());
+        assertThat(ImageWriters.featureFile(Path.of("a/b.c.pfm"), Aov.NORMAL)).isEqualTo(Path.of("a/b.c.normal.pfm"));
+    }
+
+    @Test
+    void pngToneCurveAndExposureApplyToPngOnly() throws IOException {
+        Image img = new Image(1, 1, new float[] {4, 1, 0.25f});
+        Path clamp = dir.resolve("clamp.png");
+        Path aces = dir.resolve("aces.png");
+        ImageWriters.write(RenderBuffers.of(img), clamp, ImageWriters.Options.DEFAULT);
+        ImageWriters.write(RenderBuffers.of(img), aces, new ImageWriters.Options(ToneMapping.ACES, -1, false, true));
+        int c = ImageIO.read(clamp.toFile()).getRGB(0, 0);
+        int a = ImageIO.read(aces.toFile()).getRGB(0, 0);
+        assertThat(c & 0xFFFFFF).isEqualTo(0xFFFF89);                   // 4 and 1 clamp to 255, 0.25 -> 137
+        // ACES at −1 EV: 2 -> 0.908 -> 245, 0.5 -> 0.616 -> 205, 0.125 -> 0.167 -> 114
+        assertThat((a >> 16) & 0xFF).isEqualTo(Tonemap.toSrgb8(Tonemap.aces(2)));
+        assertThat((a >> 8) & 0xFF).isEqualTo(Tonemap.toSrgb8(Tonemap.aces(0.5)));
+        assertThat(a & 0xFF).isEqualTo(Tonemap.toSrgb8(Tonemap.aces(0.125)));
+        Path pfm = dir.resolve("linear.pfm");
+        ImageWriters.write(RenderBuffers.of(img), pfm, new ImageWriters.Options(ToneMapping.AGX, 3, false, true));
+        assertThat(PfmReader.read(pfm)).isEqualTo(img);
     }
 }

@@ -20,7 +20,11 @@ public final class PngWriter {
 
     /** Writes {@code img} to {@code out}; does not close {@code out}. */
     public static void write(Image img, OutputStream out) throws IOException {
-        BufferedImage bi = Tonemap.toBufferedImage(img, 0);
+        write(Tonemap.toBufferedImage(img, 0), out);
+    }
+
+    /** Writes an 8-bit image already tone-mapped and encoded to {@code out}; does not close {@code out}. */
+    public static void write(BufferedImage bi, OutputStream out) throws IOException {
         // A memory cache rather than ImageIO's default file cache in java.io.tmpdir: the only file
         // a write creates is the caller's (ImageWriters' temporary file).
         try (ImageOutputStream ios = new MemoryCacheImageOutputStream(out)) {
