@@ -1,7 +1,7 @@
 package dev.strahl.render;
 
 import dev.strahl.math.MutableRgb;
-import dev.strahl.camera.PinholeRays;
+import dev.strahl.camera.CameraRays;
 import dev.strahl.film.Film;
 import dev.strahl.geometry.Ray;
 import dev.strahl.integrator.Integrator;
@@ -19,6 +19,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
+import org.joml.Vector3d;
 
 /**
  * The threads of one render job and what each owns: a fixed pool whose workers take
@@ -33,7 +34,8 @@ import java.util.function.Consumer;
  */
 final class RenderWorkers implements Parallel {
     private final Film film;
-    private final PinholeRays cameraRays;
+    private final CameraRays cameraRays;
+    private final boolean lens;
     private final ExecutorService pool;
     private final WorkerState[] workers;
     private final AtomicLong samplesDone = new AtomicLong();
@@ -50,9 +52,10 @@ final class RenderWorkers implements Parallel {
         return !"independent".equals(System.getProperty("strahl.sampler"));
     }
 
-    RenderWorkers(Film film, PinholeRays cameraRays, Integrator integrator, long seed, int threads, String name) {
+    RenderWorkers(Film film, CameraRays cameraRays, Integrator integrator, long seed, int threads, String name) {
         this.film = film;
         this.cameraRays = cameraRays;
+        this.lens = cameraRays.hasLens();
         boolean stratified = stratifiedSampler();
         AtomicInteger workerNumber = new AtomicInteger();
         this.pool = Executors.newFixedThreadPool(threads, r -> {
@@ -233,7 +236,13 @@ final class RenderWorkers implements Parallel {
                     for (int s = s0; s < endSample; s++) {
                         w.sampler.startPixelSample(x, y, s);
                         w.sampler.getPixel2D(w.filmPosition);
-                        cameraRays.generate(x + w.filmPosition.u1, y + w.filmPosition.u2, w.ray);
+                        if (lens) {
+                            w.sampler.get2D(w.lensPosition);     // a thin lens: the next pair, before the integrator's
+                            cameraRays.generate(x + w.filmPosition.u1, y + w.filmPosition.u2, w.lensPosition.u1, w.lensPosition.u2,
+                                    w.disk, w.ray);
+                        } else {
+                            cameraRays.generate(x + w.filmPosition.u1, y + w.filmPosition.u2, w.ray);
+                        }
                         w.integrator.radiance(w.ray, w.sampler, w.radiance);
                         if (w.radiance.isFinite()) {
                             film.add(pixel, w.radiance.r, w.radiance.g, w.radiance.b);
@@ -257,6 +266,8 @@ final class RenderWorkers implements Parallel {
         final Integrator.Worker integrator;
         final Sampler sampler;
         final Sample2D filmPosition = new Sample2D();
+        final Sample2D lensPosition = new Sample2D();
+        final Vector3d disk = new Vector3d();
         final Ray ray = new Ray();
         final MutableRgb radiance = new MutableRgb();
 

@@ -137,7 +137,7 @@ class BadInputTest {
             warned("OBJ degenerate triangles", obj(LIT + SQUARE + "f 1 2 3\nf 1 2 2\nf 1 3 1\n"), args(), "$IN/t.obj: ",
                     "skipped 2 degenerate triangles (zero area), the first at line 8"),
             noted("scene without light", files("t.obj", SQUARE + "f 1 2 3\n"), args(), "the scene has no light",
-                    "uniform white environment"),
+                    "studio sky"),
             // ---- MTL ----
             refused("MTL number that does not parse", files("t.obj", LIT + SQUARE + "f 1 2 3\n", "lit.mtl", "newmtl lamp\nKd 0.5 x 0.5\n"),
                     args(), "$IN/lit.mtl:2: ", "bad number 'x' in 'Kd'"),

@@ -5,7 +5,7 @@ import dev.strahl.testing.Meshes;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import dev.strahl.math.MutableRgb;
-import dev.strahl.camera.PinholeRays;
+import dev.strahl.camera.CameraRays;
 import dev.strahl.geometry.Ray;
 import dev.strahl.image.Rgb;
 import dev.strahl.render.HemisphereSampling;
@@ -28,7 +28,7 @@ class PathTracerAllocationTest {
     void radianceAllocatesNothingPerSample() throws Exception {
         Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
         Integrator.Worker worker = new PathTracer(World.of(scene), -1, false, false, PathTracer.Strategy.MIS).newWorker();
-        PinholeRays camera = Meshes.rays(scene.camera(), 64, 64);
+        CameraRays camera = Meshes.rays(scene.camera(), 64, 64);
         Ray ray = new Ray();
         Sample2D film = new Sample2D();
         MutableRgb out = new MutableRgb();
