@@ -13,6 +13,8 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Locale;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * Reads a linear image for an environment map: Radiance {@code .hdr}/{@code .pic}, OpenEXR
@@ -68,7 +70,7 @@ public final class EnvironmentMaps {
             ImageLimits.checkAllocation(file, image.width(), image.height(), BYTES_PER_TEXEL / Float.BYTES, 0);
             return image;
         } catch (ImageFormatException e) {
-            throw new SceneException(file, withoutFile(file, e.getMessage()), e);
+            throw asSceneException(file, e);
         } catch (NoSuchFileException e) {
             throw new SceneException(file, "environment map not found");
         } catch (IOException e) {
@@ -79,9 +81,14 @@ public final class EnvironmentMaps {
         }
     }
 
-    /** The readers' messages start with the file; a SceneException adds it again. */
-    private static String withoutFile(Path file, String message) {
+    /** The readers' messages start with the file (and a header line, "file:line: "); a SceneException adds them again. */
+    private static SceneException asSceneException(Path file, ImageFormatException e) {
+        String message = String.valueOf(e.getMessage());
+        Matcher m = Pattern.compile(Pattern.quote(file.toString()) + ":(\\d+): (.*)", Pattern.DOTALL).matcher(message);
+        if (m.matches()) {
+            return new SceneException(file, Integer.parseInt(m.group(1)), m.group(2));
+        }
         String prefix = file + ": ";
-        return message != null && message.startsWith(prefix) ? message.substring(prefix.length()) : String.valueOf(message);
+        return new SceneException(file, message.startsWith(prefix) ? message.substring(prefix.length()) : message, e);
     }
 }
