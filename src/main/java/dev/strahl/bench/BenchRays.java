@@ -3,7 +3,7 @@ package dev.strahl.bench;
 import dev.strahl.accel.Bvh;
 import dev.strahl.accel.TraversalStack;
 import dev.strahl.scene.Camera;
-import dev.strahl.camera.PinholeRays;
+import dev.strahl.camera.CameraRays;
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.Hit;
@@ -34,7 +34,7 @@ public final class BenchRays {
 
     /** Camera rays through jittered points of a width × height film, {@code spp} per pixel. */
     public static RaySet primary(Camera camera, int width, int height, int spp, long seed) {
-        PinholeRays rays = new PinholeRays(camera.lookFrom(), camera.lookAt(), camera.up(), camera.fovDegrees(), width, height);
+        CameraRays rays = new CameraRays(camera.lookFrom(), camera.lookAt(), camera.up(), camera.fovDegrees(), width, height);
         SplittableRandom random = new SplittableRandom(seed);
         int n = width * height * spp;
         double[] data = new double[7 * n];

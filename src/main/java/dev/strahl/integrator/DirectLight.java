@@ -14,8 +14,9 @@ import dev.strahl.sampling.Sampler;
 import org.joml.Vector3d;
 
 /**
- * Next-event estimation: light arriving directly from the area lights at a surface point,
- * estimated with shadow rays to points sampled on the lights. One per worker thread (it owns its
+ * Next-event estimation: light arriving directly from the area lights and the environment at a
+ * surface point, estimated with shadow rays to points sampled on the lights (or towards directions
+ * sampled on the environment). One per worker thread (it owns its
  * scratch objects); shared by the path tracer, direct lighting, Whitted and the photon mapper.
  *
  * <p>Each light sample draws its numbers first, whatever follows: a pair for the point on the
@@ -67,7 +68,7 @@ public final class DirectLight {
         for (int i = 0; i < n; i++) {
             sampler.get2D(uPoint);                 // the point on the light: one stratified pair
             double uLight = sampler.get1D();
-            if (!estimate || !lights.sample(s.sp.p, uLight, uPoint.u1, uPoint.u2, lightPoint, ls)) {
+            if (!estimate || !lights.sample(s.sp.p, uLight, uPoint.u1, uPoint.u2, use == Use.LIGHT_ONLY, lightPoint, ls)) {
                 continue;
             }
             s.frame.toLocal(ls.wi, wiLocal);
@@ -84,9 +85,15 @@ public final class DirectLight {
         }
     }
 
-    /** Whether the sampled light point is visible from sp (both ends moved off their surfaces). */
+    /** Whether the sampled light point (or, for the environment, the way out along wi) is visible from sp (both ends moved off their surfaces). */
     private boolean visible(SurfacePoint sp) {
         sp.spawnOrigin(ls.wi, shadow.o);
+        if (ls.infinite) {
+            shadow.d.set(ls.wi);
+            shadow.tMax = Double.POSITIVE_INFINITY;
+            rays++;
+            return !bvh.occluded(shadow, stack);
+        }
         toSurface.set(ls.wi).negate();
         SurfacePoint.offset(ls.p, ls.ng, toSurface, target);
         shadow.d.set(target).sub(shadow.o);

@@ -40,8 +40,10 @@ public final class DirectLighting implements Integrator {
 
             @Override
             public void radiance(Ray ray, Sampler sampler, MutableRgb out) {
+                beta.set(1, 1, 1);
                 if (tracer.trace(ray, s) < 0) {
-                    out.set(environment);
+                    out.setZero();
+                    addEnvironment(ray, beta, 1, out);
                     return;
                 }
                 out.set(s.emitted);
@@ -59,7 +61,9 @@ public final class DirectLighting implements Integrator {
                 s.spawn(ray, s.wi);
                 double t = tracer.trace(ray, s);
                 if (t < 0) {
-                    out.addProduct(beta, environment, 1);
+                    double w = bs.delta || !lightSampling ? 1
+                            : MathUtil.powerHeuristic(bsdfPdf, lightSamples * lights.environmentPdf(ray.d));
+                    addEnvironment(ray, beta, w, out);
                     return;
                 }
                 if (!s.emitted.isBlack()) {

@@ -82,7 +82,12 @@ public final class PathTracer implements Integrator {
             for (int depth = 1; ; depth++) {
                 double t = tracer.trace(ray, s);
                 if (t < 0) {
-                    out.addProduct(beta, environment, 1);
+                    // The environment reached by the previous BSDF sample, weighted against light sampling.
+                    double w = 1;
+                    if (!prevDelta && strategy != Strategy.BSDF) {
+                        w = strategy == Strategy.LIGHT ? 0 : MathUtil.powerHeuristic(prevPdf, lights.environmentPdf(ray.d));
+                    }
+                    addEnvironment(ray, beta, w, out);
                     return;
                 }
 

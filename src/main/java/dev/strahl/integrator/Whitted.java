@@ -77,7 +77,7 @@ public final class Whitted implements Integrator {
             MutableRgb weight = beta[depth - 1];
             Shading s = shading[depth];
             if (tracer.trace(ray, s) < 0) {
-                out.addProduct(weight, environment, 1);
+                addEnvironment(ray, weight, 1, out);
                 return;
             }
             out.addProduct(weight, s.emitted, 1);

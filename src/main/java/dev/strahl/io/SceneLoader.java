@@ -1,5 +1,7 @@
 package dev.strahl.io;
 
+import dev.strahl.image.Image;
+import dev.strahl.io.json.EnvironmentMaps;
 import dev.strahl.io.json.SceneFile;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.scene.Scene;
@@ -9,7 +11,8 @@ import java.nio.file.Path;
 /**
  * Loads a scene from a file: a strahl scene file ({@code .json}, see docs/scene-format.md), a
  * Wavefront OBJ with its MTL materials ({@code .obj}) or a PLY mesh ({@code .ply}, ASCII or
- * binary, grey diffuse). An OBJ or PLY has no camera: the scene is framed from +Z.
+ * binary, grey diffuse). An OBJ or PLY has no camera: the scene is framed from a raised
+ * three-quarter view; without lights it is lit by strahl's studio sky ({@link Scene#notes()} says so).
  *
  * <pre>{@code
  * Path file = Path.of("scenes/cornell-box.json");
@@ -30,6 +33,21 @@ public final class SceneLoader {
      */
     public static Scene load(Path file) throws SceneException {
         return SceneFile.load(file).scene();
+    }
+
+    /**
+     * Reads a linear HDR image, e.g. an environment map for {@code Scene.Builder.environmentMap}:
+     * Radiance {@code .hdr}/{@code .pic} (RGBE, flat or run-length encoded), OpenEXR {@code .exr}
+     * (scanline; NONE, RLE, ZIPS, ZIP or PIZ; half or float; R, G, B or Y channels) or {@code .pfm}.
+     *
+     * @param file the image file
+     * @return its colour, linear, rows from the top
+     * @throws SceneException if the file is missing, unreadable, corrupt, truncated, of an
+     *                        unsupported kind (an EXR compression is named) or too large for the
+     *                        heap: one line naming the file
+     */
+    public static Image readImage(Path file) throws SceneException {
+        return EnvironmentMaps.read(file);
     }
 
     /**

@@ -1,18 +1,23 @@
 package dev.strahl.light;
 
-import dev.strahl.image.Rgb;
+import dev.strahl.math.MutableRgb;
 import org.joml.Vector3d;
 
 /** A point sampled on a light, seen from a reference point; mutable, reused per thread. */
 public final class LightSample {
-    /** The point on the light and its geometric normal. */
+    /** The point on the light and its geometric normal (unused for the environment). */
     public final Vector3d p = new Vector3d();
     public final Vector3d ng = new Vector3d();
     /** Unit direction from the reference point towards {@link #p}. */
     public final Vector3d wi = new Vector3d();
+    /** Distance to {@link #p}; infinite for the environment. */
     public double distance;
+    /** Whether the sample is of the environment: then only {@link #wi}, the pdf and the radiance mean anything. */
+    public boolean infinite;
     /** Solid-angle density of wi at the reference point, light selection included. */
     public double pdf;
     /** Emitted radiance towards the reference point. */
-    public Rgb radiance = Rgb.BLACK;
+    public final MutableRgb radiance = new MutableRgb();
+    /** Scratch for the environment's (u, v). */
+    final double[] uv = new double[2];
 }

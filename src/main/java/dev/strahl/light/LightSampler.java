@@ -7,7 +7,28 @@ import java.util.Arrays;
 import org.joml.Vector3dc;
 
 /**
- * Picks points on the emissive primitives (area lights) for next-event estimation. A primitive is
+ * Picks points on the emissive primitives (area lights) and directions towards the
+ * {@link Environment} for next-event estimation.
+ *
+ * <p><b>Area lights or environment.</b> When a scene has both, each light sample is of the
+ * environment with probability {@value #ENVIRONMENT_PROBABILITY} and of the area lights otherwise
+ * (the number that chooses is reused, rescaled, for the choice among area lights); with one kind
+ * only, that kind always. Not by power: the power of an infinitely distant light that reaches the
+ * scene depends on the scene's size, and either kind can dominate what a given surface receives
+ * (a lamp-lit room under a bright sky); an even split bounds either kind's pdf to half its own, so
+ * neither is ever starved, and MIS with BSDF sampling covers the rest (pbrt-v4 weighs infinite
+ * lights the same way in its BVH light sampler). Scenes without an environment keep exactly the
+ * numbers they had: the area lights are then chosen with the very same arithmetic.
+ *
+ * <p><b>A constant environment</b> is sampled (uniformly over the sphere) only where nothing else
+ * would find it: for estimators of light sampling alone ({@code withConstant}: Whitted, the photon
+ * mapper's direct light). Where light sampling is combined with BSDF sampling by MIS, BSDF
+ * sampling already follows f·cos, which is proportional to the whole integrand under a constant
+ * radiance, so a uniform light sample could only add noise; there it has probability 0 and
+ * {@link #environmentPdf} is 0 (pbrt-v4's "incomplete pdf" for {@code UniformInfiniteLight}). A
+ * diffuse object under a constant sky thus stays exact with cosine sampling (the furnace test).
+ *
+ * <p><b>Area lights.</b> A primitive is
  * chosen in proportion to its power, area × mean(Le), then a point uniformly by area with
  * {@link Geometry#samplePoint} (the one sampling of a primitive); the density per unit area is
  * thus mean(Le) / total power for every emitter, which lets {@link #pdf} work from the material
@@ -15,7 +36,15 @@ import org.joml.Vector3dc;
  * Immutable and thread-safe.
  */
 public final class LightSampler {
+    /** The probability of sampling the environment when there are area lights too. */
+    public static final double ENVIRONMENT_PROBABILITY = 0.5;
+
     private final Geometry geometry;
+    private final Environment environment;
+    private final double pEnvironment;   // probability of an environment sample under MIS: 0, 1/2 or 1
+    private final double pArea;          // 1 - pEnvironment
+    private final double pEnvironmentAlone;  // the same for light sampling alone, where a constant environment counts too
+    private final double pAreaAlone;
     private final Rgb[] emission;        // per material: the caller's table, not a copy
     private final int[] prims;           // emissive primitives
     private final double[] cdf;          // cumulative power, cdf[last] = 1
@@ -25,9 +54,11 @@ public final class LightSampler {
     /**
      * @param emissionByMaterial emitted radiance of each material index (black = not a light); kept,
      *                           not copied (the world's one table), so it must not change afterwards
+     * @param environment        the light from where rays leave the scene (black: none)
      */
-    public LightSampler(Geometry geometry, Rgb[] emissionByMaterial) {
+    public LightSampler(Geometry geometry, Rgb[] emissionByMaterial, Environment environment) {
         this.geometry = geometry;
+        this.environment = environment;
         this.emission = emissionByMaterial;
         int n = 0;
         int[] found = new int[16];
@@ -55,15 +86,35 @@ public final class LightSampler {
         for (int m = 0; m < emission.length; m++) {
             density[m] = total > 0 ? weight(m) / total : 0;
         }
+        this.pEnvironmentAlone = environment.isBlack() ? 0 : n == 0 ? 1 : ENVIRONMENT_PROBABILITY;
+        this.pAreaAlone = 1 - pEnvironmentAlone;
+        this.pEnvironment = environment.isConstant() ? 0 : pEnvironmentAlone;
+        this.pArea = 1 - pEnvironment;
     }
 
-    /** Number of emissive primitives. */
+    /** Area lights only, no environment. */
+    public LightSampler(Geometry geometry, Rgb[] emissionByMaterial) {
+        this(geometry, emissionByMaterial, Environment.BLACK);
+    }
+
+    /** The environment (black if the scene has none). */
+    public Environment environment() {
+        return environment;
+    }
+
+    /** The probability that a light sample is of the environment (under MIS; {@code withConstant}). */
+    public double environmentProbability(boolean withConstant) {
+        return withConstant ? pEnvironmentAlone : pEnvironment;
+    }
+
+    /** Number of emissive primitives (area lights). */
     public int lightCount() {
         return prims.length;
     }
 
+    /** Whether there is nothing to sample: no area light and a black environment. */
     public boolean isEmpty() {
-        return prims.length == 0;
+        return prims.length == 0 && pEnvironmentAlone == 0;
     }
 
     /** Total emitted power over π: the sum of area × mean(Le) (the flux of a Lambertian emitter is π times this). */
@@ -82,15 +133,32 @@ public final class LightSampler {
     }
 
     /**
-     * Samples a direction towards a light from {@code ref}. Returns false when nothing can be
-     * sampled or the chosen point faces away from ref.
+     * Samples a direction towards a light from {@code ref}: the environment with probability
+     * {@link #environmentProbability} (then {@code out.infinite}), else a point on an area light.
+     * Returns false when nothing can be sampled or the chosen point faces away from ref.
      *
-     * @param scratch a per-thread surface record for the sampled point
+     * @param withConstant whether a constant environment is sampled too: true for light sampling
+     *                     alone, false where BSDF samples are weighted against these by MIS
+     * @param scratch      a per-thread surface record for the sampled point
      */
-    public boolean sample(Vector3dc ref, double uLight, double u1, double u2, SurfacePoint scratch, LightSample out) {
+    public boolean sample(Vector3dc ref, double uLight, double u1, double u2, boolean withConstant, SurfacePoint scratch,
+                          LightSample out) {
+        double pEnvironment = withConstant ? pEnvironmentAlone : this.pEnvironment;
+        double pArea = withConstant ? pAreaAlone : this.pArea;
+        if (uLight < pEnvironment) {
+            double pdf = environment.sample(u1, u2, out.uv, out.wi, out.radiance);
+            out.infinite = true;
+            out.distance = Double.POSITIVE_INFINITY;
+            out.pdf = pEnvironment * pdf;
+            return pdf > 0 && Double.isFinite(out.pdf);
+        }
         if (prims.length == 0) {
             return false;
         }
+        if (pEnvironment > 0) {
+            uLight = Math.min((uLight - pEnvironment) / pArea, Math.nextDown(1.0));
+        }
+        out.infinite = false;
         geometry.samplePoint(prims[select(uLight)], u1, u2, scratch);
         int m = scratch.material;
         out.p.set(scratch.p);
@@ -108,8 +176,8 @@ public final class LightSampler {
             return false;
         }
         out.distance = dist;
-        out.pdf = density[m] * dist * dist / cosLight;
-        out.radiance = emission[m];
+        out.pdf = pArea * density[m] * dist * dist / cosLight;
+        out.radiance.set(emission[m]);
         return out.pdf > 0 && Double.isFinite(out.pdf);
     }
 
@@ -151,6 +219,14 @@ public final class LightSampler {
         if (cosLight <= 0 || totalPower <= 0) {
             return 0;
         }
-        return density[material] * dist * dist / cosLight;
+        return pArea * density[material] * dist * dist / cosLight;
+    }
+
+    /**
+     * Solid-angle density with which {@link #sample} (under MIS, without {@code withConstant})
+     * picks the environment in direction {@code d}: 0 for a constant environment.
+     */
+    public double environmentPdf(Vector3dc d) {
+        return pEnvironment == 0 ? 0 : pEnvironment * environment.pdf(d);
     }
 }

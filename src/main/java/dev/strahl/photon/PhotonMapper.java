@@ -52,8 +52,8 @@ import org.joml.Vector3d;
  * both kinds of path. The same light paths as the path tracer's are thus included, and the image
  * converges to the path tracer's at every max depth.
  *
- * <p>A scene's uniform environment is a light too: its photons are stored from their first hit,
- * since next-event estimation covers only the area lights.
+ * <p>A scene's environment is a light too: it emits photons, and next-event estimation samples it,
+ * so its photons are stored from their second hit on, like those of the area lights.
  */
 public final class PhotonMapper implements Integrator {
     /** Knaus and Zwicker's α: the fraction of the radius reduction kept per iteration. */
@@ -86,8 +86,8 @@ public final class PhotonMapper implements Integrator {
         this.photonsPerIteration = photonsPerIteration;
         this.initialRadius = initialRadius > 0 ? initialRadius : automaticRadius(world);
         boolean emits = !world.lights().isEmpty() || !world.environment().isBlack();
-        // Stored photons have >= 2 segments, or >= 1 if they come from the environment.
-        this.minPhotonSegments = world.environment().isBlack() ? 2 : 1;
+        // Stored photons have >= 2 segments: next-event estimation covers the first.
+        this.minPhotonSegments = 2;
         this.tracesPhotons = emits && (maxDepth < 0 || maxDepth >= 1 + minPhotonSegments);
         int chunkCount = tracesPhotons ? (photonsPerIteration + PHOTONS_PER_CHUNK - 1) / PHOTONS_PER_CHUNK : 0;
         this.chunks = new PhotonList[chunkCount];
@@ -192,7 +192,7 @@ public final class PhotonMapper implements Integrator {
             double etaScale = 1;                       // product of η'² over the refractions so far (for the roulette)
             for (int depth = 1; ; depth++) {
                 if (tracer.trace(ray, s) < 0) {
-                    out.addProduct(beta, environment, 1);
+                    addEnvironment(ray, beta, 1, out);
                     return;
                 }
                 out.addProduct(beta, s.emitted, 1);     // reached directly or through specular bounces only

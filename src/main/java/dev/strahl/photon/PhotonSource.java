@@ -4,9 +4,9 @@ import dev.strahl.math.MutableRgb;
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.SurfacePoint;
+import dev.strahl.light.Environment;
 import dev.strahl.light.LightSampler;
 import dev.strahl.math.Frame;
-import dev.strahl.image.Rgb;
 import dev.strahl.sampling.Sample2D;
 import dev.strahl.sampling.Sampler;
 import dev.strahl.sampling.Warp;
@@ -15,7 +15,7 @@ import org.joml.Vector3d;
 
 /**
  * Where photons start: on the area lights, in proportion to their power, and from the scene's
- * uniform environment, if it has one. Each photon carries the flux an estimator of the total
+ * environment, if it has one. Each photon carries the flux an estimator of the total
  * emitted power gives it: emitting it with density p (over everything that is sampled), it
  * carries Le·cosθ / p, so that the mean over photons is the total flux.
  *
@@ -30,13 +30,19 @@ import org.joml.Vector3d;
  *       uniform on the disk of radius R perpendicular to d that touches the scene's bounding
  *       sphere (centre c, radius R) on the side d comes from (pdf 1/πR²). Flux L·4π·πR²:
  *       the power that crosses the bounding sphere's cross-section from all directions.</li>
+ *   <li><b>Environment map</b> (pbrt-v4 {@code ImageInfiniteLight::SampleLe}): the direction
+ *       towards the environment wi is sampled as for next-event estimation, {@link
+ *       Environment#sample} (density p(wi)), the photon travels along −wi from a point of the same
+ *       disk; flux L(wi)·πR² / p(wi).</li>
  * </ul>
  * When a scene has both, a photon comes from the lights with probability P_lights / (P_lights +
  * P_env) by mean power, and its flux is divided by that probability. One per thread (scratch).
  */
 final class PhotonSource {
     private final LightSampler lights;
-    private final Rgb environment;
+    private final Environment environment;
+    private final MutableRgb radiance = new MutableRgb();
+    private final double[] uv = new double[2];
     private final double lightProbability;       // 1 without environment, 0 without lights
     private final Vector3d center = new Vector3d();
     private final double radius;
@@ -56,15 +62,15 @@ final class PhotonSource {
             center.set(0.5 * (box.minX + box.maxX), 0.5 * (box.minY + box.maxY), 0.5 * (box.minZ + box.maxZ));
             this.radius = Math.max(1e-6, 0.5 * box.diagonal() * (1 + 1e-6));
         }
-        double lightPower = Math.PI * lights.totalPower();
-        double envPower = mean(environment) * 4 * Math.PI * Math.PI * radius * radius;
+        double lightPower = lights.lightCount() == 0 ? 0 : Math.PI * lights.totalPower();
+        double envPower = environment.power() * Math.PI * radius * radius;
         double total = lightPower + envPower;
         this.lightProbability = total > 0 ? lightPower / total : 0;
     }
 
     /** Whether anything emits: without lights and environment there are no photons. */
     boolean isEmpty() {
-        return lights.isEmpty() && environment.isBlack();
+        return lights.lightCount() == 0 && environment.isBlack();
     }
 
     /** Radius of the bounding sphere from which environment photons start. */
@@ -94,18 +100,22 @@ final class PhotonSource {
             return false;
         }
         sampler.get2D(u);
-        Warp.uniformSphere(u.u1, u.u2, dir);
+        double scale = Math.PI * radius * radius / (1 - lightProbability);
+        if (environment.isConstant()) {
+            Warp.uniformSphere(u.u1, u.u2, dir);
+            radiance.set(environment.constantRadiance()).mul(4 * Math.PI);
+        } else {
+            double pdf = environment.sample(u.u1, u.u2, uv, dir, radiance);
+            dir.negate();
+            radiance.mul(pdf > 0 ? 1 / pdf : 0);
+        }
         sampler.get2D(u);
         Warp.concentricDisk(u.u1, u.u2, local);
         frame.set(dir).toWorld(local.mul(radius), ray.o);
         ray.o.add(center).fma(-radius, dir);
         ray.d.set(dir);
         ray.tMax = Double.POSITIVE_INFINITY;
-        flux.set(environment).mul(4 * Math.PI * Math.PI * radius * radius / (1 - lightProbability));
+        flux.set(radiance).mul(scale);
         return true;
-    }
-
-    private static double mean(Rgb c) {
-        return (c.r() + c.g() + c.b()) / 3;
     }
 }

@@ -18,8 +18,8 @@ import org.joml.Vector3d;
  *
  * <p><b>What is stored.</b> A photon is recorded at every hit on a surface whose BSDF is not a
  * pure delta (diffuse and glossy), after at least one scattering: light arriving straight from a
- * light is what next-event estimation at the camera's visible point already computes. Photons of
- * a uniform environment, which light sampling does not cover, are recorded from their first hit.
+ * light or the environment is what next-event estimation at the camera's visible point already
+ * computes (it samples both).
  * Caustic paths (light → mirror or glass → diffuse) are thus in the map, direct light is not.
  *
  * <p><b>Scattering</b> uses the BSDFs' own {@code sample}, with the photon's direction back to
@@ -80,20 +80,20 @@ final class PhotonTracer {
     void trace(long seed, int iteration, int first, int end, double fluxScale, PhotonList out) {
         for (int j = first; j < end; j++) {
             sampler.startStream(streamSeed(seed, iteration, j));
-            boolean fromEnvironment = source.emit(sampler, ray, beta);
+            source.emit(sampler, ray, beta);
             beta.mul(fluxScale);
-            follow(fromEnvironment, out);
+            follow(out);
         }
     }
 
-    private void follow(boolean fromEnvironment, PhotonList out) {
+    private void follow(PhotonList out) {
         for (int segments = 1; ; segments++) {
             if (tracer.trace(ray, s) < 0) {
                 return;
             }
             Bsdf bsdf = s.bsdf;
             SurfacePoint sp = s.sp;
-            if (!bsdf.isDelta() && (segments >= 2 || fromEnvironment) && (maxDepth < 0 || segments + 1 <= maxDepth)) {
+            if (!bsdf.isDelta() && segments >= 2 && (maxDepth < 0 || segments + 1 <= maxDepth)) {
                 out.add(sp.p.x, sp.p.y, sp.p.z, -ray.d.x, -ray.d.y, -ray.d.z, beta.r, beta.g, beta.b, segments);
             }
             if (maxDepth > 0 && segments + 2 > maxDepth) {

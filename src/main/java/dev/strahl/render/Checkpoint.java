@@ -363,6 +363,9 @@ final class Checkpoint {
                 .append(' ').append(c.lookAt().x()).append(' ').append(c.lookAt().y()).append(' ').append(c.lookAt().z())
                 .append(' ').append(c.up().x()).append(' ').append(c.up().y()).append(' ').append(c.up().z())
                 .append(' ').append(c.fovDegrees()).append('\n');
+        if (c.aperture() > 0) {                       // a pinhole camera's digest stays what it was
+            sb.append("lens ").append(c.aperture()).append(' ').append(c.focusDistance()).append('\n');
+        }
         sb.append("environment ").append(world.environment()).append('\n');
         md.update(sb.toString().getBytes(StandardCharsets.UTF_8));
         return md.digest();

@@ -1,6 +1,6 @@
 package dev.strahl.render;
 
-import dev.strahl.camera.PinholeRays;
+import dev.strahl.camera.CameraRays;
 import dev.strahl.film.Film;
 import dev.strahl.image.Image;
 import dev.strahl.integrator.FeatureTracer;
@@ -81,7 +81,8 @@ public final class RenderJob implements AutoCloseable {
         this.earlierInvalid = restored != null ? restored.invalidSamples() : 0;
         this.earlierSeconds = restored != null ? restored.seconds() : 0;
         Camera c = scene.camera();
-        var rays = new PinholeRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), settings.width(), settings.height());
+        var rays = new CameraRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), c.aperture(), c.focusDistance(),
+                settings.width(), settings.height());
         World world = World.of(scene);
         int number = JOB_NUMBER.incrementAndGet();
         this.workers = cluster != null ? cluster.apply(film)

@@ -1,12 +1,12 @@
 package dev.strahl.render;
 
-import dev.strahl.math.MutableRgb;
-import dev.strahl.camera.PinholeRays;
+import dev.strahl.camera.CameraRays;
 import dev.strahl.film.Film;
 import dev.strahl.geometry.Ray;
 import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Parallel;
+import dev.strahl.math.MutableRgb;
 import dev.strahl.sampling.IndependentSampler;
 import dev.strahl.sampling.Sample2D;
 import dev.strahl.sampling.Sampler;
@@ -21,6 +21,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
+import org.joml.Vector3d;
 
 /**
  * The threads of one render job and what each owns: a fixed pool whose workers take
@@ -37,7 +38,7 @@ import java.util.function.Supplier;
 final class RenderWorkers implements Parallel, PassRunner {
     private final Film film;
     private final long seed;
-    private final PinholeRays cameraRays;
+    private final CameraRays cameraRays;
     private final ExecutorService pool;
     private final WorkerState[] workers;
     private final AtomicLong samplesDone = new AtomicLong();
@@ -61,7 +62,7 @@ final class RenderWorkers implements Parallel, PassRunner {
      * Workers for a film; {@code features}, when not null, makes a tracer per thread for the
      * feature buffers of every camera sample (the film must then keep features).
      */
-    RenderWorkers(Film film, PinholeRays cameraRays, Integrator integrator, Supplier<FeatureTracer> features, long seed, int threads,
+    RenderWorkers(Film film, CameraRays cameraRays, Integrator integrator, Supplier<FeatureTracer> features, long seed, int threads,
                   Schedule schedule, String name) {
         if (features != null && !film.hasFeatures()) {
             throw new IllegalArgumentException("feature buffers need a film that keeps them");
@@ -336,10 +337,15 @@ final class RenderWorkers implements Parallel, PassRunner {
      *
      * @return whether the radiance is finite (otherwise the caller adds black and counts it)
      */
-    static boolean sample(WorkerState w, PinholeRays cameraRays, long seed, int x, int y, int s) {
+    static boolean sample(WorkerState w, CameraRays cameraRays, long seed, int x, int y, int s) {
         w.sampler.startPixelSample(x, y, s);
         w.sampler.getPixel2D(w.filmPosition);
-        cameraRays.generate(x + w.filmPosition.u1, y + w.filmPosition.u2, w.ray);
+        if (cameraRays.hasLens()) {
+            w.sampler.get2D(w.lensPosition);     // a thin lens: the next pair, before the integrator's
+            cameraRays.generate(x + w.filmPosition.u1, y + w.filmPosition.u2, w.lensPosition.u1, w.lensPosition.u2, w.disk, w.ray);
+        } else {
+            cameraRays.generate(x + w.filmPosition.u1, y + w.filmPosition.u2, w.ray);
+        }
         if (w.features != null) {
             // before the integrator, which may change the ray; from streams of its own
             w.featureRay.o.set(w.ray.o);
@@ -364,6 +370,8 @@ final class RenderWorkers implements Parallel, PassRunner {
         final Integrator.Worker integrator;
         final Sampler sampler;
         final Sample2D filmPosition = new Sample2D();
+        final Sample2D lensPosition = new Sample2D();
+        final Vector3d disk = new Vector3d();
         final Ray ray = new Ray();
         final MutableRgb radiance = new MutableRgb();
         final FeatureTracer features;

@@ -1,6 +1,6 @@
 package dev.strahl.render;
 
-import dev.strahl.camera.PinholeRays;
+import dev.strahl.camera.CameraRays;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.scene.Camera;
 import dev.strahl.scene.Scene;
@@ -40,7 +40,7 @@ final class UnitRenderers implements UnitService {
             throw new IllegalArgumentException("the " + d.settings.integrator().id() + " integrator cannot render on a cluster");
         }
         Camera c = scene.camera();
-        var rays = new PinholeRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), d.settings.width(), d.settings.height());
+        var rays = new CameraRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), c.aperture(), c.focusDistance(), d.settings.width(), d.settings.height());
         return new Renderer(integrator, rays, d.settings.seed(), d.stratified);
     }
 
@@ -95,12 +95,12 @@ final class UnitRenderers implements UnitService {
     /** Renders units on any thread; each thread takes a worker (integrator scratch and sampler) from a pool. */
     private static final class Renderer implements UnitRenderer {
         private final Integrator integrator;
-        private final PinholeRays rays;
+        private final CameraRays rays;
         private final long seed;
         private final boolean stratified;
         private final ConcurrentLinkedQueue<RenderWorkers.WorkerState> idle = new ConcurrentLinkedQueue<>();
 
-        Renderer(Integrator integrator, PinholeRays rays, long seed, boolean stratified) {
+        Renderer(Integrator integrator, CameraRays rays, long seed, boolean stratified) {
             this.integrator = integrator;
             this.rays = rays;
             this.seed = seed;

@@ -5,7 +5,9 @@ import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.GeometryBuilder;
 import dev.strahl.geometry.MeshTopology;
 import dev.strahl.geometry.Sphere;
+import dev.strahl.image.Image;
 import dev.strahl.image.Rgb;
+import dev.strahl.light.Environment;
 import dev.strahl.material.Bsdf;
 import dev.strahl.world.World;
 import java.util.ArrayList;
@@ -17,7 +19,10 @@ import org.joml.Vector3dc;
 
 /**
  * Everything a render needs: shapes with their materials, the lights among them, a camera and the
- * environment radiance. Immutable once built (the BVH is built then, once) and safe to share
+ * environment (a constant radiance or a latitude–longitude map).
+ * A scene without any light gets strahl's studio sky (a procedural sky with a soft sun) and, without
+ * a camera, is framed from a raised three-quarter view; {@link #notes()} says so. A scene with
+ * lights but no camera is framed from +Z. Immutable once built (the BVH is built then, once) and safe to share
  * between threads and render jobs. Build one in code with {@link #builder()}, or load a file with
  * {@code dev.strahl.io.SceneLoader}.
  *
@@ -39,12 +44,16 @@ public final class Scene {
     private final List<Material> materials;
     private final Camera camera;
     private final List<String> notes;
+    private final boolean studioSky;          // the scene has no light and is lit by the studio sky
+    private final boolean framed;             // the scene has no camera and is framed
 
-    private Scene(World world, List<Material> materials, Camera camera, List<String> notes) {
+    private Scene(World world, List<Material> materials, Camera camera, List<String> notes, boolean studioSky, boolean framed) {
         this.world = world;
         this.materials = materials;
         this.camera = camera;
         this.notes = notes;
+        this.studioSky = studioSky;
+        this.framed = framed;
     }
 
     /**
@@ -66,7 +75,8 @@ public final class Scene {
     }
 
     /**
-     * The camera: the scene's own, or one framing the scene from +Z.
+     * The camera: the scene's own, or one framing the scene (from a raised three-quarter view if
+     * the scene has no light, else from +Z).
      *
      * @return the camera
      */
@@ -81,7 +91,13 @@ public final class Scene {
      * @return an unmodifiable list
      */
     public List<String> notes() {
-        return notes;
+        if (!studioSky) {
+            return notes;
+        }
+        List<String> all = new ArrayList<>(notes);
+        all.add(framed ? "the scene has no light and no camera: lighting it with " + StudioSky.DESCRIPTION + " and framing it from "
+                + Camera.FRAMING_DESCRIPTION : "the scene has no light: lighting it with " + StudioSky.DESCRIPTION);
+        return List.copyOf(all);
     }
 
     /**
@@ -91,7 +107,22 @@ public final class Scene {
      * @return a scene sharing everything else with this one
      */
     public Scene withCamera(Camera newCamera) {
-        return new Scene(world, materials, Objects.requireNonNull(newCamera), notes);
+        Objects.requireNonNull(newCamera);
+        return new Scene(world, materials, newCamera, notes, studioSky, framed && newCamera.equals(camera));
+    }
+
+    /**
+     * The same scene under a latitude–longitude environment map (see
+     * {@link Builder#environmentMap}); geometry and BVH are shared, not copied.
+     *
+     * @param map           the map, +Y up, its top row the +Y pole, its centre column seen along +Z
+     * @param scale         factor on the map's radiance, finite and ≥ 0
+     * @param rotateDegrees rotation of the map about +Y, in degrees
+     * @return a scene sharing everything else with this one
+     */
+    public Scene withEnvironmentMap(Image map, double scale, double rotateDegrees) {
+        Environment env = Builder.mapOf(map, scale, rotateDegrees);
+        return new Scene(world.withEnvironment(env), materials, camera, notes, false, framed);
     }
 
     /** Collects shapes, materials, camera and environment, then builds the BVH once. Not thread-safe. */
@@ -101,7 +132,7 @@ public final class Scene {
         private final Map<Material, Integer> materialIndex = new IdentityHashMap<>();
         private final List<String> notes = new ArrayList<>();
         private Camera camera;
-        private Rgb environment;
+        private Environment environment;
 
         private Builder() {}
 
@@ -203,7 +234,10 @@ public final class Scene {
         }
 
         /**
-         * The camera; without one, the scene is framed from +Z with a 40° field of view.
+         * The camera; without one, a scene without lights (a bare model) is framed from a raised
+         * three-quarter view (azimuth 40° from +Z towards +X, elevation 25°, looking at the centre
+         * of the bounds), a scene with lights (often a room open to the front) from +Z, both with a
+         * 40° field of view.
          *
          * @param camera the camera
          * @return this builder
@@ -214,15 +248,40 @@ public final class Scene {
         }
 
         /**
-         * Radiance arriving from every direction where rays leave the scene. Without one, a scene
-         * with lights has a black environment and a scene without lights a white one.
+         * Radiance arriving from every direction where rays leave the scene. Without an
+         * environment, a scene with lights has a black one and a scene without lights strahl's
+         * studio sky (a procedural blue sky with a soft sun, built in code).
          *
          * @param radiance the constant environment radiance
          * @return this builder
          */
         public Builder environment(Rgb radiance) {
-            this.environment = Objects.requireNonNull(radiance);
+            this.environment = Environment.constant(Objects.requireNonNull(radiance));
             return this;
+        }
+
+        /**
+         * A latitude–longitude environment map, oriented as Mitsuba 3's {@code envmap}: +Y is up
+         * and the image's top row is the +Y pole; the centre column is seen looking along +Z, the
+         * column at a quarter of the width along +X, at three quarters along −X, the left and
+         * right edges along −Z. Texel (x, y) sits at u = (x + ½)/W, v = y/(H − 1), bilinear in
+         * between. The map is importance-sampled (luminance · sin θ) for next-event estimation.
+         * Read one from a file with {@code SceneLoader.readImage}.
+         *
+         * @param map           linear radiance, at least 1×2 pixels; negative and NaN values count as black
+         * @param scale         factor on the radiance, finite and ≥ 0
+         * @param rotateDegrees rotation of the map about +Y (right-handed), in degrees
+         * @return this builder
+         * @throws IllegalArgumentException if the map is too small or the scale or rotation is not finite
+         */
+        public Builder environmentMap(Image map, double scale, double rotateDegrees) {
+            this.environment = mapOf(map, scale, rotateDegrees);
+            return this;
+        }
+
+        static Environment mapOf(Image map, double scale, double rotateDegrees) {
+            Objects.requireNonNull(map, "map");
+            return Environment.map(map.width(), map.height(), map.rgb(), scale, rotateDegrees, "map");
         }
 
         /**
@@ -249,17 +308,18 @@ public final class Scene {
                 bsdfs[i] = materials.get(i).bsdf();
                 emission[i] = materials.get(i).emission();
             }
-            Rgb env = environment;
+            Environment env = environment;
+            boolean studio = false;
             if (env == null) {
-                env = anyEmits(g, emission) ? Rgb.BLACK : Rgb.WHITE;
-                if (env == Rgb.WHITE) {
-                    notes.add("the scene has no light: lighting it with a uniform white environment");
-                }
+                studio = !anyEmits(g, emission);
+                env = studio ? StudioSky.environment() : Environment.BLACK;
             }
             World world = World.build(g, bsdfs, emission, env);
             Aabb bounds = world.bounds();
-            Camera cam = camera != null ? camera : Camera.framing(bounds, 40);
-            return new Scene(world, List.copyOf(materials), cam, List.copyOf(notes));
+            // A bare model (no light) is an object: shown from above at three quarters. A scene with
+            // its own lights is often a room made to be seen from its open front (the Cornell Box): +Z.
+            Camera cam = camera != null ? camera : studio ? Camera.framing(bounds, 40) : Camera.frontFraming(bounds, 40);
+            return new Scene(world, List.copyOf(materials), cam, List.copyOf(notes), studio, camera == null);
         }
 
         private static boolean anyEmits(Geometry g, Rgb[] emission) {

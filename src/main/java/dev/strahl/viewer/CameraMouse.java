@@ -10,7 +10,8 @@ import javax.swing.SwingUtilities;
 
 /**
  * Mouse navigation on the image: drag with the left button to orbit around the target, with the
- * right or middle button (or Shift + left) to pan, turn the wheel to dolly. A drag across the
+ * right or middle button (or Shift + left) to pan, turn the wheel to dolly; Ctrl + click focuses
+ * the thin lens on the surface under the cursor. A drag across the
  * image's full height turns the camera by 180°; panning keeps the point under the cursor at the
  * target's depth under the cursor; each wheel notch changes the distance by 10 %.
  */
@@ -40,6 +41,16 @@ final class CameraMouse extends MouseAdapter {
         last = e.getPoint();
         panning = !SwingUtilities.isLeftMouseButton(e) || e.isShiftDown();
         panel.setCursor(Cursor.getPredefinedCursor(panning ? Cursor.MOVE_CURSOR : Cursor.HAND_CURSOR));
+    }
+
+    @Override
+    public void mouseClicked(MouseEvent e) {
+        if (SwingUtilities.isLeftMouseButton(e) && e.isControlDown()) {
+            java.awt.Rectangle r = ((ImagePanel) panel).imageBounds();
+            if (r.width > 0 && r.height > 0 && r.contains(e.getPoint())) {
+                controller.focusAt((e.getX() - r.x + 0.5) / r.width, (e.getY() - r.y + 0.5) / r.height);
+            }
+        }
     }
 
     @Override

@@ -66,6 +66,8 @@ final class RenderController {
     private Scene scene;
     private OrbitCamera home;
     private OrbitCamera camera;
+    private double aperture;                  // the thin lens: the scene camera's, focus set by Ctrl+click
+    private double focusDistance;
     private RenderSettings settings;          // full-resolution settings (size = the window's film)
     private int stopAt;
     private State state = State.RUNNING;
@@ -87,6 +89,8 @@ final class RenderController {
                      RenderJobs.Scheduler scheduler, LongSupplier nanoTime) {
         this.scene = Objects.requireNonNull(scene, "scene");
         this.home = OrbitCamera.of(scene.camera());
+        this.aperture = scene.camera().aperture();
+        this.focusDistance = scene.camera().focusDistance();
         this.camera = home;
         this.settings = Objects.requireNonNull(settings, "settings");
         this.stopAt = checkStopAt(stopAt);
@@ -190,7 +194,29 @@ final class RenderController {
         settings = Objects.requireNonNull(newSettings, "settings");
         home = OrbitCamera.of(newScene.camera());
         camera = home;
+        aperture = newScene.camera().aperture();
+        focusDistance = newScene.camera().focusDistance();
         renderAgain();
+    }
+
+    /**
+     * Focuses the thin lens on the surface under a point of the image (fractions of its width and
+     * height from the top left); nothing happens where the image shows no surface.
+     *
+     * @return the new focus distance, or NaN if nothing was hit
+     */
+    synchronized double focusAt(double fx, double fy) {
+        double d = FocusPicker.focusDistance(scene, camera.toCamera(), fx, fy, (double) settings.width() / settings.height());
+        if (d > 0) {
+            focusDistance = d;
+            renderAgain();
+        }
+        return d;
+    }
+
+    /** The thin lens in use: {aperture, focus distance}. */
+    synchronized double[] lens() {
+        return new double[] {aperture, focusDistance};
     }
 
     /** Moves the camera (orbit, pan, dolly): preview now, full resolution once the moves stop. */
@@ -202,6 +228,7 @@ final class RenderController {
     /** Back to the scene's camera. */
     synchronized void resetCamera() {
         camera = home;
+        focusDistance = scene.camera().focusDistance();
         renderAgain();
     }
 
@@ -317,7 +344,7 @@ final class RenderController {
         }
         s = s.withSamplesPerPixel(Integer.MAX_VALUE).withSamplesPerPass(1);
         long g = generation;
-        job = starter.start(scene.withCamera(camera.toCamera()), s, new RenderListener() {
+        job = starter.start(scene.withCamera(camera.toCamera().withLens(aperture, focusDistance)), s, new RenderListener() {
             @Override
             public void passCompleted(int spp, Image image) {
                 onPass(g, spp, image);

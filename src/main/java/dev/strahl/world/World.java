@@ -4,6 +4,7 @@ import dev.strahl.accel.Bvh;
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.image.Rgb;
+import dev.strahl.light.Environment;
 import dev.strahl.light.LightSampler;
 import dev.strahl.material.Bsdf;
 import java.util.Objects;
@@ -12,7 +13,8 @@ import java.util.function.Function;
 /**
  * The scene as the renderer sees it: every primitive in flat arrays with its BVH, the area lights
  * over the emissive primitives, the BSDF and the emitted radiance of every material index (the one
- * emission table, shared by shading and light sampling), and the environment radiance. Built once
+ * emission table, shared by shading and light sampling), and the environment (constant or a map,
+ * sampled by the light sampler along with the area lights). Built once
  * per {@code dev.strahl.scene.Scene} and shared read-only by every render job and thread.
  *
  * <p>The API's {@code Scene} holds its world privately; strahl's own packages reach it through
@@ -28,14 +30,14 @@ public final class World {
     private final LightSampler lights;
     private final Bsdf[] bsdfs;
     private final Rgb[] emission;
-    private final Rgb environment;
+    private final Environment environment;
     private final double bvhBuildSeconds;
 
-    private World(Geometry geometry, Bvh bvh, Bsdf[] bsdfs, Rgb[] emission, Rgb environment, double bvhBuildSeconds) {
-        this(geometry, bvh, new LightSampler(geometry, emission), bsdfs, emission, environment, bvhBuildSeconds);
+    private World(Geometry geometry, Bvh bvh, Bsdf[] bsdfs, Rgb[] emission, Environment environment, double bvhBuildSeconds) {
+        this(geometry, bvh, new LightSampler(geometry, emission, environment), bsdfs, emission, environment, bvhBuildSeconds);
     }
 
-    private World(Geometry geometry, Bvh bvh, LightSampler lights, Bsdf[] bsdfs, Rgb[] emission, Rgb environment,
+    private World(Geometry geometry, Bvh bvh, LightSampler lights, Bsdf[] bsdfs, Rgb[] emission, Environment environment,
                   double bvhBuildSeconds) {
         this.geometry = geometry;
         this.bvh = bvh;
@@ -60,9 +62,9 @@ public final class World {
      * @param geometry    every primitive, material indices into the two tables
      * @param bsdfs       the BSDF of each material index
      * @param emission    the emitted radiance of each material index (black: not a light)
-     * @param environment radiance of rays that leave the scene
+     * @param environment the light of rays that leave the scene
      */
-    public static World build(Geometry geometry, Bsdf[] bsdfs, Rgb[] emission, Rgb environment) {
+    public static World build(Geometry geometry, Bsdf[] bsdfs, Rgb[] emission, Environment environment) {
         if (bsdfs.length != emission.length) {
             throw new IllegalArgumentException(bsdfs.length + " BSDFs for " + emission.length + " emissions");
         }
@@ -100,8 +102,13 @@ public final class World {
         return lights;
     }
 
-    public Rgb environment() {
+    public Environment environment() {
         return environment;
+    }
+
+    /** The same world under another environment: geometry, BVH and material tables are shared, the light sampler is new. */
+    public World withEnvironment(Environment newEnvironment) {
+        return new World(geometry, bvh, bsdfs, emission, Objects.requireNonNull(newEnvironment), bvhBuildSeconds);
     }
 
     public int materialCount() {

@@ -31,7 +31,7 @@ class CameraTest {
         return new Vector3d(x, y, z);
     }
 
-    /** The DESIGN §3 formula, evaluated with JOML, independent of {@link PinholeRays}. */
+    /** The DESIGN §3 formula, evaluated with JOML, independent of {@link CameraRays}. */
     private static Vector3d designDirection(Camera c, int w, int h, double px, double py) {
         Vector3d f = new Vector3d(c.lookAt()).sub(c.lookFrom()).normalize();
         Vector3d r = f.cross(c.up(), new Vector3d()).normalize();
@@ -169,7 +169,7 @@ class CameraTest {
     @Test
     void lightQuadOfCornellOriginalProjectsOntoTheDesignPixels() {
         Geometry light = lightQuad();
-        PinholeRays rays = Meshes.rays(ORIGINAL, 512, 512);
+        CameraRays rays = Meshes.rays(ORIGINAL, 512, 512);
         Ray ray = new Ray();
         int minX = Integer.MAX_VALUE, maxX = -1, minY = Integer.MAX_VALUE, maxY = -1;
         for (int y = 0; y < 512; y++) {
@@ -190,7 +190,7 @@ class CameraTest {
     @Test
     void lightQuadCoversThirtyPercentOfRow71() {
         Geometry light = lightQuad();
-        PinholeRays rays = Meshes.rays(ORIGINAL, 512, 512);
+        CameraRays rays = Meshes.rays(ORIGINAL, 512, 512);
         Ray ray = new Ray();
         int n = 64;
         double[] coverage = new double[4];

@@ -80,6 +80,36 @@ class BadInputTest {
         }
     }
 
+    /** A lit OBJ and an environment map file of the given bytes. */
+    static Map<String, byte[]> envmap(String name, byte[] content) {
+        Map<String, byte[]> m = obj(LIT + SQUARE + "f 1 2 3\n");
+        m.put(name, content);
+        return m;
+    }
+
+    /** A scene file s.json whose environment is the map sky.* (any extension), and the given file. */
+    static Map<String, byte[]> envmapScene(String name, byte[] content) {
+        Map<String, byte[]> m = new LinkedHashMap<>();
+        String sky = name.startsWith("other") ? "sky.hdr" : name;
+        m.put("s.json", ("{\"shapes\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1, \"material\": \"m\"}],"
+                + " \"materials\": {\"m\": {\"type\": \"diffuse\"}}, \"environment\": {\"type\": \"envmap\", \"file\": \"" + sky
+                + "\"}}").getBytes(StandardCharsets.UTF_8));
+        m.put(name, content);
+        return m;
+    }
+
+    static byte[] fixture(String name) {
+        try {
+            return Files.readAllBytes(Path.of("src/test/resources", name));
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    static byte[] labelledHdr() {
+        return fixture("golden/envcam-labelled.hdr");
+    }
+
     static Map<String, byte[]> obj(String text) {
         return files("t.obj", text, "lit.mtl", LIT_MTL);
     }
@@ -143,7 +173,7 @@ class BadInputTest {
             warned("OBJ degenerate triangles", obj(LIT + SQUARE + "f 1 2 3\nf 1 2 2\nf 1 3 1\n"), args(), "$IN/t.obj: ",
                     "skipped 2 degenerate triangles (zero area), the first at line 8"),
             noted("scene without light", files("t.obj", SQUARE + "f 1 2 3\n"), args(), "the scene has no light",
-                    "uniform white environment"),
+                    "studio sky"),
             // ---- MTL ----
             refused("MTL number that does not parse", files("t.obj", LIT + SQUARE + "f 1 2 3\n", "lit.mtl", "newmtl lamp\nKd 0.5 x 0.5\n"),
                     args(), "$IN/lit.mtl:2: ", "bad number 'x' in 'Kd'"),
@@ -218,6 +248,26 @@ class BadInputTest {
             refused("output is a directory", files("d.png/x", ""), scene(CORNELL, "-o", "$IN/d.png"), "output $IN/d.png is a directory"),
             refused("output extension unknown", files(), scene(CORNELL, "-o", "$OUT/a.jpg"), "unknown image format of $OUT/a.jpg: use .png, .pfm or .exr"),
             refused("output without extension", files(), scene(CORNELL, "-o", "$OUT/a"), "unknown image format of $OUT/a"),
+            // ---- environment maps ----
+            refused("envmap truncated HDR", envmap("sky.hdr", Arrays.copyOf(labelledHdr(), 3000)), args("--envmap", "$IN/sky.hdr"),
+                    "$IN/sky.hdr: ", "the file ends inside the scanline: it is truncated"),
+            refused("envmap HDR whose header promises more than the file holds", envmap("sky.hdr",
+                    "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 60000 +X 60000\n".getBytes(StandardCharsets.US_ASCII)),
+                    args("--envmap", "$IN/sky.hdr"), "$IN/sky.hdr:4: ", "the file is truncated"),
+            refused("envmap EXR of an unsupported compression", envmap("sky.exr", fixture("exr/refused-b44.exr")),
+                    args("--envmap", "$IN/sky.exr"), "$IN/sky.exr: ", "EXR compression B44 is not supported"),
+            refused("envmap that is no EXR", envmap("sky.exr", "hello".getBytes(StandardCharsets.US_ASCII)),
+                    args("--envmap", "$IN/sky.exr"), "$IN/sky.exr: ", "not an OpenEXR file"),
+            refused("envmap missing", obj(LIT + SQUARE + "f 1 2 3\n"), args("--envmap", "$IN/none.hdr"), "$IN/none.hdr: ",
+                    "environment map not found"),
+            refused("envmap of an image format strahl does not read", envmap("sky.png", new byte[8]), args("--envmap", "$IN/sky.png"),
+                    "$IN/sky.png: ", "not an environment map format"),
+            refused("scene file whose envmap is truncated", envmapScene("sky.exr", Arrays.copyOf(fixture("exr/rgba-half-zip.exr"), 400)),
+                    scene("$IN/s.json"), "$IN/sky.exr: ", "the file ends"),
+            refused("scene file whose envmap is missing", envmapScene("other.hdr", labelledHdr()), scene("$IN/s.json"), "$IN/s.json:1: ",
+                    "environment map not found"),
+            refused("negative aperture", files(), scene(CORNELL, "--aperture", "-1"), "--aperture: the lens radius must be finite and >= 0"),
+            refused("zero focus distance", files(), scene(CORNELL, "--focus-distance", "0"), "--focus-distance: the distance must be"),
             // ---- checkpoints ----
             refused("resume from a missing checkpoint", files(), scene(CORNELL, "--resume", "$IN/none.ck"), "$IN/none.ck: checkpoint not found"),
             refused("resume from a file that is no checkpoint", files("x.ck", "hello, world\n"), scene(CORNELL, "--resume", "$IN/x.ck"),

@@ -351,19 +351,23 @@ class RenderCommandTest {
     }
 
     @Test
-    void objWithoutEmitterIsLitByTheWhiteEnvironmentWithANote() throws IOException {
+    void objWithoutEmitterOrCameraGetsTheStudioLookWithANote() throws IOException {
         Path obj = in.resolve("cube.obj");
         Files.writeString(obj, CUBE_OBJ);
         Path pfm = out.resolve("cube.pfm");
         Run r = render(obj.toString(), pfm);
         assertThat(r.code()).as(r.err()).isZero();
         assertThat(r.errLines()).first().asString()
-                .isEqualTo("strahl: note: the scene has no light: lighting it with a uniform white environment");
+                .startsWith("strahl: note: the scene has no light and no camera: lighting it with strahl's studio sky")
+                .contains("three-quarter view");
         assertThat(r.errLines()).hasSize(2);        // the note and the summary
         Image img = PfmReader.read(pfm);
-        // The white background is seen directly; the cube (albedo 0.8) is framed in the middle
-        assertThat(img.get(0, 0, 0)).isEqualTo(1f);
-        assertThat(img.get(8, 8, 0)).isBetween(0.05f, 0.99f);
+        // The grey cube (albedo 0.8) is framed in the middle and stands out against the dark ground
+        // seen behind it from above (the bottom corners) and the blue sky (the top corners).
+        double cube = luminance(img, 8, 8), ground = luminance(img, 0, 15), sky = luminance(img, 0, 0);
+        assertThat(cube).isGreaterThan(2.5 * ground);
+        assertThat(img.get(0, 0, 2)).isGreaterThan(img.get(0, 0, 0));          // the sky is blue
+        assertThat(sky).isGreaterThan(ground);
     }
 
     @Test
@@ -411,5 +415,9 @@ class RenderCommandTest {
         try (Stream<Path> files = Files.list(dir)) {
             return files.map(p -> p.getFileName().toString()).toList();
         }
+    }
+
+    static double luminance(Image img, int x, int y) {
+        return 0.2126 * img.get(x, y, 0) + 0.7152 * img.get(x, y, 1) + 0.0722 * img.get(x, y, 2);
     }
 }

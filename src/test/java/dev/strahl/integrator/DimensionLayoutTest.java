@@ -2,7 +2,7 @@ package dev.strahl.integrator;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.camera.PinholeRays;
+import dev.strahl.camera.CameraRays;
 import dev.strahl.geometry.Ray;
 import dev.strahl.image.Rgb;
 import dev.strahl.io.SceneLoader;
@@ -84,7 +84,7 @@ class DimensionLayoutTest {
         Integrator integrator = make.apply(world);
         Integrator.Worker worker = integrator.newWorker();
         integrator.prepareSample(5, 0, Parallel.sequential(worker));
-        PinholeRays camera = Meshes.rays(scene.camera(), SIZE, SIZE);
+        CameraRays camera = Meshes.rays(scene.camera(), SIZE, SIZE);
         RecordingSampler sampler = new RecordingSampler();
         Sample2D film = new Sample2D();
         Ray ray = new Ray();

@@ -5,7 +5,7 @@ import dev.strahl.testing.Meshes;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import dev.strahl.math.MutableRgb;
-import dev.strahl.camera.PinholeRays;
+import dev.strahl.camera.CameraRays;
 import dev.strahl.geometry.Ray;
 import dev.strahl.image.Rgb;
 import dev.strahl.render.HemisphereSampling;
@@ -15,7 +15,8 @@ import dev.strahl.scene.Scene;
 import dev.strahl.io.SceneLoader;
 import java.lang.management.ManagementFactory;
 import java.nio.file.Path;
-import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * The per-sample loop allocates nothing (STYLE.md habit 4): once compiled, tracing paths through
@@ -24,11 +25,12 @@ import org.junit.jupiter.api.Test;
  */
 class PathTracerAllocationTest {
 
-    @Test
-    void radianceAllocatesNothingPerSample() throws Exception {
-        Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
+    @ParameterizedTest
+    @ValueSource(strings = {"scenes/cornell-box.json", "src/test/resources/golden/envmap-sphere.json"})
+    void radianceAllocatesNothingPerSample(String file) throws Exception {
+        Scene scene = SceneLoader.load(Path.of(file));
         Integrator.Worker worker = new PathTracer(World.of(scene), -1, false, false, PathTracer.Strategy.MIS).newWorker();
-        PinholeRays camera = Meshes.rays(scene.camera(), 64, 64);
+        CameraRays camera = Meshes.rays(scene.camera(), 64, 64);
         Ray ray = new Ray();
         Sample2D film = new Sample2D();
         MutableRgb out = new MutableRgb();

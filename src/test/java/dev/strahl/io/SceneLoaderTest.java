@@ -65,7 +65,7 @@ class SceneLoaderTest {
         assertThat(obj.materials()).isEqualTo(json.materials());
         assertThat(obj.materials()).extracting(Material::name).containsExactly(
                 "floor", "ceiling", "backWall", "rightWall", "leftWall", "shortBox", "tallBox", "light");
-        assertThat(World.of(obj).environment()).isEqualTo(World.of(json).environment()).isEqualTo(Rgb.BLACK);
+        assertThat(World.of(obj).environment().constantRadiance()).isEqualTo(World.of(json).environment().constantRadiance()).isEqualTo(Rgb.BLACK);
         assertThat(obj.notes()).isEqualTo(json.notes()).isEmpty();
     }
 
@@ -186,15 +186,19 @@ class SceneLoaderTest {
     }
 
     @Test
-    void anObjWithoutLightsIsLitByAWhiteEnvironmentWithANote() throws Exception {
+    void anObjWithoutLightsIsLitByTheStudioSkyAndFramedFromAboveWithNotes() throws Exception {
         Path obj = dir.resolve("dark.obj");
         Files.writeString(obj, SQUARE + "f 1 2 3 4\n");
         Scene scene = SceneLoader.load(obj);
-        assertThat(World.of(scene).environment()).isEqualTo(Rgb.WHITE);
-        assertThat(scene.notes()).containsExactly("the scene has no light: lighting it with a uniform white environment");
-        // framed from +Z: the camera looks at the centre of the square from in front of it
+        assertThat(World.of(scene).environment().toString()).contains("studio-sky");
+        assertThat(scene.notes()).containsExactly("the scene has no light and no camera: lighting it with strahl's studio sky"
+                + " (a procedural blue sky with a soft sun high at the front left, dark ground) and framing it from a raised"
+                + " three-quarter view (azimuth 40° from +Z towards +X, elevation 25°, 40° field of view)");
+        // a raised three-quarter view: in front of the square (+Z), to its right (+X) and above its centre
         assertThat(scene.camera().lookAt().x()).isEqualTo(0.5);
         assertThat(scene.camera().lookFrom().z()).isPositive();
+        assertThat(scene.camera().lookFrom().x()).isGreaterThan(0.5);
+        assertThat(scene.camera().lookFrom().y()).isGreaterThan(scene.camera().lookAt().y());
     }
 
     // ---- which file, which format ------------------------------------------------------------------

@@ -27,6 +27,19 @@ class DeterminismTest {
         assertThat(three.rgb()).isEqualTo(one.rgb());
     }
 
+    /** An environment map (importance-sampled) seen through a thin lens (a lens pair per sample), every integrator. */
+    @Test
+    void anEnvironmentMapThroughAThinLensGivesIdenticalBitsOnOneAndTwoThreads() throws Exception {
+        Scene scene = SceneLoader.load(Path.of("src/test/resources/golden/envmap-sphere.json"));
+        scene = scene.withCamera(scene.camera().withLens(0.2, 3.5));
+        for (IntegratorKind kind : IntegratorKind.values()) {
+            RenderSettings s = SETTINGS.withIntegrator(kind).withPhotons(new PhotonParameters(2000, 0));
+            Image one = Renders.render(scene, s.withThreads(1));
+            Image two = Renders.render(scene, s.withThreads(2));
+            assertThat(two.rgb()).as("%s", kind).isEqualTo(one.rgb());
+        }
+    }
+
     @Test
     void passSizeDoesNotChangeTheImage() throws Exception {
         Scene scene = cornell();

@@ -3,7 +3,7 @@ package dev.strahl.render;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import dev.strahl.camera.PinholeRays;
+import dev.strahl.camera.CameraRays;
 import dev.strahl.film.Film;
 import dev.strahl.geometry.Ray;
 import dev.strahl.image.Image;
@@ -82,7 +82,7 @@ class FeatureBuffersTest {
                 .build();
         int size = 32;
         RenderBuffers b = render(scene, RenderSettings.defaults().withSize(size, size).withSamplesPerPixel(4).withAovs(ALL));
-        PinholeRays rays = Meshes.rays(camera, size, size);
+        CameraRays rays = Meshes.rays(camera, size, size);
         Ray ray = new Ray();
         int checked = 0;
         for (int y = 1; y < size - 1; y++) {

@@ -84,7 +84,7 @@ class CornellVariantsTest {
     void loadsWithoutNotes(Variant v) throws Exception {
         Scene scene = SceneLoader.load(v.json());
         assertThat(scene.notes()).isEmpty();
-        assertThat(World.of(scene).environment()).isEqualTo(Rgb.BLACK);
+        assertThat(World.of(scene).environment().constantRadiance()).isEqualTo(Rgb.BLACK);
         assertThat(World.of(scene).lights().isEmpty()).isFalse();
     }
 

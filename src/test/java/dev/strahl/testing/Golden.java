@@ -3,7 +3,7 @@ package dev.strahl.testing;
 import dev.strahl.world.World;
 import dev.strahl.accel.Bvh;
 import dev.strahl.accel.TraversalStack;
-import dev.strahl.camera.PinholeRays;
+import dev.strahl.camera.CameraRays;
 import dev.strahl.image.Image;
 import dev.strahl.io.ImageWriters;
 import dev.strahl.io.image.PfmReader;
@@ -52,7 +52,7 @@ public final class Golden {
     /** The face regions of the scene as seen by its camera at the given size. */
     public static List<Region> faceRegions(Scene scene, int width, int height) {
         int sub = 4;
-        PinholeRays rays = Meshes.rays(scene.camera(), width * sub, height * sub);
+        CameraRays rays = Meshes.rays(scene.camera(), width * sub, height * sub);
         Bvh bvh = World.of(scene).bvh();
         Ray ray = new Ray();
         Hit hit = new Hit();

@@ -1,6 +1,6 @@
 package dev.strahl.testing;
 
-import dev.strahl.camera.PinholeRays;
+import dev.strahl.camera.CameraRays;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.GeometryBuilder;
 import dev.strahl.scene.Camera;
@@ -87,7 +87,7 @@ public final class Meshes {
     }
 
     /** The camera's ray generator for a film size. */
-    public static PinholeRays rays(Camera c, int width, int height) {
-        return new PinholeRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), width, height);
+    public static CameraRays rays(Camera c, int width, int height) {
+        return new CameraRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), width, height);
     }
 }

@@ -12,6 +12,7 @@ import dev.strahl.render.RenderSettings;
 import dev.strahl.render.PhotonParameters;
 import dev.strahl.render.IntegratorKind;
 import dev.strahl.io.json.SceneDescription.MaterialSpec;
+import dev.strahl.io.json.SceneDescription.EnvironmentSpec;
 import dev.strahl.io.json.SceneDescription.ShapeSpec;
 import java.io.IOException;
 import java.nio.charset.CharacterCodingException;
@@ -45,7 +46,9 @@ public final class JsonSceneReader {
             "mesh", Set.of("type", "file", "material", "transform"),
             "triangles", Set.of("type", "positions", "indices", "normals", "material", "transform"));
     static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment");
-    static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov");
+    static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov", "aperture", "focusDistance");
+    /** The environment types (the object form; an array is a constant radiance) and their keys. */
+    static final Map<String, Set<String>> ENVIRONMENT_KEYS = Map.of("envmap", Set.of("type", "file", "scale", "rotate"));
     static final Set<String> FILM_KEYS = Set.of("width", "height");
     static final Set<String> INTEGRATOR_KEYS = Set.of("type", "spp", "maxDepth", "seed", "lightSamples", "hemisphere", "photons",
             "photonRadius");
@@ -108,7 +111,7 @@ public final class JsonSceneReader {
             }
         }
         Camera camera = top.containsKey("camera") ? camera(top.get("camera")) : null;
-        Rgb environment = top.containsKey("environment") ? v.color(top.get("environment"), "environment") : null;
+        EnvironmentSpec environment = top.containsKey("environment") ? environment(top.get("environment")) : null;
         SceneSettings settings = settings(top.get("film"), top.get("integrator"));
         return new SceneDescription(camera, settings, materials, shapes, environment);
     }
@@ -254,6 +257,48 @@ public final class JsonSceneReader {
         return name;
     }
 
+    // ---- environment -----------------------------------------------------------------------------
+
+    /** {@code [r, g, b]}, or {@code {"type": "envmap", "file": ..., "scale": 1, "rotate": 0}}. */
+    private EnvironmentSpec environment(JsonNode node) throws SceneException {
+        if (!node.isObject()) {
+            return new EnvironmentSpec(v.color(node, "environment"), null, 1, 0);
+        }
+        Map<String, JsonNode> e = node.object();
+        String type = v.string(v.require(e, "type", node), "environment.type");
+        Set<String> keys = ENVIRONMENT_KEYS.get(type);
+        if (keys == null) {
+            throw new SceneException(file, e.get("type").line, "unknown environment type '" + type + "' (known: "
+                    + JsonValues.sorted(ENVIRONMENT_KEYS.keySet()) + "; or give a constant radiance as [r, g, b])");
+        }
+        v.allowOnly(e, "environment of type " + type, keys);
+        JsonNode fileNode = v.require(e, "file", node);
+        String name = v.string(fileNode, "environment.file");
+        Path map;
+        try {
+            map = folder(file).resolve(name);
+        } catch (java.nio.file.InvalidPathException ex) {
+            throw new SceneException(file, fileNode.line, "'environment.file' is not a valid path: " + name);
+        }
+        if (!EnvironmentMaps.isSupported(name)) {
+            throw new SceneException(file, fileNode.line, "'environment.file' must name an .hdr, .exr or .pfm image, got '" + name + "'");
+        }
+        if (!Files.isRegularFile(map)) {
+            throw new SceneException(file, fileNode.line, "environment map not found: " + map);
+        }
+        double scale = 1, rotate = 0;
+        if (e.containsKey("scale")) {
+            scale = v.number(e.get("scale"), "environment.scale");
+            if (!(scale >= 0)) {
+                throw new SceneException(file, e.get("scale").line, "'environment.scale' must be >= 0, got " + JsonValues.format(scale));
+            }
+        }
+        if (e.containsKey("rotate")) {
+            rotate = v.number(e.get("rotate"), "environment.rotate");
+        }
+        return new EnvironmentSpec(null, name, scale, rotate);
+    }
+
     // ---- camera, film, integrator ----------------------------------------------------------------
 
     private Camera camera(JsonNode node) throws SceneException {
@@ -263,8 +308,22 @@ public final class JsonSceneReader {
         Vector3d at = v.vector(v.require(c, "lookAt", node), "camera.lookAt");
         Vector3d up = c.containsKey("up") ? v.vector(c.get("up"), "camera.up") : new Vector3d(0, 1, 0);
         double fov = c.containsKey("fov") ? v.number(c.get("fov"), "camera.fov") : 40;
+        double aperture = c.containsKey("aperture") ? v.number(c.get("aperture"), "camera.aperture") : 0;
+        if (!(aperture >= 0)) {
+            throw new SceneException(file, c.get("aperture").line, "'camera.aperture' (the lens radius) must be >= 0, got "
+                    + JsonValues.format(aperture));
+        }
+        Double focus = null;
+        if (c.containsKey("focusDistance")) {
+            focus = v.number(c.get("focusDistance"), "camera.focusDistance");
+            if (!(focus > 0)) {
+                throw new SceneException(file, c.get("focusDistance").line, "'camera.focusDistance' must be positive, got "
+                        + JsonValues.format(focus));
+            }
+        }
         try {
-            return new Camera(from, at, up, fov);
+            Camera camera = new Camera(from, at, up, fov);
+            return camera.withLens(aperture, focus != null ? focus : camera.focusDistance());
         } catch (IllegalArgumentException e) {
             throw new SceneException(file, node.line, "bad 'camera': " + e.getMessage());
         }

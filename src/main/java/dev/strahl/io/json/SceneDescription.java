@@ -26,15 +26,27 @@ import org.joml.Vector3dc;
  * @param settings    the film and integrator keys
  * @param materials   the named materials, in file order
  * @param shapes      the shapes, in file order
- * @param environment the environment radiance, or null for the default
+ * @param environment the environment, or null for the default
  */
 record SceneDescription(Camera camera, SceneSettings settings, Map<String, MaterialSpec> materials, List<ShapeSpec> shapes,
-                        Rgb environment) {
+                        EnvironmentSpec environment) {
 
     SceneDescription {
         Objects.requireNonNull(settings, "settings");
         materials = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(materials));
         shapes = List.copyOf(shapes);
+    }
+
+    /**
+     * The environment as the file gives it: a constant radiance, or a map file (relative to the
+     * scene file's folder unless absolute) with its scale and rotation about +Y in degrees.
+     */
+    record EnvironmentSpec(Rgb radiance, String file, double scale, double rotate) {
+        EnvironmentSpec {
+            if ((radiance == null) == (file == null)) {
+                throw new IllegalArgumentException("an environment is a radiance or a map file");
+            }
+        }
     }
 
     /** A material as the file gives it: its type and that type's keys. */
@@ -140,8 +152,15 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
         if (camera != null) {
             builder.camera(camera);
         }
-        if (environment != null) {
-            builder.environment(environment);
+        if (environment != null && environment.radiance() != null) {
+            builder.environment(environment.radiance());
+        } else if (environment != null) {
+            Path map = folder.resolve(environment.file());
+            try {
+                builder.environmentMap(EnvironmentMaps.read(map), environment.scale(), environment.rotate());
+            } catch (IllegalArgumentException e) {
+                throw new SceneException(map, e.getMessage());
+            }
         }
         return builder.build();
     }

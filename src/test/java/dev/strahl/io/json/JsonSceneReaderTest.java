@@ -72,7 +72,7 @@ class JsonSceneReaderTest {
 
         assertThat(World.of(scene).geometry().triangleCount()).isEqualTo(1);
         assertThat(World.of(scene).geometry().sphereCount()).isEqualTo(2);
-        assertThat(World.of(scene).environment()).isEqualTo(new Rgb(0.25, 0.5, 0.75));
+        assertThat(World.of(scene).environment().constantRadiance()).isEqualTo(new Rgb(0.25, 0.5, 0.75));
 
         Material red = material(scene, "red");
         Material lamp = material(scene, "lamp");
@@ -139,7 +139,7 @@ class JsonSceneReaderTest {
     }
 
     @Test
-    void withoutCameraTheSceneIsFramedFromPlusZ() throws Exception {
+    void withoutCameraOrLightTheSceneIsFramedFromARaisedThreeQuarterView() throws Exception {
         Scene scene = read("""
                 {
                   "materials": { "m": { "type": "diffuse" } },
@@ -148,20 +148,21 @@ class JsonSceneReaderTest {
                 """);
         Camera c = scene.camera();
         assertThat(c.lookAt()).isEqualTo(new Vector3d(1, 2, 3));
-        assertThat(c.lookFrom().z()).isGreaterThan(3 + 1);
-        assertThat(c.lookFrom().x()).isEqualTo(1);
-        assertThat(c.lookFrom().y()).isEqualTo(2);
+        Vector3d dir = new Vector3d(c.lookFrom()).sub(c.lookAt()).normalize();
+        assertThat(Math.toDegrees(Math.asin(dir.y))).isCloseTo(25, within(1e-9));
+        assertThat(Math.toDegrees(Math.atan2(dir.x, dir.z))).isCloseTo(40, within(1e-9));
+        assertThat(c.lookFrom().distance(c.lookAt())).isGreaterThan(1 / Math.sin(Math.toRadians(20)));
     }
 
     @Test
-    void environmentDefaultsToBlackWithLightsAndWhiteWithoutThemWithANote() throws Exception {
+    void environmentDefaultsToBlackWithLightsAndTheStudioSkyWithoutThemWithANote() throws Exception {
         Scene lit = read("""
                 {
                   "materials": { "lamp": { "type": "diffuse", "emission": [1, 1, 1] } },
                   "shapes": [ { "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "lamp" } ]
                 }
                 """);
-        assertThat(World.of(lit).environment()).isEqualTo(Rgb.BLACK);
+        assertThat(World.of(lit).environment().constantRadiance()).isEqualTo(Rgb.BLACK);
         assertThat(lit.notes()).isEmpty();
 
         Scene unlit = read("""
@@ -170,8 +171,10 @@ class JsonSceneReaderTest {
                   "shapes": [ { "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m" } ]
                 }
                 """);
-        assertThat(World.of(unlit).environment()).isEqualTo(Rgb.WHITE);
-        assertThat(unlit.notes()).anySatisfy(n -> assertThat(n).contains("no light").contains("white environment"));
+        assertThat(World.of(unlit).environment().isConstant()).isFalse();
+        assertThat(World.of(unlit).environment().toString()).contains("studio-sky");
+        assertThat(unlit.notes()).singleElement().satisfies(n -> assertThat(n).contains("no light").contains("studio sky")
+                .contains("no camera").contains("three-quarter"));
     }
 
     @Test
@@ -183,7 +186,7 @@ class JsonSceneReaderTest {
                   "environment": [0, 0, 0]
                 }
                 """);
-        assertThat(World.of(scene).environment()).isEqualTo(Rgb.BLACK);
+        assertThat(World.of(scene).environment().constantRadiance()).isEqualTo(Rgb.BLACK);
         assertThat(scene.notes()).isEmpty();
     }
 
@@ -392,10 +395,10 @@ class JsonSceneReaderTest {
                   "shapes": [ %s ],
                   "camera": {
                     "lookFrom": [0, 0, 5], "lookAt": [0, 0, 0],
-                    "aperture": 0.1
+                    "focalLength": 50
                   }
                 }
-                """.formatted(MATERIALS, SPHERE), "unknown key 'aperture' in camera"),
+                """.formatted(MATERIALS, SPHERE), "unknown key 'focalLength' in camera"),
             bad("unknown key in a material", 4, """
                 {
                   "materials": {

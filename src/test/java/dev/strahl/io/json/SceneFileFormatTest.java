@@ -35,7 +35,7 @@ class SceneFileFormatTest {
     /** A scene that uses every key of the format. */
     static final String EVERY_KEY = """
             {
-              "camera": { "lookFrom": [0, 1, 5], "lookAt": [0, 1, 0], "up": [0, 1, 0], "fov": 35 },
+              "camera": { "lookFrom": [0, 1, 5], "lookAt": [0, 1, 0], "up": [0, 1, 0], "fov": 35, "aperture": 0.05, "focusDistance": 4.5 },
               "film": { "width": 320, "height": 200 },
               "integrator": { "type": "direct", "spp": 12, "maxDepth": 3, "seed": 9007199254740993, "lightSamples": 4,
                               "hemisphere": "uniform", "photons": 2500, "photonRadius": 0.05 },
@@ -87,7 +87,9 @@ class SceneFileFormatTest {
         assertThat(file.settings()).isEqualTo(new SceneSettings(320, 200, 12, 3, 9007199254740993L, IntegratorKind.DIRECT, 4,
                 HemisphereSampling.UNIFORM, 2500, 0.05));
         assertThat(scene.camera().fovDegrees()).isEqualTo(35);
-        assertThat(World.of(scene).environment()).isEqualTo(new Rgb(0.1, 0.2, 0.3));
+        assertThat(scene.camera().aperture()).isEqualTo(0.05);
+        assertThat(scene.camera().focusDistance()).isEqualTo(4.5);
+        assertThat(World.of(scene).environment().constantRadiance()).isEqualTo(new Rgb(0.1, 0.2, 0.3));
         Geometry g = World.of(scene).geometry();
         assertThat(g.triangleCount()).isEqualTo(1 + 1 + 1 + 2);
         assertThat(g.sphereCount()).isEqualTo(3);

@@ -53,9 +53,16 @@ final class SceneFileWriter {
             shape(s);
         }
         g.writeEndArray();
-        if (d.environment() != null) {
+        if (d.environment() != null && d.environment().radiance() != null) {
             g.writeFieldName("environment");
-            rgb(d.environment());
+            rgb(d.environment().radiance());
+        } else if (d.environment() != null) {
+            g.writeObjectFieldStart("environment");
+            g.writeStringField("type", "envmap");
+            g.writeStringField("file", d.environment().file());
+            g.writeNumberField("scale", d.environment().scale());
+            g.writeNumberField("rotate", d.environment().rotate());
+            g.writeEndObject();
         }
         g.writeEndObject();
     }
@@ -69,6 +76,8 @@ final class SceneFileWriter {
         g.writeFieldName("up");
         vector(c.up());
         g.writeNumberField("fov", c.fovDegrees());
+        g.writeNumberField("aperture", c.aperture());
+        g.writeNumberField("focusDistance", c.focusDistance());
         g.writeEndObject();
     }
 

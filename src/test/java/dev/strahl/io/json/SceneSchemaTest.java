@@ -81,6 +81,7 @@ class SceneSchemaTest {
         JsonNode defs = get(schemaTree, "$defs");
         assertThat(keys(schemaTree)).isEqualTo(new TreeSet<>(JsonSceneReader.TOP_KEYS));
         assertThat(keys(get(defs, "camera"))).isEqualTo(new TreeSet<>(JsonSceneReader.CAMERA_KEYS));
+        assertThat(keys(get(defs, "envmap"))).isEqualTo(new TreeSet<>(JsonSceneReader.ENVIRONMENT_KEYS.get("envmap")));
         assertThat(keys(get(defs, "film"))).isEqualTo(new TreeSet<>(JsonSceneReader.FILM_KEYS));
         assertThat(keys(get(defs, "integrator"))).isEqualTo(new TreeSet<>(JsonSceneReader.INTEGRATOR_KEYS));
         assertThat(byType(get(defs, "material"))).isEqualTo(sorted(JsonSceneReader.MATERIAL_KEYS));
@@ -109,7 +110,12 @@ class SceneSchemaTest {
         "{ \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\", \"transform\": [ { \"shear\": 1 } ] } ] }",
         "{ \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\", \"transform\": [ { \"scale\": 0 } ] } ] }",
         "{ \"shapes\": [ { \"type\": \"triangles\", \"positions\": [0, 0, 0], \"indices\": [0, 0, -1], \"material\": \"m\" } ] }",
-        "{ \"environment\": [-1, 0, 0], \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }"})
+        "{ \"environment\": [-1, 0, 0], \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"environment\": { \"type\": \"envmap\", \"file\": \"sky.png\" }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"environment\": { \"type\": \"sky\", \"file\": \"sky.hdr\" }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"environment\": { \"type\": \"envmap\", \"file\": \"sky.hdr\", \"scale\": -1 }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"camera\": { \"lookFrom\": [0, 0, 1], \"lookAt\": [0, 0, 0], \"aperture\": -0.1 }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"camera\": { \"lookFrom\": [0, 0, 1], \"lookAt\": [0, 0, 0], \"focusDistance\": 0 }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }"})
     void whatTheSchemaRefusesTheReaderRefuses(String json) throws Exception {
         assertThat(errors(json)).as("schema errors").isNotEmpty();
         Files.writeString(dir.resolve("a.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");

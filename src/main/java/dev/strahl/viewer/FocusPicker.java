@@ -1,0 +1,45 @@
+package dev.strahl.viewer;
+
+import dev.strahl.accel.Bvh;
+import dev.strahl.camera.CameraRays;
+import dev.strahl.geometry.Hit;
+import dev.strahl.geometry.Ray;
+import dev.strahl.scene.Camera;
+import dev.strahl.scene.Scene;
+import dev.strahl.world.World;
+
+/**
+ * What Ctrl+click focuses on: the first surface the pinhole ray through the clicked point hits,
+ * found with the scene's BVH, and its distance along the camera's viewing direction (the thin
+ * lens's focus distance that makes that point sharp).
+ */
+final class FocusPicker {
+    private FocusPicker() {
+    }
+
+    /**
+     * @param fx the clicked point's x as a fraction of the image width, 0 at the left
+     * @param fy its y as a fraction of the height, 0 at the top
+     * @param aspect the image's width / height
+     * @return the focus distance, or NaN if the ray hits nothing
+     */
+    static double focusDistance(Scene scene, Camera camera, double fx, double fy, double aspect) {
+        int height = 1000;
+        int width = Math.max(1, (int) Math.round(height * aspect));
+        CameraRays rays = new CameraRays(camera.lookFrom(), camera.lookAt(), camera.up(), camera.fovDegrees(), width, height);
+        Ray ray = new Ray();
+        rays.generate(fx * width, fy * height, ray);
+        Hit hit = new Hit();
+        hit.reset();
+        Bvh bvh = World.of(scene).bvh();
+        if (!bvh.intersect(ray, hit, Bvh.newStack(), false)) {
+            return Double.NaN;
+        }
+        double fxDir = camera.lookAt().x() - camera.lookFrom().x();
+        double fyDir = camera.lookAt().y() - camera.lookFrom().y();
+        double fzDir = camera.lookAt().z() - camera.lookFrom().z();
+        double len = Math.sqrt(fxDir * fxDir + fyDir * fyDir + fzDir * fzDir);
+        double along = hit.t * (ray.d.x * fxDir + ray.d.y * fyDir + ray.d.z * fzDir) / len;
+        return along > 0 ? along : Double.NaN;
+    }
+}
