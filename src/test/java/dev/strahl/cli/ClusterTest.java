@@ -120,7 +120,7 @@ class ClusterTest {
         }
         w3.process.destroy();                                      // leaves cleanly (SIGTERM)
         assertThat(w3.process.waitFor(30, TimeUnit.SECONDS)).isTrue();
-        assertThat(w3.text()).contains("leaving the cluster");
+        assertThat(w3.text()).contains("SIGTERM: leaving the cluster");
 
         // two workers, through the library: the same listener and snapshot as a local job
         Scene scene = SceneLoader.load(Path.of(SCENE));
