@@ -35,6 +35,8 @@ final class Interrupts implements AutoCloseable {
     private volatile Runnable stop;
     private volatile int exitCode;
 
+    private volatile String stopping = "stopping";
+
     private Interrupts(PrintWriter err) {
         this.err = err;
     }
@@ -53,7 +55,13 @@ final class Interrupts implements AutoCloseable {
      * (while the scene was loading) has already ended the program, since nothing was rendered.
      */
     void onFirstSignal(Runnable stopRender) {
-        this.stop = stopRender;
+        onFirstSignal(stopRender, "stopping and writing the image rendered so far");
+    }
+
+    /** As {@link #onFirstSignal(Runnable)}, saying what stopping means ("leaving the cluster"). */
+    void onFirstSignal(Runnable stop, String stopping) {
+        this.stopping = stopping;
+        this.stop = stop;
     }
 
     /** Whether a signal asked the render to stop. */
@@ -89,7 +97,7 @@ final class Interrupts implements AutoCloseable {
             Runtime.getRuntime().halt(exitCode != 0 ? exitCode : code);
         }
         exitCode = code;
-        err.println("strahl: " + name + ": stopping and writing the image rendered so far (again to exit at once)");
+        err.println("strahl: " + name + ": " + stopping + " (again to exit at once)");
         err.flush();
         stop.run();
     }

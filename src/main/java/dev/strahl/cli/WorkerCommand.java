@@ -16,8 +16,8 @@ import picocli.CommandLine.Spec;
 /**
  * {@code strahl worker}: a member of a render cluster that renders the units of the renders
  * started with {@code strahl render --cluster}, until Ctrl-C (or SIGTERM), which leaves the
- * cluster cleanly. Exit codes: 130/143 after a signal, 2 bad usage or an address that cannot be
- * bound.
+ * cluster cleanly. Exit codes: 130/143 after a signal, 2 bad usage, an address that cannot be
+ * bound, members to join of which none answers, or a cluster of another strahl version.
  */
 @Command(name = "worker",
         mixinStandardHelpOptions = true,
@@ -32,7 +32,7 @@ final class WorkerCommand implements Callable<Integer> {
     CommandSpec spec;
 
     @Option(names = "--join", paramLabel = "HOST[:PORT],...", split = ",",
-            description = "Members to join; without it this worker starts a cluster of its own that others join.")
+            description = "Members to join (none answering within 10 s is an error); without it this worker starts a cluster of its own that others join.")
     List<String> join = new ArrayList<>();
 
     @Option(names = "--bind", paramLabel = "ADDR", defaultValue = "127.0.0.1",
@@ -66,7 +66,7 @@ final class WorkerCommand implements Callable<Integer> {
         }
         try (Interrupts irq = Interrupts.install(err)) {
             var stop = new CountDownLatch(1);
-            irq.onFirstSignal(stop::countDown);
+            irq.onFirstSignal(stop::countDown, "leaving the cluster");
             RenderCluster member;
             try {
                 member = RenderCluster.builder().join(join.toArray(String[]::new)).bind(bind).port(port).clusterName(clusterName)
@@ -77,11 +77,7 @@ final class WorkerCommand implements Callable<Integer> {
                 return 2;
             }
             try (member) {
-                if (!join.isEmpty() && member.memberCount() < 2) {
-                    report(err, "no member answered at " + String.join(", ", join) + ": waiting for others to join this one");
-                }
                 stop.await();
-                report(err, "leaving the cluster");
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }

@@ -120,7 +120,7 @@ class ClusterTest {
         }
         w3.process.destroy();                                      // leaves cleanly (SIGTERM)
         assertThat(w3.process.waitFor(30, TimeUnit.SECONDS)).isTrue();
-        assertThat(w3.text()).contains("leaving the cluster");
+        assertThat(w3.text()).contains("SIGTERM: leaving the cluster");
 
         // two workers, through the library: the same listener and snapshot as a local job
         Scene scene = SceneLoader.load(Path.of(SCENE));
@@ -204,6 +204,18 @@ class ClusterTest {
 
     @Test
     @Order(4)
+    void aLocalCheckpointResumesOnTheClusterBitIdentically() throws Exception {
+        byte[] local = local(SCENE, "full.pfm", "--spp", "10");
+        Path ck = dir.resolve("part.ck");
+        local(SCENE, "part.pfm", "--spp", "3", "--checkpoint", ck.toString());
+        Run r = onCluster(SCENE, "resumed.pfm", "--spp", "10", "--resume", ck.toString());
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.err()).contains("resuming");
+        assertThat(Files.readAllBytes(dir.resolve("resumed.pfm"))).isEqualTo(local);
+    }
+
+    @Test
+    @Order(5)
     void aWorkerOfAnotherVersionIsRefusedAndTheCoordinatorDyingLeavesTheWorkersUp() throws Exception {
         Worker old = worker("old", List.of("-Dstrahl.cluster.version=0.0-old"), "--join", "127.0.0.1:" + first.port);
         assertThat(old.process.waitFor(60, TimeUnit.SECONDS)).as(old.text()).isTrue();
@@ -236,7 +248,7 @@ class ClusterTest {
     }
 
     @Test
-    @Order(5)
+    @Order(6)
     void nothingReachableIsAClearErrorWithinThirtySeconds() throws Exception {
         long start = System.nanoTime();
         Run r = strahl("render", SCENE, "-o", dir.resolve("u.png").toString(), "--spp", "1", "--width", "8", "--height", "8",
@@ -249,7 +261,7 @@ class ClusterTest {
     }
 
     @Test
-    @Order(6)
+    @Order(7)
     void usageErrors() {
         assertThat(strahl("render", SCENE, "-o", dir.resolve("a.png").toString(), "--port", "5701").err()).contains("--port needs --cluster");
         assertThat(strahl("render", SCENE, "-o", dir.resolve("a.png").toString(), "--cluster-name", "x").code()).isEqualTo(2);
@@ -263,7 +275,7 @@ class ClusterTest {
     }
 
     @Test
-    @Order(7)
+    @Order(8)
     void aPlainRenderLoadsNoHazelcastClass() throws Exception {
         Path out = dir.resolve("classes.txt");
         Process p = child(out, List.of("-Xlog:class+load=info"), "render", SCENE, "-o", dir.resolve("plain.png").toString(),
