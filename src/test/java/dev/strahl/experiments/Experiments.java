@@ -76,6 +76,7 @@ public final class Experiments {
             Map<String, String> all = Page.read(out.resolve("figures.txt"));
             addTotal(all);
             scheduleChart(out, all);
+            profileChart(out, all);
             Page.write(out.resolve("page.md.in"), all, root.resolve("docs").resolve("experiments.md"));
             return;
         }
@@ -476,8 +477,7 @@ public final class Experiments {
         figure("e8.cornell.triangles", World.of(box).geometry().triangleCount());
         Charts.bars(out.resolve("e8-accel.png"), "Rays per second: BVH against every ray against every primitive", "rays per second (log)",
                 speed, false, true);
-        Charts.bars(out.resolve("e8-profile.png"), "Where a frame's time goes (JFR execution samples of the render threads)",
-                "share of samples", shares, true, false);
+        Charts.bars(out.resolve("e8-profile.png"), PROFILE_TITLE, "share of samples", shares, true, false);
         culling();
     }
 
@@ -630,6 +630,26 @@ public final class Experiments {
             measured.put(f.substring(0, f.indexOf(" = ")), f.substring(f.indexOf(" = ") + 3));
         }
         scheduleChart(out, measured);
+    }
+
+    private static final String PROFILE_TITLE = "Where a frame's time goes (JFR execution samples of the render threads)";
+    private static final String[] PROFILE_RUNS = {"Cornell Box, BVH", "Cornell Box, none", "bunny, BVH", "bunny, none"};
+    private static final String[] PROFILE_PARTS = {"intersection", "shading", "sampling", "lights", "integrator, camera, film"};
+
+    /** The time-share plot of experiment 8, from its figures (so that --page-only can redraw it). */
+    static void profileChart(Path out, Map<String, String> figures) throws IOException {
+        Map<String, Map<String, Double>> shares = new LinkedHashMap<>();
+        for (String part : PROFILE_PARTS) {
+            for (String run : PROFILE_RUNS) {
+                String key = "e8.profile." + run.replaceAll("[^A-Za-z]+", "_").toLowerCase(Locale.ROOT) + "." + part.replaceAll("[^a-z]+", "_");
+                if (figures.containsKey(key)) {
+                    shares.computeIfAbsent(part, k -> new LinkedHashMap<>()).put(run, Double.parseDouble(figures.get(key)));
+                }
+            }
+        }
+        if (!shares.isEmpty()) {
+            Charts.bars(out.resolve("e8-profile.png"), PROFILE_TITLE, "share of samples", shares, true, false);
+        }
     }
 
     /** The plot of experiment 9, from its figures (so that --page-only can redraw it). */
