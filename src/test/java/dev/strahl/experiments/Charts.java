@@ -105,6 +105,7 @@ final class Charts {
             y.setSmallestValue(1e-6);
             plot.setRangeAxis(y);
         }
+        plot.getDomainAxis().setMaximumCategoryLabelLines(2);
         BarRenderer r = (BarRenderer) plot.getRenderer();
         r.setBarPainter(new StandardBarPainter());
         r.setShadowVisible(false);

@@ -72,6 +72,14 @@ public final class Experiments {
         Files.createDirectories(out);
         Experiments e = new Experiments(out, root, quick, bunny != null && Files.isRegularFile(bunny) ? bunny : null);
         List<String> only = Arrays.stream(args).filter(a -> a.matches("e[1-9]")).toList();
+        if (Arrays.asList(args).contains("--page-only")) {           // after editing page.md.in: the page from figures.txt
+            Map<String, String> all = Page.read(out.resolve("figures.txt"));
+            addTotal(all);
+            scheduleChart(out, all);
+            profileChart(out, all);
+            Page.write(out.resolve("page.md.in"), all, root.resolve("docs").resolve("experiments.md"));
+            return;
+        }
         long start = System.nanoTime();
         e.warmUp();
         String[] names = {"e1", "e2", "e3", "e4", "e5", "e6", "e8", "e9"};
@@ -100,14 +108,11 @@ public final class Experiments {
         Path file = out.resolve("figures.txt");
         Map<String, String> all = only.isEmpty() ? new LinkedHashMap<>() : Page.read(file);
         double seconds = (System.nanoTime() - start) * 1e-9;
-        if (only.isEmpty()) {
-            e.figure("total.seconds", seconds);
-            e.figure("total.minutes", Math.ceil(seconds / 60));
-        }
         for (String f : e.figures) {
             int eq = f.indexOf(" = ");
             all.put(f.substring(0, eq), f.substring(eq + 3));
         }
+        addTotal(all);
         List<String> lines = new ArrayList<>();
         all.forEach((k, v) -> lines.add(k + " = " + v));
         Files.write(file, lines);
@@ -116,6 +121,18 @@ public final class Experiments {
     }
 
     // ---- helpers ------------------------------------------------------------------------------
+
+    /** The experiments' time, whichever run measured each (the build and the warm-up add about three minutes). */
+    private static void addTotal(Map<String, String> all) {
+        double total = 0;
+        for (var f : all.entrySet()) {
+            if (f.getKey().matches("e[1-9]\\.seconds")) {
+                total += Double.parseDouble(f.getValue());
+            }
+        }
+        all.put("total.seconds", String.format(Locale.ROOT, "%.6g", total));
+        all.put("total.minutes", String.valueOf((long) Math.ceil(total / 60)));
+    }
 
     private void figure(String key, Object value) {
         String v = value instanceof Double d ? String.format(Locale.ROOT, "%.6g", d) : String.valueOf(value);
@@ -447,37 +464,41 @@ public final class Experiments {
         Scene box = scene("cornell-box.json");
         Map<String, Map<String, Double>> shares = new LinkedHashMap<>();
         Map<String, Map<String, Double>> speed = new LinkedHashMap<>();
-        timeAccel("cornell", box, settings(128, 16), speed);
-        profile("Cornell Box, BVH", box, settings(64, 64), shares);
-        profile("Cornell Box, none", box, settings(64, 64).withAccel(Acceleration.NONE), shares);
+        timeAccel("cornell", box, settings(128, 16), settings(128, 16), speed);
+        profile("Cornell Box, BVH", box, settings(128, 64), shares);
+        profile("Cornell Box, none", box, settings(128, 32).withAccel(Acceleration.NONE), shares);
         if (bunny != null) {
             Scene b = SceneLoader.load(bunny);
             figure("e8.bunny.triangles", World.of(b).geometry().triangleCount());
-            timeAccel("bunny", b, settings(64, 2), speed);
-            profile("bunny, BVH", b, settings(64, 64), shares);
+            timeAccel("bunny", b, settings(128, 16), settings(48, 1), speed);
+            profile("bunny, BVH", b, settings(256, 256), shares);
             profile("bunny, none", b, settings(48, 2).withAccel(Acceleration.NONE), shares);
         }
         figure("e8.cornell.triangles", World.of(box).geometry().triangleCount());
         Charts.bars(out.resolve("e8-accel.png"), "Rays per second: BVH against every ray against every primitive", "rays per second (log)",
                 speed, false, true);
-        Charts.bars(out.resolve("e8-profile.png"), "Where a frame's time goes (JFR execution samples of the render threads)",
-                "share of samples", shares, true, false);
+        Charts.bars(out.resolve("e8-profile.png"), PROFILE_TITLE, "share of samples", shares, true, false);
         culling();
     }
 
-    private void timeAccel(String name, Scene scene, RenderSettings s, Map<String, Map<String, Double>> speed) throws Exception {
+    /**
+     * Rays per second with the BVH (at {@code s}) and without (at {@code brute}, smaller where
+     * brute force is slow: rays per second hardly depend on the image size), in three paired
+     * runs; the first pair at the same settings also checks that the images are the same bits.
+     */
+    private void timeAccel(String name, Scene scene, RenderSettings s, RenderSettings brute, Map<String, Map<String, Double>> speed)
+            throws Exception {
+        figure("e8." + name + ".bits_identical", Arrays.equals(render(scene, brute).image().rgb(),
+                render(scene, brute.withAccel(Acceleration.NONE)).image().rgb()));
         double[] bvh = new double[3], none = new double[3];
         double bvhRays = 0, noneRays = 0;
         for (int i = 0; i < 3; i++) {
             Run a = render(scene, s);
-            Run b = render(scene, s.withAccel(Acceleration.NONE));
+            Run b = render(scene, brute.withAccel(Acceleration.NONE));
             bvh[i] = a.stats().raysPerSecond();
             none[i] = b.stats().raysPerSecond();
             bvhRays = a.stats().seconds();
             noneRays = b.stats().seconds();
-            if (i == 0) {
-                figure("e8." + name + ".bits_identical", Arrays.equals(a.image().rgb(), b.image().rgb()));
-            }
         }
         figure("e8." + name + ".bvh.rays_per_second", median(bvh));
         figure("e8." + name + ".none.rays_per_second", median(none));
@@ -590,12 +611,11 @@ public final class Experiments {
 
     private void schedule() throws Exception {
         Scene box = scene("cornell-box.json");
-        Map<String, Map<String, Double>> bars = new LinkedHashMap<>();
         for (int threads : new int[] {2, 4}) {
             for (Schedule sc : Schedule.values()) {
                 double[] seconds = new double[3], idle = new double[3];
                 for (int i = 0; i < 3; i++) {
-                    Run run = render(box, settings(128, 16).withThreads(threads).withSchedule(sc));
+                    Run run = render(box, settings(256, 16).withThreads(threads).withSchedule(sc));
                     seconds[i] = run.stats().seconds();
                     idle[i] = run.stats().threadIdleSeconds();
                 }
@@ -603,11 +623,50 @@ public final class Experiments {
                 figure(key + ".seconds", median(seconds));
                 figure(key + ".idle_seconds", median(idle));
                 figure(key + ".idle_share", median(idle) / (threads * median(seconds)));
-                String column = sc.name().toLowerCase(Locale.ROOT) + ", " + threads + " threads";
-                bars.computeIfAbsent("render time (s)", k -> new LinkedHashMap<>()).put(column, median(seconds));
-                bars.computeIfAbsent("idle thread time, summed (s)", k -> new LinkedHashMap<>()).put(column, median(idle));
             }
         }
-        Charts.bars(out.resolve("e9-schedule.png"), "Cornell Box 128², 16 spp: stripes against tiles", "seconds", bars, false, false);
+        Map<String, String> measured = new LinkedHashMap<>();
+        for (String f : figures) {
+            measured.put(f.substring(0, f.indexOf(" = ")), f.substring(f.indexOf(" = ") + 3));
+        }
+        scheduleChart(out, measured);
+    }
+
+    private static final String PROFILE_TITLE = "Where a frame's time goes (JFR execution samples of the render threads)";
+    private static final String[] PROFILE_RUNS = {"Cornell Box, BVH", "Cornell Box, none", "bunny, BVH", "bunny, none"};
+    private static final String[] PROFILE_PARTS = {"intersection", "shading", "sampling", "lights", "integrator, camera, film"};
+
+    /** The time-share plot of experiment 8, from its figures (so that --page-only can redraw it). */
+    static void profileChart(Path out, Map<String, String> figures) throws IOException {
+        Map<String, Map<String, Double>> shares = new LinkedHashMap<>();
+        for (String part : PROFILE_PARTS) {
+            for (String run : PROFILE_RUNS) {
+                String key = "e8.profile." + run.replaceAll("[^A-Za-z]+", "_").toLowerCase(Locale.ROOT) + "." + part.replaceAll("[^a-z]+", "_");
+                if (figures.containsKey(key)) {
+                    shares.computeIfAbsent(part, k -> new LinkedHashMap<>()).put(run, Double.parseDouble(figures.get(key)));
+                }
+            }
+        }
+        if (!shares.isEmpty()) {
+            Charts.bars(out.resolve("e8-profile.png"), PROFILE_TITLE, "share of samples", shares, true, false);
+        }
+    }
+
+    /** The plot of experiment 9, from its figures (so that --page-only can redraw it). */
+    static void scheduleChart(Path out, Map<String, String> figures) throws IOException {
+        Map<String, Map<String, Double>> bars = new LinkedHashMap<>();
+        for (int threads : new int[] {2, 4}) {
+            for (Schedule sc : Schedule.values()) {
+                String key = "e9." + sc.name().toLowerCase(Locale.ROOT) + ".threads" + threads;
+                if (!figures.containsKey(key + ".seconds")) {
+                    return;
+                }
+                String column = sc.name().toLowerCase(Locale.ROOT) + ", " + threads + " threads";
+                bars.computeIfAbsent("render time (s)", k -> new LinkedHashMap<>()).put(column, Double.parseDouble(figures.get(key + ".seconds")));
+                bars.computeIfAbsent("idle thread time, summed (s)", k -> new LinkedHashMap<>())
+                        .put(column, Double.parseDouble(figures.get(key + ".idle_seconds")));
+            }
+        }
+        Charts.bars(out.resolve("e9-schedule.png"), "Cornell Box 256², 16 spp: stripes against tiles", "seconds", bars, false, false);
     }
 }
