@@ -53,13 +53,9 @@ final class RenderWorkers implements Parallel {
         return !"independent".equals(System.getProperty("strahl.sampler"));
     }
 
-    RenderWorkers(Film film, PinholeRays cameraRays, Integrator integrator, long seed, int threads, String name) {
-        this(film, cameraRays, integrator, null, seed, threads, name);
-    }
-
     /**
-     * Workers that also trace the feature buffers of every camera sample, when {@code features}
-     * makes a tracer per thread (the film must then keep features).
+     * Workers of one job; they also trace the feature buffers of every camera sample when
+     * {@code features} (else null) makes a tracer per thread (the film must then keep features).
      */
     RenderWorkers(Film film, PinholeRays cameraRays, Integrator integrator, Supplier<FeatureTracer> features, long seed, int threads,
                   String name) {
