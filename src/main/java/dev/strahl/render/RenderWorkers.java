@@ -59,8 +59,8 @@ final class RenderWorkers implements Parallel, PassRunner {
     }
 
     /**
-     * Workers for a film; {@code features}, when not null, makes a tracer per thread for the
-     * feature buffers of every camera sample (the film must then keep features).
+     * Workers of one job; they also trace the feature buffers of every camera sample when
+     * {@code features} (else null) makes a tracer per thread (the film must then keep features).
      */
     RenderWorkers(Film film, CameraRays cameraRays, Integrator integrator, Supplier<FeatureTracer> features, long seed, int threads,
                   Schedule schedule, String name) {
