@@ -9,12 +9,14 @@ import java.nio.file.Path;
 /**
  * The figures of one render for tools ({@code render --stats FILE.json}). Render time excludes
  * loading and the BVH build, which are reported separately: {@code load_seconds} is reading and
- * building the scene without the BVH, {@code bvh_build_seconds} the BVH build.
+ * building the scene without the BVH, {@code bvh_build_seconds} the BVH build, {@code texture_bytes}
+ * the memory of the texture images (each file once).
  */
 final class StatsFile {
     private StatsFile() {}
 
-    static void write(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhBuildSeconds) throws IOException {
+    static void write(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhBuildSeconds, long textureBytes)
+            throws IOException {
         JsonFile.write(file, json -> {
             json.writeStartObject();
             json.writeNumberField("seconds", stats.seconds());
@@ -28,6 +30,7 @@ final class StatsFile {
             json.writeNumberField("spp", stats.samplesPerPixel());
             json.writeNumberField("bvh_build_seconds", bvhBuildSeconds);
             json.writeNumberField("load_seconds", loadSeconds);
+            json.writeNumberField("texture_bytes", textureBytes);
             json.writeEndObject();
         });
     }

@@ -1,6 +1,7 @@
 package dev.strahl.material;
 
 import dev.strahl.image.Rgb;
+import org.joml.Vector2dc;
 import org.joml.Vector3dc;
 
 /**
@@ -44,7 +45,7 @@ public record Dielectric(double eta) implements DeltaBsdf {
     }
 
     @Override
-    public boolean sample(Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
+    public boolean sample(Vector2dc uv, Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
         double reflectance = Fresnel.dielectric(wo.z(), eta);
         out.delta = true;
         if (uc < reflectance || !Fresnel.refract(wo, eta, out.wi)) {

@@ -2,6 +2,7 @@ package dev.strahl.material;
 
 import dev.strahl.image.Rgb;
 import java.util.Objects;
+import org.joml.Vector2dc;
 import org.joml.Vector3dc;
 
 /**
@@ -29,7 +30,7 @@ public record Mirror(Rgb reflectance) implements DeltaBsdf {
     }
 
     @Override
-    public boolean sample(Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
+    public boolean sample(Vector2dc uv, Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
         if (wo.z() <= 0) {
             return false;
         }

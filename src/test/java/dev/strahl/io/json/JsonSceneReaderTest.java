@@ -596,7 +596,7 @@ class JsonSceneReaderTest {
                   },
                   "shapes": [ %s ]
                 }
-                """.formatted(SPHERE), "unknown material type 'metal'", "materials.m", "known: dielectric, diffuse, glossy, mirror"),
+                """.formatted(SPHERE), "unknown material type 'metal'", "materials.m", "known: conductor, dielectric, diffuse, glossy, mirror, principled"),
             bad("unknown shape type", 4, """
                 {
                   %s
@@ -704,7 +704,7 @@ class JsonSceneReaderTest {
                   },
                   "shapes": [ %s ]
                 }
-                """.formatted(SPHERE), "'materials.m.emission'", "a mirror material cannot emit light", "diffuse and glossy"),
+                """.formatted(SPHERE), "'materials.m.emission'", "a mirror material cannot emit light", "diffuse, glossy and principled"),
             bad("emission on a dielectric", 3, """
                 {
                   "materials": {
@@ -729,7 +729,7 @@ class JsonSceneReaderTest {
                   },
                   "shapes": [ %s ]
                 }
-                """.formatted(SPHERE), "unknown key 'eta' in materials.m of type dielectric", "known: ior, type"),
+                """.formatted(SPHERE), "unknown key 'eta' in materials.m of type dielectric", "known: alpha, ior, type"),
             bad("roughness on a glossy material", 4, """
                 {
                   "materials": {
@@ -909,7 +909,7 @@ class JsonSceneReaderTest {
 
     private static Rgb albedo(Material m) {
         assertThat(TestScenes.bsdf(m)).isInstanceOf(Lambert.class);
-        return ((Lambert) TestScenes.bsdf(m)).albedo();
+        return ((Lambert) TestScenes.bsdf(m)).albedo().mean();
     }
 
     private static String quote(String s) {
