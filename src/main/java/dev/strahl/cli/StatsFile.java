@@ -10,17 +10,14 @@ import java.util.List;
 /**
  * The figures of one render for tools ({@code render --stats FILE.json}). Render time excludes
  * loading and the BVH build, which are reported separately: {@code load_seconds} is reading and
- * building the scene without the BVH, {@code bvh_build_seconds} the BVH build.
+ * building the scene without the BVH, {@code bvh_build_seconds} the BVH build, {@code texture_bytes}
+ * the memory of the texture images (each file once).
  */
 final class StatsFile {
     private StatsFile() {}
 
-    static void write(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhBuildSeconds) throws IOException {
-        write(file, stats, settings, loadSeconds, bvhBuildSeconds, List.of());
-    }
-
     /** With {@code members}: a cluster render's figures per member ({@code RenderCluster.memberFigures()}), as a list of lines. */
-    static void write(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhBuildSeconds,
+    static void write(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhBuildSeconds, long textureBytes,
                       List<String> members) throws IOException {
         JsonFile.write(file, json -> {
             json.writeStartObject();
@@ -45,6 +42,7 @@ final class StatsFile {
             json.writeNumberField("thread_idle_seconds", stats.threadIdleSeconds());
             json.writeStringField("accel", settings.accel().name().toLowerCase(java.util.Locale.ROOT));
             json.writeStringField("schedule", settings.schedule().name().toLowerCase(java.util.Locale.ROOT));
+            json.writeNumberField("texture_bytes", textureBytes);
             json.writeEndObject();
         });
     }

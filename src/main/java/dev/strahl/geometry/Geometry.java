@@ -19,6 +19,7 @@ public final class Geometry {
     final float[] pos;
     final int[] tri;
     final float[] nrm;          // per vertex, NaN where a vertex has no normal; null if none
+    final float[] uv;           // u, v per vertex, NaN where a vertex has none; null if no mesh has texture coordinates
     final int[] triMaterial;
     final byte[] triFlags;
     final double[] sph;         // cx, cy, cz, r per sphere
@@ -27,9 +28,10 @@ public final class Geometry {
     private final int sphereCount;
 
     /** Takes the arrays (not copies); the counts are those of the material arrays. */
-    Geometry(float[] pos, int[] tri, float[] nrm, int[] triMaterial, byte[] triFlags, double[] sph, int[] sphMaterial) {
+    Geometry(float[] pos, int[] tri, float[] nrm, float[] uv, int[] triMaterial, byte[] triFlags, double[] sph, int[] sphMaterial) {
         this.pos = pos;
         this.nrm = nrm;
+        this.uv = uv;
         this.tri = tri;
         this.triMaterial = triMaterial;
         this.triFlags = triFlags;
@@ -78,7 +80,7 @@ public final class Geometry {
 
     /** Bytes held by the primitive arrays (for memory reports). */
     public long byteSize() {
-        return 4L * pos.length + 4L * tri.length + (nrm == null ? 0 : 4L * nrm.length)
+        return 4L * pos.length + 4L * tri.length + (nrm == null ? 0 : 4L * nrm.length) + (uv == null ? 0 : 4L * uv.length)
                 + 4L * triMaterial.length + triFlags.length + 8L * sph.length + 4L * sphMaterial.length;
     }
 
@@ -191,7 +193,14 @@ public final class Geometry {
         return false;
     }
 
-    /** Fills {@code sp} with the surface data of the hit (position, normals, material). */
+    /**
+     * Fills {@code sp} with the surface data of the hit: position, normals, material, texture
+     * coordinates and dp/du. A triangle's (u, v) are its vertices' interpolated, or the barycentrics
+     * (b1, b2) where a vertex has none (Mitsuba's default); dp/du follows from the triangle's
+     * positions and (u, v) (pbrt-v4 §6.5.3; any vector in the plane if the (u, v) are degenerate).
+     * A sphere's are u = φ/2π, v = 1 − θ/π about the y axis (θ from +y, φ = atan2(z, x) from +x
+     * towards +z), so the image's top row is the north pole.
+     */
     public void surface(Ray ray, Hit hit, SurfacePoint sp) {
         int prim = hit.prim;
         sp.prim = prim;
@@ -214,6 +223,7 @@ public final class Geometry {
             } else {
                 sp.n.set(sp.ng);
             }
+            texCoords(a, b, c, b0, b1, b2, sp);
         } else {
             int k = 4 * (prim - triangleCount);
             double cx = sph[k], cy = sph[k + 1], cz = sph[k + 2], r = sph[k + 3];
@@ -222,7 +232,44 @@ public final class Geometry {
             // Re-project onto the surface to remove the round-off of o + t·d.
             sp.p.set(cx + r * sp.ng.x, cy + r * sp.ng.y, cz + r * sp.ng.z);
             sp.n.set(sp.ng);
+            double phi = Math.atan2(sp.ng.z, sp.ng.x);
+            if (phi < 0) {
+                phi += 2 * Math.PI;
+            }
+            double theta = Math.acos(Math.max(-1, Math.min(1, sp.ng.y)));
+            sp.uv.set(phi * (0.5 / Math.PI), 1 - theta / Math.PI);
+            // dp/du = 2π (−z', 0, x') r with (x', z') the offsets from the axis.
+            sp.dpdu.set(-2 * Math.PI * r * sp.ng.z, 0, 2 * Math.PI * r * sp.ng.x);
         }
+    }
+
+    /** The texture coordinates and dp/du of a point with barycentrics (b0, b1, b2) on the triangle (a, b, c). */
+    private void texCoords(int a, int b, int c, double b0, double b1, double b2, SurfacePoint sp) {
+        float[] t = uv;
+        if (t == null || Float.isNaN(t[2 * a]) || Float.isNaN(t[2 * b]) || Float.isNaN(t[2 * c])) {
+            sp.uv.set(b1, b2);
+            sp.dpdu.set((double) pos[3 * b] - pos[3 * a], (double) pos[3 * b + 1] - pos[3 * a + 1], (double) pos[3 * b + 2] - pos[3 * a + 2]);
+            return;
+        }
+        double u0 = t[2 * a], v0 = t[2 * a + 1], u1 = t[2 * b], v1 = t[2 * b + 1], u2 = t[2 * c], v2 = t[2 * c + 1];
+        sp.uv.set(b0 * u0 + b1 * u1 + b2 * u2, b0 * v0 + b1 * v1 + b2 * v2);
+        // Solve dp02 = du02 dpdu + dv02 dpdv, dp12 = du12 dpdu + dv12 dpdv for dpdu (pbrt-v4 §6.5.3).
+        double du02 = u0 - u2, dv02 = v0 - v2, du12 = u1 - u2, dv12 = v1 - v2;
+        double det = du02 * dv12 - dv02 * du12;
+        int i0 = 3 * a, i1 = 3 * b, i2 = 3 * c;
+        double p02x = (double) pos[i0] - pos[i2], p02y = (double) pos[i0 + 1] - pos[i2 + 1], p02z = (double) pos[i0 + 2] - pos[i2 + 2];
+        double p12x = (double) pos[i1] - pos[i2], p12y = (double) pos[i1 + 1] - pos[i2 + 1], p12z = (double) pos[i1 + 2] - pos[i2 + 2];
+        if (Math.abs(det) < 1e-12) {
+            sp.dpdu.set(p12x, p12y, p12z);
+            return;
+        }
+        double inv = 1 / det;
+        sp.dpdu.set((dv12 * p02x - dv02 * p12x) * inv, (dv12 * p02y - dv02 * p12y) * inv, (dv12 * p02z - dv02 * p12z) * inv);
+    }
+
+    /** Whether any mesh has texture coordinates. */
+    public boolean hasTexCoords() {
+        return uv != null;
     }
 
     /** Area of a primitive. */

@@ -10,12 +10,13 @@ public final class GeometryBuilder {
     private float[] pos = new float[48];
     private int[] tri = new int[48];
     private float[] nrm = new float[48];
+    private float[] uv = new float[32];
     private int[] triMaterial = new int[16];
     private byte[] triFlags = new byte[16];
     private double[] sph = new double[16];
     private int[] sphMaterial = new int[4];
     private int vertexCount, triangleCount, sphereCount;
-    private boolean hasNormals;
+    private boolean hasNormals, hasUvs;
     private int degenerateCount;
 
     /** Creates an empty builder. */
@@ -32,6 +33,15 @@ public final class GeometryBuilder {
      * @param flags     the flags of each triangle
      */
     public GeometryBuilder addMesh(float[] p, int[] idx, float[] n, int[] materials, byte[] flags) {
+        return addMesh(p, idx, n, null, materials, flags);
+    }
+
+    /**
+     * {@link #addMesh(float[], int[], float[], int[], byte[])} with texture coordinates.
+     *
+     * @param uvs u, v per vertex, or null
+     */
+    public GeometryBuilder addMesh(float[] p, int[] idx, float[] n, float[] uvs, int[] materials, byte[] flags) {
         int triangles = idx.length / 3;
         if (materials.length != triangles || flags.length != triangles) {
             throw new IllegalArgumentException("need one material and flag per triangle: " + materials.length + " for " + triangles);
@@ -47,6 +57,18 @@ public final class GeometryBuilder {
             System.arraycopy(n, 0, nrm, 3 * base, n.length);
         } else {
             Arrays.fill(nrm, 3 * base, 3 * (base + p.length / 3), Float.NaN);
+        }
+        if (uvs != null) {
+            if (uvs.length != 2 * (p.length / 3)) {
+                throw new IllegalArgumentException("need u, v per vertex: " + uvs.length + " values for " + p.length / 3 + " vertices");
+            }
+            if (!hasUvs) {
+                Arrays.fill(uv, 0, 2 * base, Float.NaN);
+                hasUvs = true;
+            }
+            System.arraycopy(uvs, 0, uv, 2 * base, uvs.length);
+        } else {
+            Arrays.fill(uv, 2 * base, 2 * (base + p.length / 3), Float.NaN);
         }
         vertexCount += p.length / 3;
         for (int t = 0; t < triangles; t++) {
@@ -87,7 +109,8 @@ public final class GeometryBuilder {
 
     public Geometry build() {
         return new Geometry(Arrays.copyOf(pos, 3 * vertexCount), Arrays.copyOf(tri, 3 * triangleCount),
-                hasNormals ? Arrays.copyOf(nrm, 3 * vertexCount) : null, Arrays.copyOf(triMaterial, triangleCount),
+                hasNormals ? Arrays.copyOf(nrm, 3 * vertexCount) : null, hasUvs ? Arrays.copyOf(uv, 2 * vertexCount) : null,
+                Arrays.copyOf(triMaterial, triangleCount),
                 Arrays.copyOf(triFlags, triangleCount), Arrays.copyOf(sph, 4 * sphereCount), Arrays.copyOf(sphMaterial, sphereCount));
     }
 
@@ -103,6 +126,7 @@ public final class GeometryBuilder {
             int size = Math.max(3 * count, 2 * pos.length);
             pos = Arrays.copyOf(pos, size);
             nrm = Arrays.copyOf(nrm, size);
+            uv = Arrays.copyOf(uv, 2 * (size / 3));
         }
     }
 

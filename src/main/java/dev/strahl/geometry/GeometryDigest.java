@@ -23,6 +23,9 @@ final class GeometryDigest {
         for (float f : g.nrm == null ? new float[0] : g.nrm) {
             room(md, buf, 4).putInt(Float.floatToIntBits(f));
         }
+        for (float f : g.uv == null ? new float[0] : g.uv) {
+            room(md, buf, 4).putInt(Float.floatToIntBits(f));
+        }
         for (int i : g.triMaterial) {
             room(md, buf, 4).putInt(i);
         }

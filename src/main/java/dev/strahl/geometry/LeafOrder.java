@@ -49,6 +49,7 @@ final class LeafOrder {
         }
         float[] pos = new float[3 * used];
         float[] nrm = g.nrm == null ? null : new float[3 * used];
+        float[] uv = g.uv == null ? null : new float[2 * used];
         for (int v = 0; v < vertexCount; v++) {
             int n = newVertex[v];
             if (n >= 0) {
@@ -56,8 +57,11 @@ final class LeafOrder {
                 if (nrm != null) {
                     System.arraycopy(g.nrm, 3 * v, nrm, 3 * n, 3);
                 }
+                if (uv != null) {
+                    System.arraycopy(g.uv, 2 * v, uv, 2 * n, 2);
+                }
             }
         }
-        return new Geometry(pos, tri, nrm, triMaterial, triFlags, sph, sphMaterial);
+        return new Geometry(pos, tri, nrm, uv, triMaterial, triFlags, sph, sphMaterial);
     }
 }

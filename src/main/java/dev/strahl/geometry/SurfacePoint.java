@@ -1,12 +1,14 @@
 package dev.strahl.geometry;
 
+import org.joml.Vector2d;
 import org.joml.Vector3d;
 import org.joml.Vector3dc;
 
 /**
  * Where a ray met a surface: position, geometric normal {@code ng} (from the primitive's winding or
  * outward for spheres), shading normal {@code n} (interpolated vertex normals, else ng) and the
- * primitive's material. Mutable, reused per thread.
+ * primitive's material, texture coordinates {@code uv} and the tangent dp/du (see
+ * {@link Geometry#surface}). Mutable, reused per thread.
  */
 public final class SurfacePoint {
     /** Creates a point for {@link Geometry} to fill in. */
@@ -18,6 +20,10 @@ public final class SurfacePoint {
     public final Vector3d p = new Vector3d();
     public final Vector3d ng = new Vector3d();
     public final Vector3d n = new Vector3d();
+    /** Texture coordinates, (0, 0) at the image's bottom-left corner. */
+    public final Vector2d uv = new Vector2d();
+    /** ∂p/∂u, not normalised: the tangent of normal maps. */
+    public final Vector3d dpdu = new Vector3d();
     public int material;
     public int prim;
 

@@ -75,11 +75,11 @@ public final class DirectLight {
             if (ls.wi.dot(s.sp.ng) * wiLocal.z <= 0) {
                 continue;                          // shading and geometric normal disagree: no leaks
             }
-            bsdf.eval(s.woLocal, wiLocal, f);
+            bsdf.eval(s.sp.uv, s.woLocal, wiLocal, f);
             if (f.isBlack() || !visible(s.sp)) {
                 continue;
             }
-            double w = use == Use.LIGHT_ONLY ? 1 : MathUtil.powerHeuristic(n * ls.pdf, bsdf.pdf(s.woLocal, wiLocal));
+            double w = use == Use.LIGHT_ONLY ? 1 : MathUtil.powerHeuristic(n * ls.pdf, bsdf.pdf(s.sp.uv, s.woLocal, wiLocal));
             f.mul(ls.radiance);
             out.addProduct(beta, f, Math.abs(wiLocal.z) * w * scale / ls.pdf);
         }

@@ -80,7 +80,7 @@ public final class FeatureTracer {
                 out[6] = t;
             }
             Bsdf bsdf = s.bsdf;
-            bsdf.albedo(s.woLocal, albedo);
+            bsdf.albedo(s.sp.uv, s.woLocal, albedo);
             albedo.mul(tint);
             if (!bsdf.isDelta() || bounce == MAX_SPECULAR) {
                 out[0] = albedo.r;
@@ -96,7 +96,7 @@ public final class FeatureTracer {
                 stream = SplitMix64.streamSeed(seed ^ SALT, x, y, sample);
             }
             double uc = SplitMix64.toUnit(SplitMix64.at(stream, bounce + 1));
-            if (!bsdf.sample(s.woLocal, uc, 0.5, 0.5, s.bs)) {
+            if (!bsdf.sample(s.sp.uv, s.woLocal, uc, 0.5, 0.5, s.bs)) {
                 return;
             }
             s.frame.toWorld(s.bs.wi, s.wi);

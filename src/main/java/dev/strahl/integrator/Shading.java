@@ -78,7 +78,7 @@ public final class Shading {
     public boolean sampleBsdf(Sampler sampler) {
         double uc = sampler.get1D();
         sampler.get2D(uDirection);
-        if (!bsdf.sample(woLocal, uc, uDirection.u1, uDirection.u2, bs)) {
+        if (!bsdf.sample(sp.uv, woLocal, uc, uDirection.u1, uDirection.u2, bs)) {
             return false;
         }
         frame.toWorld(bs.wi, wi);

@@ -109,11 +109,11 @@ public final class Whitted implements Integrator {
      * BSDF picks its first lobe for uc below that lobe's probability. Returns the lobe count.
      */
     static int deltaLobes(Bsdf bsdf, Shading s, BsdfSample[] out) {
-        if (!bsdf.sample(s.woLocal, 0, 0.5, 0.5, out[0])) {
+        if (!bsdf.sample(s.sp.uv, s.woLocal, 0, 0.5, 0.5, out[0])) {
             return 0;
         }
         out[0].weight.mul(out[0].pdf);
-        if (out[0].pdf >= 1 || !bsdf.sample(s.woLocal, Math.nextDown(1.0), 0.5, 0.5, out[1])) {
+        if (out[0].pdf >= 1 || !bsdf.sample(s.sp.uv, s.woLocal, Math.nextDown(1.0), 0.5, 0.5, out[1])) {
             return 1;
         }
         out[1].weight.mul(out[1].pdf);

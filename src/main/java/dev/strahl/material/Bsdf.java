@@ -2,26 +2,50 @@ package dev.strahl.material;
 
 import dev.strahl.math.MutableRgb;
 import dev.strahl.image.Rgb;
+import org.joml.Vector2d;
+import org.joml.Vector2dc;
 import org.joml.Vector3dc;
 
 /**
  * A bidirectional scattering distribution function in the local frame (z = shading normal; see
  * the package documentation for the direction convention). Implementations are immutable and
  * shared between threads.
+ *
+ * <p>Every method takes the shading point's texture coordinates {@code uv}, at which the BSDF looks
+ * up its textured parameters (Mitsuba's way: the BSDF stays immutable, nothing is allocated per hit).
+ * The overloads without {@code uv} evaluate at (0, 0): for parameters that are constants, and tests.
  */
-public sealed interface Bsdf permits Lambert, Glossy, DeltaBsdf {
+public sealed interface Bsdf permits Lambert, Glossy, Conductor, RoughDielectric, Principled, DeltaBsdf {
 
-    /** f(wo, wi) WITHOUT the cosine factor, into {@code dest}. Zero for delta lobes. */
-    void eval(Vector3dc wo, Vector3dc wi, MutableRgb dest);
+    /** Texture coordinates (0, 0), for the overloads without uv. Never modified. */
+    Vector2dc ORIGIN = new Vector2d();
 
-    /** Solid-angle density with which {@link #sample} picks wi given wo. Zero for delta lobes. */
-    double pdf(Vector3dc wo, Vector3dc wi);
+    /** f(wo, wi) WITHOUT the cosine factor at texture coordinates uv, into {@code dest}. Zero for delta lobes. */
+    void eval(Vector2dc uv, Vector3dc wo, Vector3dc wi, MutableRgb dest);
+
+    /** Solid-angle density with which {@link #sample} picks wi given wo at uv. Zero for delta lobes. */
+    double pdf(Vector2dc uv, Vector3dc wo, Vector3dc wi);
 
     /**
-     * Samples wi given wo from the uniform numbers uc (lobe choice) and (u1, u2) (direction).
-     * Returns false if the path is absorbed.
+     * Samples wi given wo at texture coordinates uv from the uniform numbers uc (lobe choice) and
+     * (u1, u2) (direction). Returns false if the path is absorbed.
      */
-    boolean sample(Vector3dc wo, double uc, double u1, double u2, BsdfSample out);
+    boolean sample(Vector2dc uv, Vector3dc wo, double uc, double u1, double u2, BsdfSample out);
+
+    /** {@link #eval(Vector2dc, Vector3dc, Vector3dc, MutableRgb)} at uv = (0, 0). */
+    default void eval(Vector3dc wo, Vector3dc wi, MutableRgb dest) {
+        eval(ORIGIN, wo, wi, dest);
+    }
+
+    /** {@link #pdf(Vector2dc, Vector3dc, Vector3dc)} at uv = (0, 0). */
+    default double pdf(Vector3dc wo, Vector3dc wi) {
+        return pdf(ORIGIN, wo, wi);
+    }
+
+    /** {@link #sample(Vector2dc, Vector3dc, double, double, double, BsdfSample)} at uv = (0, 0). */
+    default boolean sample(Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
+        return sample(ORIGIN, wo, uc, u1, u2, out);
+    }
 
     /**
      * The albedo of this surface seen from {@code wo}, into {@code dest}: what the feature buffers
@@ -39,7 +63,7 @@ public sealed interface Bsdf permits Lambert, Glossy, DeltaBsdf {
      *   <li>defined for wo on either side (two-sided surfaces may ignore the side).</li>
      * </ul>
      */
-    void albedo(Vector3dc wo, MutableRgb dest);
+    void albedo(Vector2dc uv, Vector3dc wo, MutableRgb dest);
 
     /** Whether every lobe is a delta (no light sampling possible at this surface). */
     default boolean isDelta() {

@@ -1,6 +1,7 @@
 package dev.strahl.material;
 
 import dev.strahl.math.MutableRgb;
+import org.joml.Vector2dc;
 import org.joml.Vector3dc;
 
 /**
@@ -9,17 +10,17 @@ import org.joml.Vector3dc;
  * for all of them, and only {@link #sample} sees the lobes (its pdf is the probability of the lobe
  * it chose, pbrt-v4's convention for delta lobes).
  */
-public sealed interface DeltaBsdf extends Bsdf permits Mirror, Dielectric {
+public sealed interface DeltaBsdf extends Bsdf permits Mirror, Dielectric, SmoothConductor {
 
     /** Zero: a delta lobe has no value at directions chosen by someone else. */
     @Override
-    default void eval(Vector3dc wo, Vector3dc wi, MutableRgb dest) {
+    default void eval(Vector2dc uv, Vector3dc wo, Vector3dc wi, MutableRgb dest) {
         dest.setZero();
     }
 
     /** Zero: a delta lobe has no density with respect to solid angle. */
     @Override
-    default double pdf(Vector3dc wo, Vector3dc wi) {
+    default double pdf(Vector2dc uv, Vector3dc wo, Vector3dc wi) {
         return 0;
     }
 

@@ -2,6 +2,7 @@ package dev.strahl.material;
 
 import dev.strahl.image.Rgb;
 import dev.strahl.math.MutableRgb;
+import org.joml.Vector2dc;
 import org.joml.Vector3dc;
 
 /**
@@ -45,7 +46,7 @@ public record Dielectric(double eta) implements DeltaBsdf {
     }
 
     @Override
-    public boolean sample(Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
+    public boolean sample(Vector2dc uv, Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
         double reflectance = Fresnel.dielectric(wo.z(), eta);
         out.delta = true;
         if (uc < reflectance || !Fresnel.refract(wo, eta, out.wi)) {
@@ -71,7 +72,7 @@ public record Dielectric(double eta) implements DeltaBsdf {
 
     /** 1: clear glass scatters (reflects or transmits) all light, untinted. */
     @Override
-    public void albedo(Vector3dc wo, MutableRgb dest) {
+    public void albedo(Vector2dc uv, Vector3dc wo, MutableRgb dest) {
         dest.set(1, 1, 1);
     }
 }

@@ -43,6 +43,70 @@ public final class Fresnel {
     }
 
     /**
+     * Fresnel reflectance of a conductor with complex index η + ik (relative to the outside) for
+     * unpolarised light, exact: with sin²θt = sin²θi / (η + ik)² and cosθt = √(1 − sin²θt) (complex,
+     * principal root), r∥ = ((η+ik) cosθi − cosθt) / ((η+ik) cosθi + cosθt),
+     * r⊥ = (cosθi − (η+ik) cosθt) / (cosθi + (η+ik) cosθt), F = (|r∥|² + |r⊥|²) / 2.
+     * Source: pbrt-v4 §9.3.6 ({@code FrComplex}). |cosθi| is used (conductors reflect alike on both sides).
+     *
+     * @param cosThetaI cosine of the angle of incidence
+     * @param eta       real part η &gt; 0
+     * @param k         imaginary part (absorption) k ≥ 0
+     */
+    public static double conductor(double cosThetaI, double eta, double k) {
+        double c = Math.min(1, Math.abs(cosThetaI));
+        double sin2 = 1 - c * c;
+        // (η + ik)² = (η² − k²) + i 2ηk; sin²θt = sin²θi / that.
+        double e2r = eta * eta - k * k, e2i = 2 * eta * k;
+        double den = e2r * e2r + e2i * e2i;
+        double s2r = sin2 * e2r / den, s2i = -sin2 * e2i / den;
+        // cosθt = sqrt(1 − sin²θt), complex principal square root.
+        double ar = 1 - s2r, ai = -s2i;
+        double mod = Math.hypot(ar, ai);
+        double ctr = Math.sqrt(Math.max(0, (mod + ar) / 2));
+        double cti = Math.copySign(Math.sqrt(Math.max(0, (mod - ar) / 2)), ai);
+        // r∥ = (e c − ct) / (e c + ct), e = η + ik
+        double ecr = eta * c, eci = k * c;
+        double parl = ratioNorm2(ecr - ctr, eci - cti, ecr + ctr, eci + cti);
+        // r⊥ = (c − e ct) / (c + e ct)
+        double ectr = eta * ctr - k * cti, ecti = eta * cti + k * ctr;
+        double perp = ratioNorm2(c - ectr, -ecti, c + ectr, ecti);
+        return 0.5 * (parl + perp);
+    }
+
+    /** |a / b|² for complex a = (ar, ai), b = (br, bi). */
+    private static double ratioNorm2(double ar, double ai, double br, double bi) {
+        double nb = br * br + bi * bi;
+        return nb == 0 ? 1 : (ar * ar + ai * ai) / nb;
+    }
+
+    /**
+     * Refraction of {@code wo} through a microfacet with unit normal {@code m} (either side), by
+     * Snell's law with ηt/ηi = η on the side m points to and 1/η on the other, as {@link #refract}
+     * does for m = +z. Writes the refracted direction into {@code dest} and returns the relative
+     * index η' used (η entering, 1/η leaving), or 0 on total internal reflection.
+     */
+    static double refract(Vector3dc wo, double mx, double my, double mz, double eta, Vector3d dest) {
+        double cosI = wo.x() * mx + wo.y() * my + wo.z() * mz;
+        double e = eta;
+        if (cosI < 0) {
+            e = 1 / eta;
+            cosI = -cosI;
+            mx = -mx;
+            my = -my;
+            mz = -mz;
+        }
+        double sin2T = Math.max(0, 1 - cosI * cosI) / (e * e);
+        if (sin2T >= 1) {
+            return 0;
+        }
+        double cosT = Math.sqrt(1 - sin2T);
+        double a = cosI / e - cosT;
+        dest.set(-wo.x() / e + a * mx, -wo.y() / e + a * my, -wo.z() / e + a * mz);
+        return e;
+    }
+
+    /**
      * Mirror direction about the normal z: (−w.x, −w.y, w.z), the local form of
      * wr = 2 (n·w) n − w. Writes into and returns {@code dest} (which may be {@code w}).
      */

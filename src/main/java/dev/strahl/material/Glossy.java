@@ -1,9 +1,10 @@
 package dev.strahl.material;
 
-import dev.strahl.math.MutableRgb;
 import dev.strahl.image.Rgb;
+import dev.strahl.math.MutableRgb;
 import dev.strahl.sampling.Warp;
 import java.util.Objects;
+import org.joml.Vector2dc;
 import org.joml.Vector3dc;
 
 /**
@@ -108,7 +109,7 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, boolean uniform) i
     }
 
     @Override
-    public void eval(Vector3dc wo, Vector3dc wi, MutableRgb dest) {
+    public void eval(Vector2dc uv, Vector3dc wo, Vector3dc wi, MutableRgb dest) {
         if (wo.z() <= 0 || wi.z() <= 0) {
             dest.setZero();
             return;
@@ -120,7 +121,7 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, boolean uniform) i
     }
 
     @Override
-    public double pdf(Vector3dc wo, Vector3dc wi) {
+    public double pdf(Vector2dc uv, Vector3dc wo, Vector3dc wi) {
         if (wo.z() <= 0 || wi.z() <= 0 || isBlack()) {
             return 0;
         }
@@ -129,7 +130,7 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, boolean uniform) i
     }
 
     @Override
-    public boolean sample(Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
+    public boolean sample(Vector2dc uv, Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
         if (wo.z() <= 0 || isBlack()) {
             return false;
         }
@@ -153,11 +154,11 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, boolean uniform) i
         }
         out.delta = false;
         out.eta = 1;
-        out.pdf = pdf(wo, out.wi);
+        out.pdf = pdf(uv, wo, out.wi);
         if (!(out.pdf > 0)) {
             return false;
         }
-        eval(wo, out.wi, out.weight);
+        eval(uv, wo, out.wi, out.weight);
         out.weight.mul(out.wi.z / out.pdf);
         return true;
     }
@@ -317,7 +318,7 @@ public record Glossy(Rgb diffuse, Rgb specular, double alpha, boolean uniform) i
      * angles), so Kd + Ks is the colour of the surface as its highlights show it.
      */
     @Override
-    public void albedo(Vector3dc wo, MutableRgb dest) {
+    public void albedo(Vector2dc uv, Vector3dc wo, MutableRgb dest) {
         dest.set(diffuse.r() + specular.r(), diffuse.g() + specular.g(), diffuse.b() + specular.b());
     }
 }

@@ -1,55 +1,71 @@
 package dev.strahl.material;
 
-import dev.strahl.math.MutableRgb;
 import dev.strahl.image.Rgb;
+import dev.strahl.math.MutableRgb;
 import dev.strahl.sampling.Warp;
+import dev.strahl.texture.Texture;
 import java.util.Objects;
+import org.joml.Vector2dc;
 import org.joml.Vector3dc;
 
 /**
- * Lambertian diffuse reflection: f = albedo / π on the side of wo, zero for transmission.
+ * Lambertian diffuse reflection: f = albedo(uv) / π on the side of wo, zero for transmission.
  * Sampled cosine-weighted (pdf = cosθ/π, weight = albedo) or uniformly (pdf = 1/(2π),
- * weight = 2·albedo·cosθ).
+ * weight = 2·albedo·cosθ). The albedo may be an image (Mitsuba's {@code diffuse} with a
+ * {@code bitmap} reflectance).
  *
  * @param albedo   reflectance, each channel in [0, 1]
  * @param uniform  sample directions uniformly over the hemisphere rather than cosine-weighted
  */
-public record Lambert(Rgb albedo, boolean uniform) implements Bsdf {
+public record Lambert(Texture albedo, boolean uniform) implements Bsdf {
     private static final double INV_PI = 1 / Math.PI;
 
     /**
-     * Checks that the albedo lies in [0, 1].
+     * Checks that a constant albedo lies in [0, 1] (an image's texels are colours decoded from
+     * [0, 1], or linear values that the texture's reader checked).
      *
      * @param albedo   reflectance, each channel in [0, 1]
      * @param uniform  sample directions uniformly rather than cosine-weighted
      */
     public Lambert {
         Objects.requireNonNull(albedo, "albedo");
-        if (albedo.r() < 0 || albedo.g() < 0 || albedo.b() < 0 || albedo.max() > 1) {
-            throw new IllegalArgumentException("diffuse albedo must lie in [0, 1], got " + albedo);
+        Rgb a = albedo.mean();
+        if (albedo.isConstant() && (a.r() < 0 || a.g() < 0 || a.b() < 0 || a.max() > 1)) {
+            throw new IllegalArgumentException("diffuse albedo must lie in [0, 1], got " + a);
         }
     }
 
     /**
-     * Cosine-weighted sampling.
+     * A constant albedo, cosine-weighted sampling.
      *
      * @param albedo reflectance, each channel in [0, 1]
      */
     public Lambert(Rgb albedo) {
-        this(albedo, false);
+        this(Texture.of(Objects.requireNonNull(albedo, "albedo")), false);
+    }
+
+    /**
+     * A constant albedo.
+     *
+     * @param albedo  reflectance, each channel in [0, 1]
+     * @param uniform sample directions uniformly rather than cosine-weighted
+     */
+    public Lambert(Rgb albedo, boolean uniform) {
+        this(Texture.of(Objects.requireNonNull(albedo, "albedo")), uniform);
     }
 
     @Override
-    public void eval(Vector3dc wo, Vector3dc wi, MutableRgb dest) {
+    public void eval(Vector2dc uv, Vector3dc wo, Vector3dc wi, MutableRgb dest) {
         if (wo.z() <= 0 || wi.z() <= 0) {
             dest.setZero();
             return;
         }
-        dest.set(albedo).mul(INV_PI);
+        albedo.rgb(uv.x(), uv.y(), dest);
+        dest.mul(INV_PI);
     }
 
     @Override
-    public double pdf(Vector3dc wo, Vector3dc wi) {
+    public double pdf(Vector2dc uv, Vector3dc wo, Vector3dc wi) {
         if (wo.z() <= 0) {
             return 0;
         }
@@ -57,20 +73,20 @@ public record Lambert(Rgb albedo, boolean uniform) implements Bsdf {
     }
 
     @Override
-    public boolean sample(Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
+    public boolean sample(Vector2dc uv, Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
         if (wo.z() <= 0) {
             return false;
         }
         out.delta = false;
         out.eta = 1;
+        albedo.rgb(uv.x(), uv.y(), out.weight);
         if (!uniform) {
             Warp.cosineHemisphere(u1, u2, out.wi);
             out.pdf = Warp.cosineHemispherePdf(out.wi.z);
-            out.weight.set(albedo);
         } else {
             Warp.uniformHemisphere(u1, u2, out.wi);
             out.pdf = Warp.uniformHemispherePdf(out.wi.z);
-            out.weight.set(albedo).mul(2 * out.wi.z);
+            out.weight.mul(2 * out.wi.z);
         }
         return out.pdf > 0;
     }
@@ -82,7 +98,7 @@ public record Lambert(Rgb albedo, boolean uniform) implements Bsdf {
 
     /** The albedo, on either side. */
     @Override
-    public void albedo(Vector3dc wo, MutableRgb dest) {
-        dest.set(albedo);
+    public void albedo(Vector2dc uv, Vector3dc wo, MutableRgb dest) {
+        albedo.rgb(uv.x(), uv.y(), dest);
     }
 }

@@ -3,6 +3,7 @@ package dev.strahl.material;
 import dev.strahl.image.Rgb;
 import dev.strahl.math.MutableRgb;
 import java.util.Objects;
+import org.joml.Vector2dc;
 import org.joml.Vector3dc;
 
 /**
@@ -30,7 +31,7 @@ public record Mirror(Rgb reflectance) implements DeltaBsdf {
     }
 
     @Override
-    public boolean sample(Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
+    public boolean sample(Vector2dc uv, Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
         if (wo.z() <= 0) {
             return false;
         }
@@ -44,7 +45,7 @@ public record Mirror(Rgb reflectance) implements DeltaBsdf {
 
     /** Ks: the tint of everything seen in the mirror. */
     @Override
-    public void albedo(Vector3dc wo, MutableRgb dest) {
+    public void albedo(Vector2dc uv, Vector3dc wo, MutableRgb dest) {
         dest.set(reflectance);
     }
 }

@@ -249,7 +249,7 @@ public final class PhotonMapper implements Integrator {
                 return;                                 // arrived at the other side of the surface
             }
             s.frame.toLocal(wp, wpLocal);
-            s.bsdf.eval(s.woLocal, wpLocal, f);
+            s.bsdf.eval(s.sp.uv, s.woLocal, wpLocal, f);
             gathered.r += f.r * d[o + PhotonList.R];
             gathered.g += f.g * d[o + PhotonList.R + 1];
             gathered.b += f.b * d[o + PhotonList.R + 2];

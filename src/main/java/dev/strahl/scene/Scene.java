@@ -75,6 +75,25 @@ public final class Scene {
     }
 
     /**
+     * Bytes held by the texture images of the scene's materials, each image once (a file used
+     * by many materials is loaded once; an sRGB image read as colour counts its decoded copy).
+     *
+     * @return 0 without image textures
+     */
+    public long textureBytes() {
+        java.util.Set<dev.strahl.texture.Bitmap> seen = java.util.Collections.newSetFromMap(new IdentityHashMap<>());
+        long bytes = 0;
+        for (Material m : materials) {
+            for (dev.strahl.texture.Bitmap b : m.images()) {
+                if (seen.add(b)) {
+                    bytes += b.byteSize();
+                }
+            }
+        }
+        return bytes;
+    }
+
+    /**
      * The camera: the scene's own, or one framing the scene (from a raised three-quarter view if
      * the scene has no light, else from +Z).
      *
@@ -197,7 +216,7 @@ public final class Scene {
                 flags[t] = closed[local] ? Geometry.CLOSED : 0;
             }
             int before = geometry.degenerateCount();
-            geometry.addMesh(mesh.positionsUnsafe(), mesh.indicesUnsafe(), mesh.normalsUnsafe(), materialsOut, flags);
+            geometry.addMesh(mesh.positionsUnsafe(), mesh.indicesUnsafe(), mesh.normalsUnsafe(), mesh.uvsUnsafe(), materialsOut, flags);
             int skipped = geometry.degenerateCount() - before;
             if (skipped > 0) {
                 notes.add("skipped " + skipped + " degenerate triangle" + (skipped == 1 ? "" : "s") + " (zero area)");

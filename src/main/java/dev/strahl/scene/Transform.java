@@ -277,7 +277,7 @@ public final class Transform {
                 idx[t + 2] = swap;
             }
         }
-        return new TriangleMesh(p, idx, n);
+        return new TriangleMesh(p, idx, n, mesh.uvsUnsafe());
     }
 
     /**

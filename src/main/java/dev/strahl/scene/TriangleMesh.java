@@ -5,14 +5,17 @@ import java.util.Arrays;
 /**
  * An indexed triangle mesh in flat arrays: {@code positions} (x, y, z per vertex), {@code indices}
  * (three vertex indices per triangle) and optional per-vertex {@code normals} (same layout as
- * positions; {@code null} when the mesh has none, NaN triples for single vertices without one).
- * Arrays are copied on construction so that the mesh is immutable.
+ * positions; {@code null} when the mesh has none, NaN triples for single vertices without one)
+ * and optional per-vertex texture coordinates {@code uvs} (u, v per vertex, (0, 0) at the bottom-left
+ * corner of an image, as in OBJ files; {@code null} when the mesh has none, NaN pairs for single
+ * vertices without them). Arrays are copied on construction so that the mesh is immutable.
  *
  * @param positions x, y, z per vertex, finite
  * @param indices   three vertex indices per triangle, each in [0, vertex count)
  * @param normals   x, y, z per vertex, or null
+ * @param uvs       u, v per vertex, or null
  */
-public record TriangleMesh(float[] positions, int[] indices, float[] normals) {
+public record TriangleMesh(float[] positions, int[] indices, float[] normals, float[] uvs) {
 
     /**
      * Checks the array lengths, the indices and that positions are finite; copies the arrays.
@@ -20,6 +23,7 @@ public record TriangleMesh(float[] positions, int[] indices, float[] normals) {
      * @param positions x, y, z per vertex, finite
      * @param indices   three vertex indices per triangle, each in [0, vertex count)
      * @param normals   x, y, z per vertex, or null
+     * @param uvs       u, v per vertex, or null
      */
     public TriangleMesh {
         if (positions.length % 3 != 0) {
@@ -30,6 +34,9 @@ public record TriangleMesh(float[] positions, int[] indices, float[] normals) {
         }
         if (normals != null && normals.length != positions.length) {
             throw new IllegalArgumentException("normals must have one triple per vertex: " + normals.length + " values for " + positions.length / 3 + " vertices");
+        }
+        if (uvs != null && uvs.length != positions.length / 3 * 2) {
+            throw new IllegalArgumentException("uvs must have one u, v pair per vertex: " + uvs.length + " values for " + positions.length / 3 + " vertices");
         }
         int vertexCount = positions.length / 3;
         for (int i = 0; i < indices.length; i++) {
@@ -45,6 +52,18 @@ public record TriangleMesh(float[] positions, int[] indices, float[] normals) {
         positions = positions.clone();
         indices = indices.clone();
         normals = normals == null ? null : normals.clone();
+        uvs = uvs == null ? null : uvs.clone();
+    }
+
+    /**
+     * A mesh without texture coordinates.
+     *
+     * @param positions x, y, z per vertex, finite
+     * @param indices   three vertex indices per triangle, each in [0, vertex count)
+     * @param normals   x, y, z per vertex, or null
+     */
+    public TriangleMesh(float[] positions, int[] indices, float[] normals) {
+        this(positions, indices, normals, null);
     }
 
     /**
@@ -95,6 +114,26 @@ public record TriangleMesh(float[] positions, int[] indices, float[] normals) {
         return normals == null ? null : normals.clone();
     }
 
+    /**
+     * The texture coordinates.
+     *
+     * @return a copy, or null
+     */
+    @Override
+    public float[] uvs() {
+        return uvs == null ? null : uvs.clone();
+    }
+
+    /**
+     * The same mesh with other texture coordinates.
+     *
+     * @param newUvs u, v per vertex, or null
+     * @return a new mesh
+     */
+    public TriangleMesh withUvs(float[] newUvs) {
+        return new TriangleMesh(positions, indices, normals, newUvs);
+    }
+
     /** The arrays themselves, not copies, for the scene builder and transforms; never modified. */
     float[] positionsUnsafe() {
         return positions;
@@ -108,19 +147,23 @@ public record TriangleMesh(float[] positions, int[] indices, float[] normals) {
         return normals;
     }
 
+    float[] uvsUnsafe() {
+        return uvs;
+    }
+
     @Override
     public boolean equals(Object o) {
         return o instanceof TriangleMesh m && Arrays.equals(positions, m.positions)
-                && Arrays.equals(indices, m.indices) && Arrays.equals(normals, m.normals);
+                && Arrays.equals(indices, m.indices) && Arrays.equals(normals, m.normals) && Arrays.equals(uvs, m.uvs);
     }
 
     @Override
     public int hashCode() {
-        return 31 * (31 * Arrays.hashCode(positions) + Arrays.hashCode(indices)) + Arrays.hashCode(normals);
+        return 31 * (31 * (31 * Arrays.hashCode(positions) + Arrays.hashCode(indices)) + Arrays.hashCode(normals)) + Arrays.hashCode(uvs);
     }
 
     @Override
     public String toString() {
-        return "TriangleMesh[" + triangleCount() + " triangles, " + vertexCount() + " vertices" + (normals != null ? ", normals" : "") + "]";
+        return "TriangleMesh[" + triangleCount() + " triangles, " + vertexCount() + " vertices" + (normals != null ? ", normals" : "") + (uvs != null ? ", uvs" : "") + "]";
     }
 }

@@ -262,6 +262,6 @@ class SceneLoaderTest {
 
     private static Rgb albedo(Material m) {
         assertThat(TestScenes.bsdf(m)).isInstanceOf(Lambert.class);
-        return ((Lambert) TestScenes.bsdf(m)).albedo();
+        return ((Lambert) TestScenes.bsdf(m)).albedo().mean();
     }
 }

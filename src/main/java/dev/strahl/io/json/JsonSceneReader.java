@@ -1,19 +1,23 @@
 package dev.strahl.io.json;
 
-import dev.strahl.scene.Transform;
+import dev.strahl.image.Rgb;
+import dev.strahl.io.json.SceneDescription.ColorParam;
+import dev.strahl.io.json.SceneDescription.EnvironmentSpec;
+import dev.strahl.io.json.SceneDescription.MaterialSpec;
+import dev.strahl.io.json.SceneDescription.NumberParam;
+import dev.strahl.io.json.SceneDescription.ShapeSpec;
+import dev.strahl.io.json.SceneDescription.TextureRef;
 import dev.strahl.io.text.TextLines;
+import dev.strahl.render.HemisphereSampling;
+import dev.strahl.render.IntegratorKind;
+import dev.strahl.render.PhotonParameters;
+import dev.strahl.render.RenderSettings;
+import dev.strahl.scene.Camera;
+import dev.strahl.scene.Material;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
-import dev.strahl.scene.Camera;
+import dev.strahl.scene.Transform;
 import dev.strahl.scene.TriangleMesh;
-import dev.strahl.image.Rgb;
-import dev.strahl.render.HemisphereSampling;
-import dev.strahl.render.RenderSettings;
-import dev.strahl.render.PhotonParameters;
-import dev.strahl.render.IntegratorKind;
-import dev.strahl.io.json.SceneDescription.MaterialSpec;
-import dev.strahl.io.json.SceneDescription.EnvironmentSpec;
-import dev.strahl.io.json.SceneDescription.ShapeSpec;
 import java.io.IOException;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
@@ -38,13 +42,18 @@ public final class JsonSceneReader {
     static final Map<String, Set<String>> MATERIAL_KEYS = Map.of(
             "diffuse", Set.of("type", "albedo", "emission"),
             "mirror", Set.of("type", "reflectance"),
-            "dielectric", Set.of("type", "ior"),
-            "glossy", Set.of("type", "diffuse", "specular", "exponent", "emission"));
+            "dielectric", Set.of("type", "ior", "alpha"),
+            "glossy", Set.of("type", "diffuse", "specular", "exponent", "emission"),
+            "conductor", Set.of("type", "preset", "eta", "k", "alpha"),
+            "principled", Set.of("type", "baseColor", "metallic", "roughness", "specular", "specularColor", "transmission", "ior", "emission",
+                    "emissionStrength"));
+    /** The keys of a texture that stands in for a colour or a number. */
+    static final Set<String> TEXTURE_KEYS = Set.of("texture", "uvScale", "linear");
     /** The shape types and the keys each accepts. */
     static final Map<String, Set<String>> SHAPE_KEYS = Map.of(
             "sphere", Set.of("type", "center", "radius", "material", "transform"),
             "mesh", Set.of("type", "file", "material", "transform"),
-            "triangles", Set.of("type", "positions", "indices", "normals", "material", "transform"));
+            "triangles", Set.of("type", "positions", "indices", "normals", "uvs", "material", "transform"));
     static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment");
     static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov", "aperture", "focusDistance");
     /** The environment types (the object form; an array is a constant radiance) and their keys. */
@@ -66,7 +75,7 @@ public final class JsonSceneReader {
     /** Reads and builds the scene in {@code file}, with what it says about rendering. */
     public static SceneFile read(Path file) throws SceneException {
         SceneDescription d = parse(file);
-        return new SceneFile(d.build(folder(file)), d.settings());
+        return new SceneFile(d.build(file, folder(file)), d.settings());
     }
 
     /** Reads the scene file into its description, checking everything but the contents of mesh files. */
@@ -129,22 +138,43 @@ public final class JsonSceneReader {
         }
         if (m.containsKey("emission") && !keys.contains("emission")) {
             throw new SceneException(file, m.get("emission").line, "'" + key + ".emission': a " + type
-                    + " material cannot emit light; emission is allowed on diffuse and glossy materials (a one-sided area light)");
+                    + " material cannot emit light; emission is allowed on diffuse, glossy and principled materials (a one-sided area light)");
         }
         v.allowOnly(m, key + " of type " + type, keys);
         switch (type) {
             case "mirror":
                 return new SceneDescription.Mirror(m.containsKey("reflectance") ? v.unitColor(m.get("reflectance"), key + ".reflectance") : Rgb.WHITE);
-            case "dielectric": {
-                double ior = 1.5;
-                if (m.containsKey("ior")) {
-                    ior = v.number(m.get("ior"), key + ".ior");
-                    if (!(ior > 0)) {
-                        throw new SceneException(file, m.get("ior").line, "'" + key + ".ior' must be positive, got " + JsonValues.format(ior));
+            case "dielectric":
+                return new SceneDescription.Dielectric(ior(m, key), numberParam(m, "alpha", key, 0, 0, Double.POSITIVE_INFINITY));
+            case "conductor": {
+                NumberParam alpha = numberParam(m, "alpha", key, 0, 0, Double.POSITIVE_INFINITY);
+                if (m.containsKey("preset")) {
+                    if (m.containsKey("eta") || m.containsKey("k")) {
+                        throw new SceneException(file, m.get("preset").line, "'" + key + "': give either 'preset' or 'eta' and 'k', not both");
                     }
+                    String preset = v.string(m.get("preset"), key + ".preset");
+                    if (!Material.conductorPresets().contains(preset)) {
+                        throw new SceneException(file, m.get("preset").line, "'" + key + ".preset': unknown conductor '" + preset + "' (known: "
+                                + JsonValues.sorted(Material.conductorPresets()) + ")");
+                    }
+                    return new SceneDescription.Conductor(preset, null, null, alpha);
                 }
-                return new SceneDescription.Dielectric(ior);
+                if (!m.containsKey("eta") || !m.containsKey("k")) {
+                    throw new SceneException(file, node.line, "'" + key + "' needs a 'preset' (" + JsonValues.sorted(Material.conductorPresets())
+                            + ") or both 'eta' and 'k'");
+                }
+                Rgb eta = v.color(m.get("eta"), key + ".eta");
+                if (!(eta.r() > 0 && eta.g() > 0 && eta.b() > 0)) {
+                    throw new SceneException(file, m.get("eta").line, "'" + key + ".eta' must be positive in every channel, got " + eta);
+                }
+                return new SceneDescription.Conductor(null, eta, v.color(m.get("k"), key + ".k"), alpha);
             }
+            case "principled":
+                return new SceneDescription.Principled(colorParam(m, "baseColor", key, Rgb.WHITE, true),
+                        numberParam(m, "metallic", key, 1, 0, 1), numberParam(m, "roughness", key, 1, 0, 1),
+                        numberParam(m, "specular", key, 1, 0, 1), colorParam(m, "specularColor", key, Rgb.WHITE, false),
+                        numberParam(m, "transmission", key, 0, 0, 1), ior(m, key), emission(m, key),
+                        m.containsKey("emissionStrength") ? nonNegative(m.get("emissionStrength"), key + ".emissionStrength") : 1);
             case "glossy": {
                 Rgb kd = m.containsKey("diffuse") ? v.unitColor(m.get("diffuse"), key + ".diffuse") : Rgb.BLACK;
                 Rgb ks = v.unitColor(v.require(m, "specular", node), key + ".specular");
@@ -155,9 +185,83 @@ public final class JsonSceneReader {
                 return new SceneDescription.Glossy(kd, ks, ns, emission(m, key));
             }
             default:
-                return new SceneDescription.Diffuse(m.containsKey("albedo") ? v.unitColor(m.get("albedo"), key + ".albedo") : Rgb.gray(0.8),
-                        emission(m, key));
+                return new SceneDescription.Diffuse(colorParam(m, "albedo", key, Rgb.gray(0.8), true), emission(m, key));
         }
+    }
+
+    private double ior(Map<String, JsonNode> m, String key) throws SceneException {
+        if (!m.containsKey("ior")) {
+            return 1.5;
+        }
+        double ior = v.number(m.get("ior"), key + ".ior");
+        if (!(ior > 0)) {
+            throw new SceneException(file, m.get("ior").line, "'" + key + ".ior' must be positive, got " + JsonValues.format(ior));
+        }
+        return ior;
+    }
+
+    private double nonNegative(JsonNode node, String key) throws SceneException {
+        double x = v.number(node, key);
+        if (!(x >= 0)) {
+            throw new SceneException(file, node.line, "'" + key + "' must be >= 0, got " + JsonValues.format(x));
+        }
+        return x;
+    }
+
+    /** A colour (in [0, 1] if {@code unit}) or a texture object; {@code fallback} without the key. */
+    private ColorParam colorParam(Map<String, JsonNode> m, String name, String key, Rgb fallback, boolean unit) throws SceneException {
+        JsonNode node = m.get(name);
+        if (node == null) {
+            return ColorParam.of(fallback);
+        }
+        if (node.value instanceof Map) {
+            return new ColorParam(fallback, textureRef(node, key + "." + name, true));
+        }
+        return ColorParam.of(unit ? v.unitColor(node, key + "." + name) : v.color(node, key + "." + name));
+    }
+
+    /** A number in [min, max] or a texture object; {@code fallback} without the key. */
+    private NumberParam numberParam(Map<String, JsonNode> m, String name, String key, double fallback, double min, double max) throws SceneException {
+        JsonNode node = m.get(name);
+        if (node == null) {
+            return NumberParam.of(fallback);
+        }
+        if (node.value instanceof Map) {
+            return new NumberParam(fallback, textureRef(node, key + "." + name, false));
+        }
+        double x = v.number(node, key + "." + name);
+        if (!(x >= min && x <= max)) {
+            throw new SceneException(file, node.line, "'" + key + "." + name + "' must lie in [" + JsonValues.format(min) + ", "
+                    + (max == Double.POSITIVE_INFINITY ? "∞)" : JsonValues.format(max) + "]") + ", got " + JsonValues.format(x));
+        }
+        return NumberParam.of(x);
+    }
+
+    private TextureRef textureRef(JsonNode node, String key, boolean colour) throws SceneException {
+        Map<String, JsonNode> t = v.object(node, key);
+        v.allowOnly(t, key, colour ? TEXTURE_KEYS : Set.of("texture", "uvScale"));
+        String name = v.string(v.require(t, "texture", node), key + ".texture");
+        String lower = name.toLowerCase(Locale.ROOT);
+        if (!lower.endsWith(".png") && !lower.endsWith(".jpg") && !lower.endsWith(".jpeg")) {
+            throw new SceneException(file, t.get("texture").line, "'" + key + ".texture' must name a .png, .jpg or .jpeg image, got '" + name + "'");
+        }
+        double su = 1, sv = 1;
+        if (t.containsKey("uvScale")) {
+            double[] s = v.numbers(t.get("uvScale"), key + ".uvScale", 2);
+            if (!Double.isFinite(s[0]) || !Double.isFinite(s[1]) || s[0] == 0 || s[1] == 0) {
+                throw new SceneException(file, t.get("uvScale").line, "'" + key + ".uvScale' must be two finite, non-zero numbers");
+            }
+            su = s[0];
+            sv = s[1];
+        }
+        boolean linear = false;
+        if (t.containsKey("linear")) {
+            if (!(t.get("linear").value instanceof Boolean b)) {
+                throw new SceneException(file, t.get("linear").line, "'" + key + ".linear' must be true or false");
+            }
+            linear = b;
+        }
+        return new TextureRef(name, su, sv, linear);
     }
 
     private Rgb emission(Map<String, JsonNode> m, String key) throws SceneException {
@@ -221,6 +325,7 @@ public final class JsonSceneReader {
         JsonNode indexNode = v.require(s, "indices", node);
         int[] indices = v.ints(indexNode, "shapes[].indices");
         float[] normals = s.containsKey("normals") ? v.floats(s.get("normals"), "shapes[].normals") : null;
+        float[] uvs = s.containsKey("uvs") ? v.floats(s.get("uvs"), "shapes[].uvs") : null;
         String material = materialName(v.require(s, "material", node));
         if (positions.length % 3 != 0) {
             throw new SceneException(file, s.get("positions").line, "'shapes[].positions' must hold x, y, z triples, got " + positions.length + " numbers");
@@ -231,6 +336,17 @@ public final class JsonSceneReader {
         if (normals != null && normals.length != positions.length) {
             throw new SceneException(file, s.get("normals").line, "'shapes[].normals' must have one x, y, z triple per vertex: "
                     + normals.length + " numbers for " + positions.length / 3 + " vertices");
+        }
+        if (uvs != null && uvs.length != positions.length / 3 * 2) {
+            throw new SceneException(file, s.get("uvs").line, "'shapes[].uvs' must have one u, v pair per vertex: "
+                    + uvs.length + " numbers for " + positions.length / 3 + " vertices");
+        }
+        if (uvs != null) {
+            for (float f : uvs) {
+                if (!Float.isFinite(f)) {
+                    throw new SceneException(file, s.get("uvs").line, "'shapes[].uvs' must be finite numbers that fit into floats, got " + f);
+                }
+            }
         }
         for (int i = 0; i < indices.length; i++) {
             if (indices[i] < 0 || indices[i] >= positions.length / 3) {
@@ -244,11 +360,11 @@ public final class JsonSceneReader {
             }
         }
         try {
-            transform.apply(new TriangleMesh(positions, indices, normals));   // the mesh itself is valid after the checks above
+            transform.apply(new TriangleMesh(positions, indices, normals, uvs));   // the mesh itself is valid after the checks above
         } catch (IllegalArgumentException e) {
             throw new SceneException(file, s.get("transform").line, "'shapes[].transform': " + e.getMessage());
         }
-        return new SceneDescription.TrianglesShape(positions, indices, normals, material, transform);
+        return new SceneDescription.TrianglesShape(positions, indices, normals, uvs, material, transform);
     }
 
     private String materialName(JsonNode node) throws SceneException {

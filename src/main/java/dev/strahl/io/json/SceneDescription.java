@@ -1,14 +1,16 @@
 package dev.strahl.io.json;
 
+import dev.strahl.image.Rgb;
 import dev.strahl.io.mesh.MeshFiles;
+import dev.strahl.scene.Camera;
+import dev.strahl.scene.Material;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
+import dev.strahl.scene.Texture;
 import dev.strahl.scene.Transform;
-import dev.strahl.scene.Camera;
 import dev.strahl.scene.TriangleMesh;
-import dev.strahl.scene.Material;
-import dev.strahl.image.Rgb;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -49,36 +51,101 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
         }
     }
 
-    /** A material as the file gives it: its type and that type's keys. */
-    sealed interface MaterialSpec permits Diffuse, Mirror, Dielectric, Glossy {
-        Material toMaterial(String name);
+    /**
+     * An image standing in for a colour or a number: its file as written (relative to the scene
+     * file's folder unless absolute), the scale of its texture coordinates, and whether a colour
+     * image stores linear values (no sRGB decoding).
+     */
+    record TextureRef(String file, double scaleU, double scaleV, boolean linear) {}
+
+    /** A colour, or a texture standing in for it (then {@code value} is what a missing file leaves). */
+    record ColorParam(Rgb value, TextureRef texture) {
+        static ColorParam of(Rgb value) {
+            return new ColorParam(value, null);
+        }
+
+        Texture resolve(TextureLoader loader, String key) throws SceneException {
+            Texture t = texture == null ? null : loader.load(texture, key);
+            return t != null ? t : Texture.constant(value);
+        }
     }
 
-    record Diffuse(Rgb albedo, Rgb emission) implements MaterialSpec {
+    /** A number, or a texture standing in for it (then {@code value} is what a missing file leaves). */
+    record NumberParam(double value, TextureRef texture) {
+        static NumberParam of(double value) {
+            return new NumberParam(value, null);
+        }
+
+        Texture resolve(TextureLoader loader, String key) throws SceneException {
+            Texture t = texture == null ? null : loader.load(texture, key);
+            return t != null ? t : Texture.constant(value);
+        }
+    }
+
+    /** A material as the file gives it: its type and that type's keys. */
+    sealed interface MaterialSpec permits Diffuse, Mirror, Dielectric, Glossy, Conductor, Principled {
+        Material toMaterial(String name, TextureLoader textures) throws SceneException;
+    }
+
+    record Diffuse(ColorParam albedo, Rgb emission) implements MaterialSpec {
         @Override
-        public Material toMaterial(String name) {
-            return Material.emissive(name, albedo, emission);
+        public Material toMaterial(String name, TextureLoader textures) throws SceneException {
+            if (albedo.texture() == null) {
+                return Material.emissive(name, albedo.value(), emission);
+            }
+            return Material.diffuse(name, albedo.resolve(textures, "materials." + name + ".albedo")).withEmission(emission);
         }
     }
 
     record Mirror(Rgb reflectance) implements MaterialSpec {
         @Override
-        public Material toMaterial(String name) {
+        public Material toMaterial(String name, TextureLoader textures) {
             return Material.mirror(name, reflectance);
         }
     }
 
-    record Dielectric(double ior) implements MaterialSpec {
+    record Dielectric(double ior, NumberParam alpha) implements MaterialSpec {
         @Override
-        public Material toMaterial(String name) {
-            return Material.dielectric(name, ior);
+        public Material toMaterial(String name, TextureLoader textures) throws SceneException {
+            if (alpha.texture() == null && alpha.value() == 0) {
+                return Material.dielectric(name, ior);
+            }
+            return Material.dielectric(name, ior, alpha.resolve(textures, "materials." + name + ".alpha"));
         }
     }
 
     record Glossy(Rgb diffuse, Rgb specular, double exponent, Rgb emission) implements MaterialSpec {
         @Override
-        public Material toMaterial(String name) {
+        public Material toMaterial(String name, TextureLoader textures) {
             return Material.glossy(name, diffuse, specular, exponent).withEmission(emission);
+        }
+    }
+
+    /** A conductor: a preset's name, or eta and k. */
+    record Conductor(String preset, Rgb eta, Rgb k, NumberParam alpha) implements MaterialSpec {
+        @Override
+        public Material toMaterial(String name, TextureLoader textures) throws SceneException {
+            Texture a = alpha.resolve(textures, "materials." + name + ".alpha");
+            return preset != null ? Material.conductor(name, preset, a) : Material.conductor(name, eta, k, a);
+        }
+    }
+
+    /** The glTF metallic–roughness material. */
+    record Principled(ColorParam baseColor, NumberParam metallic, NumberParam roughness, NumberParam specular, ColorParam specularColor,
+                      NumberParam transmission, double ior, Rgb emission, double emissionStrength) implements MaterialSpec {
+        @Override
+        public Material toMaterial(String name, TextureLoader textures) throws SceneException {
+            String key = "materials." + name + ".";
+            return Material.principled(name)
+                    .baseColor(baseColor.resolve(textures, key + "baseColor"))
+                    .metallic(metallic.resolve(textures, key + "metallic"))
+                    .roughness(roughness.resolve(textures, key + "roughness"))
+                    .specular(specular.resolve(textures, key + "specular"))
+                    .specularColor(specularColor.resolve(textures, key + "specularColor"))
+                    .transmission(transmission.resolve(textures, key + "transmission"))
+                    .ior(ior)
+                    .emission(emission, emissionStrength)
+                    .build();
         }
     }
 
@@ -102,26 +169,30 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
     record MeshShape(String file, String material, Transform transform) implements ShapeSpec {}
 
     /** Triangles given in the file: flat x, y, z arrays and three vertex indices per triangle. */
-    record TrianglesShape(float[] positions, int[] indices, float[] normals, String material, Transform transform) implements ShapeSpec {
+    record TrianglesShape(float[] positions, int[] indices, float[] normals, float[] uvs, String material, Transform transform)
+            implements ShapeSpec {
         TrianglesShape {
             positions = positions.clone();
             indices = indices.clone();
             normals = normals == null ? null : normals.clone();
+            uvs = uvs == null ? null : uvs.clone();
         }
 
         TriangleMesh mesh() {
-            return new TriangleMesh(positions, indices, normals);
+            return new TriangleMesh(positions, indices, normals, uvs);
         }
 
         @Override
         public boolean equals(Object o) {
             return o instanceof TrianglesShape t && Arrays.equals(positions, t.positions) && Arrays.equals(indices, t.indices)
-                    && Arrays.equals(normals, t.normals) && material.equals(t.material) && transform.equals(t.transform);
+                    && Arrays.equals(normals, t.normals) && Arrays.equals(uvs, t.uvs) && material.equals(t.material)
+                    && transform.equals(t.transform);
         }
 
         @Override
         public int hashCode() {
-            return Objects.hash(Arrays.hashCode(positions), Arrays.hashCode(indices), Arrays.hashCode(normals), material, transform);
+            return Objects.hash(Arrays.hashCode(positions), Arrays.hashCode(indices), Arrays.hashCode(normals), Arrays.hashCode(uvs), material,
+                    transform);
         }
 
         @Override
@@ -134,10 +205,15 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
      * Loads the mesh files (relative to {@code folder}) and builds the scene. The reader has
      * checked every reference and value, so only the mesh files themselves can still fail.
      */
-    Scene build(Path folder) throws SceneException {
+    Scene build(Path file, Path folder) throws SceneException {
         Map<String, Material> byName = new LinkedHashMap<>();
-        materials.forEach((name, spec) -> byName.put(name, spec.toMaterial(name)));
+        List<String> notes = new ArrayList<>();
+        TextureLoader textures = new TextureLoader(file, folder, notes);
+        for (var e : materials.entrySet()) {
+            byName.put(e.getKey(), e.getValue().toMaterial(e.getKey(), textures));
+        }
         Scene.Builder builder = Scene.builder();
+        notes.forEach(builder::note);
         for (ShapeSpec shape : shapes) {
             if (shape instanceof SphereShape s) {
                 builder.addSphere(s.center(), s.radius(), byName.get(s.material()), s.transform());

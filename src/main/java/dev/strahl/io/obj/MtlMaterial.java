@@ -2,6 +2,11 @@ package dev.strahl.io.obj;
 
 import dev.strahl.image.Rgb;
 import dev.strahl.scene.Material;
+import dev.strahl.scene.SceneException;
+import dev.strahl.scene.Texture;
+import java.io.IOException;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
 import java.util.Objects;
 import java.util.function.Consumer;
 
@@ -24,9 +29,58 @@ import java.util.function.Consumer;
  * @param ke    emitted radiance, components &ge; 0
  * @param ns    specular exponent, finite and &ge; 0
  * @param ni    index of refraction, finite and &gt; 0
+ * <p>The PBR extension's {@code Pr} (roughness) and {@code Pm} (metallic), or their maps, make the
+ * material a glTF {@code principled} one (base colour Kd or map_Kd, roughness default 1 and
+ * metallic default 0 where only one is given).
+ *
  * @param illum illumination model of the MTL specification, 0..10
+ * @param pr    {@code Pr} in [0, 1], or null
+ * @param pm    {@code Pm} in [0, 1], or null
+ * @param mapKd {@code map_Kd}, or null
+ * @param mapPr {@code map_Pr}, or null
+ * @param mapPm {@code map_Pm}, or null
  */
-public record MtlMaterial(String name, Rgb kd, Rgb ks, Rgb ke, double ns, double ni, int illum) {
+public record MtlMaterial(String name, Rgb kd, Rgb ks, Rgb ke, double ns, double ni, int illum, Double pr, Double pm, MapRef mapKd,
+                          MapRef mapPr, MapRef mapPm) {
+
+    /**
+     * A texture statement: the image file (resolved against the MTL file's folder) and its
+     * {@code -s} scale and {@code -o} offset of the texture coordinates (u' = su·u + ou).
+     *
+     * @param file    the image
+     * @param scaleU  su
+     * @param scaleV  sv
+     * @param offsetU ou
+     * @param offsetV ov
+     */
+    public record MapRef(Path file, double scaleU, double scaleV, double offsetU, double offsetV) {
+        /** The texture, or null (with a note) if the file does not exist; an unreadable image is an error naming it. */
+        Texture load(String material, String key, Consumer<String> notes) throws SceneException {
+            Texture t;
+            try {
+                t = Texture.image(file);
+            } catch (NoSuchFileException e) {
+                notes.accept("warning: material '" + material + "': " + key + " texture not found: " + file + " (ignored)");
+                return null;
+            } catch (IOException e) {
+                String m = e.getMessage();
+                throw new SceneException(file, "cannot read the " + key + " texture of material '" + material + "': "
+                        + (m == null ? e.getClass().getSimpleName() : m.replace(file + ": ", "")), e);
+            }
+            if (scaleU != 1 || scaleV != 1) {
+                t = t.withUvScale(scaleU, scaleV);
+            }
+            if (offsetU != 0 || offsetV != 0) {
+                t = t.withUvOffset(offsetU, offsetV);
+            }
+            return t;
+        }
+    }
+
+    /** A material without PBR keys or texture maps. */
+    public MtlMaterial(String name, Rgb kd, Rgb ks, Rgb ke, double ns, double ni, int illum) {
+        this(name, kd, ks, ke, ns, ni, illum, null, null, null, null, null);
+    }
 
     public static final Rgb DEFAULT_KD = Rgb.gray(0.8);
     static final double DEFAULT_NS = 0;
@@ -51,6 +105,14 @@ public record MtlMaterial(String name, Rgb kd, Rgb ks, Rgb ke, double ns, double
         if (illum < 0 || illum > MAX_ILLUM) {
             throw new IllegalArgumentException("illum must be 0.." + MAX_ILLUM + ", got " + illum);
         }
+        if (pr != null && !(pr >= 0 && pr <= 1) || pm != null && !(pm >= 0 && pm <= 1)) {
+            throw new IllegalArgumentException("Pr and Pm must lie in [0, 1], got " + pr + ", " + pm);
+        }
+    }
+
+    /** Whether the material uses the PBR extension (it becomes a principled material). */
+    boolean isPbr() {
+        return pr != null || pm != null || mapPr != null || mapPm != null;
     }
 
     /** A material with the given name and every key at its default (see the class comment). */
@@ -75,12 +137,32 @@ public record MtlMaterial(String name, Rgb kd, Rgb ks, Rgb ke, double ns, double
      * The material this block describes, following the conventions table (docs/conventions.md):
      * illum 5 is a mirror of reflectance Ks, illum 7 smooth glass of IOR Ni, illum &le; 2 with
      * Ks &gt; 0 Kd·Lambert + Ks·Beckmann (Ns as Phong exponent), otherwise Lambertian with albedo
-     * Kd. Ke &gt; 0 makes any of them emit. What cannot be rendered as written is said in
-     * {@code notes}.
+     * Kd. Ke &gt; 0 makes any of them emit. With {@code map_Kd}, a diffuse material's albedo (or a
+     * principled one's base colour) is that image; with the PBR keys the material is principled.
+     * What cannot be rendered as written is said in {@code notes}; a missing texture file is a
+     * warning there (the material keeps its plain colour).
+     *
+     * @throws SceneException if a texture file exists but is not a readable PNG or JPEG image
      */
-    public Material toMaterial(Consumer<String> notes) {
+    public Material toMaterial(Consumer<String> notes) throws SceneException {
+        Texture kdMap = mapKd == null ? null : mapKd.load(name, "map_Kd", notes);
         Material m;
-        if (illum == 5) {
+        if (isPbr()) {
+            Texture prMap = mapPr == null ? null : mapPr.load(name, "map_Pr", notes);
+            Texture pmMap = mapPm == null ? null : mapPm.load(name, "map_Pm", notes);
+            var b = Material.principled(name).baseColor(clampToOne(kd, "Kd", notes))
+                    .roughness(pr != null ? pr : 1).metallic(pm != null ? pm : 0);
+            if (kdMap != null) {
+                b.baseColor(kdMap);
+            }
+            if (prMap != null) {
+                b.roughness(prMap);
+            }
+            if (pmMap != null) {
+                b.metallic(pmMap);
+            }
+            m = b.build();
+        } else if (illum == 5) {
             m = Material.mirror(name, clampToOne(ks, "Ks", notes));
         } else if (illum == 7) {
             m = Material.dielectric(name, ni);
@@ -88,7 +170,14 @@ public record MtlMaterial(String name, Rgb kd, Rgb ks, Rgb ke, double ns, double
             if (illum > 2) {
                 notes.accept("material '" + name + "': illum " + illum + " is not supported; rendering it as illum 2");
             }
-            m = ks.isBlack() ? Material.diffuse(name, clampToOne(kd, "Kd", notes)) : Material.glossy(name, kd, ks, ns);
+            if (kdMap != null && ks.isBlack()) {
+                m = Material.diffuse(name, kdMap);
+            } else {
+                if (kdMap != null) {
+                    notes.accept("material '" + name + "': map_Kd on a glossy material (Ks > 0) is not supported; using Kd");
+                }
+                m = ks.isBlack() ? Material.diffuse(name, clampToOne(kd, "Kd", notes)) : Material.glossy(name, kd, ks, ns);
+            }
         }
         return m.withEmission(ke);
     }

@@ -1,9 +1,9 @@
 package dev.strahl.io.obj;
 
+import dev.strahl.image.Rgb;
 import dev.strahl.io.text.LineCursor;
 import dev.strahl.io.text.TextLines;
 import dev.strahl.scene.SceneException;
-import dev.strahl.image.Rgb;
 import java.nio.file.Path;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
@@ -17,11 +17,14 @@ import java.util.Set;
  *
  * <p>Understood: {@code newmtl NAME} (the rest of the line, so names may contain spaces),
  * {@code Kd}, {@code Ks}, {@code Ke} (one number = grey, or three), {@code Ns}, {@code Ni},
- * {@code illum}. Accepted and ignored: {@code Ka} (no ambient term in a path tracer), {@code d},
- * {@code Tr}, {@code Tf} (transparency is what {@code illum 7} means, DESIGN.md §3). Texture
- * statements ({@code map_*}, {@code bump}, {@code disp}, {@code decal}, {@code refl},
- * {@code norm}) give one warning per file, any other key one warning per key; keys are matched
- * without regard to case, because exporters disagree on it.
+ * {@code illum}, the PBR extension's {@code Pr} and {@code Pm}, and the texture maps
+ * {@code map_Kd}, {@code map_Pr} and {@code map_Pm} with their options {@code -s} and {@code -o}
+ * (other options are skipped with a warning). Accepted and ignored: {@code Ka} (no ambient term in
+ * a path tracer), {@code Tr}, {@code Tf} (transparency is what {@code illum 7} means, DESIGN.md
+ * §3), {@code d} (a constant {@code d} below 1 gets one warning per file). Other texture statements
+ * ({@code map_Ke}, {@code map_d}, {@code norm}, {@code bump}, {@code disp}, {@code decal},
+ * {@code refl}, other {@code map_*}) give one warning per file, any other key one warning per key;
+ * keys are matched without regard to case, because exporters disagree on it.
  *
  * <p>Errors (a {@link SceneException} at {@code file:line:}): numbers that do not parse, colours
  * with 2 or more than 3 numbers, negative or non-finite colours, a negative {@code Ns}, an
@@ -48,6 +51,7 @@ public final class MtlReader {
         Map<String, MtlMaterial> materials = new LinkedHashMap<>();
         Set<String> warnedKeys = new HashSet<>();
         boolean warnedTextures = false;
+        boolean warnedDissolve = false;
         Block block = null;
         var cur = new LineCursor(mtl);
         for (String line; (line = lines.next()) != null; ) {
@@ -66,11 +70,32 @@ public final class MtlReader {
                 block = new Block(name, lines.byteKey(name), cur.lineNumber);
                 continue;
             }
+            if (lower.equals("map_kd") || lower.equals("map_pr") || lower.equals("map_pm")) {
+                if (block == null) {
+                    throw cur.error(LineCursor.quote(key) + " before any newmtl");
+                }
+                MtlMaterial.MapRef map = map(key, cur, mtl, warnings);
+                switch (lower) {
+                    case "map_kd" -> block.mapKd = map;
+                    case "map_pr" -> block.mapPr = map;
+                    default -> block.mapPm = map;
+                }
+                continue;
+            }
+            if (lower.equals("d") && block != null && !warnedDissolve) {
+                double d = cur.next() && isNumber(cur.token()) ? cur.number(key) : 1;
+                if (d < 1) {
+                    warnedDissolve = true;
+                    warnings.add(mtl + ": 'd " + d + "' of material " + LineCursor.quote(block.name) + " (line " + cur.lineNumber
+                            + "): constant transparency is not rendered; ignored (glass is illum 7)");
+                }
+                continue;
+            }
             if (isTexture(lower)) {
                 if (!warnedTextures) {
                     warnedTextures = true;
-                    warnings.add(mtl + ": texture maps are not supported (first " + LineCursor.quote(key)
-                            + " at line " + cur.lineNumber + "): ignored");
+                    warnings.add(mtl + ": texture statement " + LineCursor.quote(key) + " (line " + cur.lineNumber
+                            + ") is not supported (strahl reads map_Kd, map_Pr and map_Pm): ignored, as are the others of this file");
                 }
                 continue;
             }
@@ -99,7 +124,7 @@ public final class MtlReader {
 
     private static boolean isMaterialKey(String lowerKey) {
         return switch (lowerKey) {
-            case "kd", "ks", "ke", "ka", "ns", "ni", "illum", "d", "tr", "tf" -> true;
+            case "kd", "ks", "ke", "ka", "ns", "ni", "illum", "d", "tr", "tf", "pr", "pm" -> true;
             default -> false;
         };
     }
@@ -130,6 +155,17 @@ public final class MtlReader {
                     block.ni = MtlMaterial.DEFAULT_NI;
                 }
             }
+            case "pr", "pm" -> {
+                double x = single(key, cur);
+                if (!(x >= 0 && x <= 1)) {
+                    throw cur.error(LineCursor.quote(key) + " must lie in [0, 1], got " + x);
+                }
+                if (lower.equals("pr")) {
+                    block.pr = x;
+                } else {
+                    block.pm = x;
+                }
+            }
             case "illum" -> {
                 double illum = single(key, cur);
                 if (!(illum >= 0 && illum <= MtlMaterial.MAX_ILLUM && illum == Math.rint(illum))) {
@@ -139,6 +175,80 @@ public final class MtlReader {
             }
             default -> { } // Ka, d, Tr, Tf: accepted, not used (see the class comment)
         }
+    }
+
+    /** Texture options and the number of arguments each takes (-s, -o and -t take one to three numbers). */
+    private static final Map<String, Integer> MAP_OPTIONS = Map.ofEntries(Map.entry("-blendu", 1), Map.entry("-blendv", 1),
+            Map.entry("-bm", 1), Map.entry("-boost", 1), Map.entry("-cc", 1), Map.entry("-clamp", 1), Map.entry("-imfchan", 1),
+            Map.entry("-mm", 2), Map.entry("-texres", 1), Map.entry("-type", 1));
+
+    /**
+     * {@code map_Kd [options] file}: the options {@code -s u [v [w]]} and {@code -o u [v [w]]} are
+     * applied, the others skipped with a warning; the file is the rest of the line, relative to the
+     * MTL file's folder.
+     */
+    private static MtlMaterial.MapRef map(String key, LineCursor cur, Path mtl, List<String> warnings) throws SceneException {
+        double[] scale = {1, 1, 1};
+        double[] offset = {0, 0, 0};
+        if (!cur.next()) {
+            throw cur.error(LineCursor.quote(key) + " needs a file name");
+        }
+        while (cur.token().startsWith("-") && cur.token().length() > 1 && !Character.isDigit(cur.token().charAt(1))) {
+            String option = cur.token().toLowerCase(Locale.ROOT);
+            boolean more;
+            if (option.equals("-s") || option.equals("-o") || option.equals("-t")) {
+                double[] into = option.equals("-s") ? scale : option.equals("-o") ? offset : new double[3];
+                int n = 0;
+                while ((more = cur.next()) && n < 3 && isNumber(cur.token())) {
+                    into[n++] = cur.number(key);
+                }
+                if (n == 0) {
+                    throw cur.error(LineCursor.quote(key + " " + option) + " needs 1 to 3 numbers");
+                }
+                if (option.equals("-t")) {
+                    warnings.add(mtl + ": option '-t' of " + LineCursor.quote(key) + " (line " + cur.lineNumber + ") is not supported: ignored");
+                }
+            } else {
+                Integer arguments = MAP_OPTIONS.get(option);
+                if (arguments == null) {
+                    throw cur.error("unknown option " + LineCursor.quote(option) + " of " + LineCursor.quote(key));
+                }
+                warnings.add(mtl + ": option " + LineCursor.quote(option) + " of " + LineCursor.quote(key) + " (line " + cur.lineNumber
+                        + ") is not supported: ignored");
+                for (int i = 0; i < arguments; i++) {
+                    if (!cur.next()) {
+                        throw cur.error(LineCursor.quote(key + " " + option) + " needs " + arguments + " argument" + (arguments == 1 ? "" : "s"));
+                    }
+                }
+                more = cur.next();
+            }
+            if (!more) {
+                throw cur.error(LineCursor.quote(key) + " needs a file name after its options");
+            }
+        }
+        String first = cur.token();
+        String rest = cur.rest();
+        String name = rest.isEmpty() ? first : first + " " + rest;
+        Path file;
+        try {
+            Path folder = mtl.toAbsolutePath().getParent();
+            file = folder.resolve(name.replace('\\', '/'));
+        } catch (java.nio.file.InvalidPathException e) {
+            throw cur.error(LineCursor.quote(key) + ": not a valid file name: " + LineCursor.quote(name));
+        }
+        if (!Double.isFinite(scale[0]) || !Double.isFinite(scale[1]) || !Double.isFinite(offset[0]) || !Double.isFinite(offset[1])) {
+            throw cur.error(LineCursor.quote(key) + ": -s and -o must be finite");
+        }
+        return new MtlMaterial.MapRef(file, scale[0], scale[1], offset[0], offset[1]);
+    }
+
+    private static boolean isNumber(String token) {
+        if (token.isEmpty()) {
+            return false;
+        }
+        char c = token.charAt(0);
+        return Character.isDigit(c) || c == '.' || ((c == '-' || c == '+') && token.length() > 1
+                && (Character.isDigit(token.charAt(1)) || token.charAt(1) == '.'));
     }
 
     /** A key with exactly one number. */
@@ -213,6 +323,8 @@ public final class MtlReader {
         double ns = MtlMaterial.DEFAULT_NS;
         double ni = MtlMaterial.DEFAULT_NI;
         int illum = MtlMaterial.DEFAULT_ILLUM;
+        Double pr, pm;
+        MtlMaterial.MapRef mapKd, mapPr, mapPm;
 
         Block(String name, String key, int line) {
             this.name = name;
@@ -221,7 +333,7 @@ public final class MtlReader {
         }
 
         MtlMaterial toMaterial() {
-            return new MtlMaterial(name, kd, ks, ke, ns, ni, illum);
+            return new MtlMaterial(name, kd, ks, ke, ns, ni, illum, pr, pm, mapKd, mapPr, mapPm);
         }
     }
 }

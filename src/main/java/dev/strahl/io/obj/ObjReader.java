@@ -18,15 +18,16 @@ import java.util.Set;
  *
  * <p>Understood: {@code v x y z [w]} (w and any further numbers, such as vertex colours, are
  * checked and ignored), {@code vn} (normalised on read; a zero-length one means "no normal"),
- * {@code vt} (checked, unused), {@code f} with the index forms {@code v}, {@code v/t},
+ * {@code vt} (u and v; w ignored; (0, 0) is the image's bottom-left corner), {@code f} with the index forms {@code v}, {@code v/t},
  * {@code v//n}, {@code v/t/n} and negative (relative) indices, {@code usemtl}, {@code mtllib}.
  * Polygons are fan-triangulated as (v0, vi, vi+1), keeping the file's winding, which decides the
  * geometric normal (DESIGN.md §3). A line ending in a backslash continues on the next line.
  * {@code g}, {@code o}, {@code s} and other grouping statements are accepted and have no effect;
  * lines, points, free-form geometry and unknown statements give one warning per keyword.
  *
- * <p>Output vertices are the distinct (position, normal) pairs that faces use, in order of first
- * use, so that OBJ normals become per-vertex normals of the mesh and unused vertices disappear.
+ * <p>Output vertices are the distinct (position, texture coordinate, normal) triples that faces
+ * use, in order of first use, so that OBJ normals and texture coordinates become per-vertex data
+ * of the mesh and unused vertices disappear.
  *
  * <p>The parts: {@link TextLines} reads the file's lines, {@link LineCursor} splits each into
  * tokens, {@link ObjMaterials} keeps the {@code usemtl} slots and the MTL libraries, and a
@@ -55,14 +56,19 @@ public final class ObjReader {
     private int vCount;
     private float[] vn = new float[3 * 64];
     private int vnCount;
+    private float[] vt = new float[2 * 64];
     private int vtCount;
 
     // Output vertices: the OBJ position and normal index (or VERTEX_NONE) of each distinct pair
     private final LongIntMap vertexIds = new LongIntMap();
     private int[] outPosition = new int[1024];
     private int[] outNormal = new int[1024];
+    private int[] outTexcoord = new int[1024];
     private int outCount;
-    private boolean anyNormal;
+    private boolean anyNormal, anyTexcoord;
+    /** The distinct (texture coordinate, normal) index pairs, numbered: a face vertex is (position, that number). */
+    private final LongIntMap attributeIds = new LongIntMap();
+    private int attributeCount;
 
     // Output triangles (output vertex indices) and the material slot of each (see ObjMaterials)
     private int[] tri = new int[3 * 1024];
@@ -175,10 +181,19 @@ public final class ObjReader {
     }
 
     private void texcoord() throws SceneException {
-        coordinate("vt", "at least 1 number (u [v [w]])", 0);
-        while (cur.next()) {
-            checkFinite(cur.number("vt"), "vt");
+        double u = coordinate("vt", "at least 1 number (u [v [w]])", 0);
+        double vv = 0;
+        for (int k = 1; cur.next(); k++) {
+            double x = checkFinite(cur.number("vt"), "vt");
+            if (k == 1) {
+                vv = x;
+            }
         }
+        if (2 * vtCount + 2 > vt.length) {
+            vt = grow(vt, 2 * vtCount + 2);
+        }
+        vt[2 * vtCount] = (float) u;
+        vt[2 * vtCount + 1] = (float) vv;
         vtCount++;
     }
 
@@ -276,17 +291,22 @@ public final class ObjReader {
             throw cur.error("bad face vertex " + LineCursor.quote(cur.token()) + ": expected v, v/t, v//n or v/t/n");
         }
         int p = index(start, vEnd, vCount, "vertex", "vertex", "vertices");
+        int tex = VERTEX_NONE;
         if (slash1 >= 0) {
             int tEnd = slash2 < 0 ? stop : slash2;
             if (tEnd > slash1 + 1) {
-                index(slash1 + 1, tEnd, vtCount, "texture", "texture coordinate", "texture coordinates");
+                tex = index(slash1 + 1, tEnd, vtCount, "texture", "texture coordinate", "texture coordinates");
             }
         }
         int nrm = VERTEX_NONE;
         if (slash2 >= 0 && stop > slash2 + 1) {
             nrm = index(slash2 + 1, stop, vnCount, "normal", "normal", "normals");
         }
-        long key = ((long) p << 32) | (nrm + 1L);
+        int attribute = attributeIds.putIfAbsent(((tex + 1L) << 32) | (nrm + 1L), attributeCount);
+        if (attribute < 0) {
+            attribute = attributeCount++;
+        }
+        long key = ((long) p << 32) | attribute;
         int id = vertexIds.putIfAbsent(key, outCount);
         if (id >= 0) {
             return id;
@@ -294,10 +314,13 @@ public final class ObjReader {
         if (outCount == outPosition.length) {
             outPosition = grow(outPosition, outCount + 1);
             outNormal = grow(outNormal, outCount + 1);
+            outTexcoord = grow(outTexcoord, outCount + 1);
         }
         outPosition[outCount] = p;
         outNormal[outCount] = nrm;
+        outTexcoord[outCount] = tex;
         anyNormal |= nrm != VERTEX_NONE;
+        anyTexcoord |= tex != VERTEX_NONE;
         return outCount++;
     }
 
@@ -373,7 +396,19 @@ public final class ObjReader {
                 System.arraycopy(vn, outNormal[i] * 3, normals, i * 3, 3);
             }
         }
-        var mesh = new TriangleMesh(positions, Arrays.copyOf(tri, triCount * 3), normals);
+        float[] uvs = null;
+        if (anyTexcoord) {
+            uvs = new float[outCount * 2];
+            for (int i = 0; i < outCount; i++) {
+                if (outTexcoord[i] == VERTEX_NONE) {
+                    uvs[2 * i] = Float.NaN;
+                    uvs[2 * i + 1] = Float.NaN;
+                } else {
+                    System.arraycopy(vt, outTexcoord[i] * 2, uvs, i * 2, 2);
+                }
+            }
+        }
+        var mesh = new TriangleMesh(positions, Arrays.copyOf(tri, triCount * 3), normals, uvs);
         return new ObjModel(mesh, triangleMaterial, used, warnings);
     }
 

@@ -599,7 +599,7 @@ class JsonSceneReaderTest {
                   },
                   "shapes": [ %s ]
                 }
-                """.formatted(SPHERE), "unknown material type 'metal'", "materials.m", "known: dielectric, diffuse, glossy, mirror"),
+                """.formatted(SPHERE), "unknown material type 'metal'", "materials.m", "known: conductor, dielectric, diffuse, glossy, mirror, principled"),
             bad("unknown shape type", 4, """
                 {
                   %s
@@ -707,7 +707,7 @@ class JsonSceneReaderTest {
                   },
                   "shapes": [ %s ]
                 }
-                """.formatted(SPHERE), "'materials.m.emission'", "a mirror material cannot emit light", "diffuse and glossy"),
+                """.formatted(SPHERE), "'materials.m.emission'", "a mirror material cannot emit light", "diffuse, glossy and principled"),
             bad("emission on a dielectric", 3, """
                 {
                   "materials": {
@@ -732,7 +732,7 @@ class JsonSceneReaderTest {
                   },
                   "shapes": [ %s ]
                 }
-                """.formatted(SPHERE), "unknown key 'eta' in materials.m of type dielectric", "known: ior, type"),
+                """.formatted(SPHERE), "unknown key 'eta' in materials.m of type dielectric", "known: alpha, ior, type"),
             bad("roughness on a glossy material", 4, """
                 {
                   "materials": {
@@ -912,7 +912,7 @@ class JsonSceneReaderTest {
 
     private static Rgb albedo(Material m) {
         assertThat(TestScenes.bsdf(m)).isInstanceOf(Lambert.class);
-        return ((Lambert) TestScenes.bsdf(m)).albedo();
+        return ((Lambert) TestScenes.bsdf(m)).albedo().mean();
     }
 
     private static String quote(String s) {

@@ -60,7 +60,7 @@ class SceneFileRoutesTest {
         int[] idx = model.mesh().indices();
         for (int slot = 0; slot < model.materials().size(); slot++) {
             MtlMaterial m = model.materials().get(slot);
-            materials.put(m.name(), new SceneDescription.Diffuse(m.kd(), m.ke()));
+            materials.put(m.name(), new SceneDescription.Diffuse(SceneDescription.ColorParam.of(m.kd()), m.ke()));
             java.util.List<Integer> tri = new java.util.ArrayList<>();
             for (int t = 0; t < model.triangleMaterial().length; t++) {
                 if (model.triangleMaterial()[t] == slot) {
@@ -68,7 +68,7 @@ class SceneFileRoutesTest {
                 }
             }
             shapes.add(new SceneDescription.TrianglesShape(model.mesh().positions(), tri.stream().mapToInt(Integer::intValue).toArray(),
-                    null, m.name(), Transform.IDENTITY));
+                    null, null, m.name(), Transform.IDENTITY));
         }
         var d = new SceneDescription(viaObj.camera(), SceneSettings.NONE, materials, shapes, null);
         Path dir = java.nio.file.Files.createTempDirectory("inline");

@@ -129,7 +129,7 @@ final class SceneFileWriter {
         if (m instanceof SceneDescription.Diffuse d) {
             g.writeStringField("type", "diffuse");
             g.writeFieldName("albedo");
-            rgb(d.albedo());
+            colour(d.albedo());
             emission(d.emission());
         } else if (m instanceof SceneDescription.Mirror r) {
             g.writeStringField("type", "mirror");
@@ -138,6 +138,37 @@ final class SceneFileWriter {
         } else if (m instanceof SceneDescription.Dielectric d) {
             g.writeStringField("type", "dielectric");
             g.writeNumberField("ior", d.ior());
+            g.writeFieldName("alpha");
+            number(d.alpha());
+        } else if (m instanceof SceneDescription.Conductor c) {
+            g.writeStringField("type", "conductor");
+            if (c.preset() != null) {
+                g.writeStringField("preset", c.preset());
+            } else {
+                g.writeFieldName("eta");
+                rgb(c.eta());
+                g.writeFieldName("k");
+                rgb(c.k());
+            }
+            g.writeFieldName("alpha");
+            number(c.alpha());
+        } else if (m instanceof SceneDescription.Principled p) {
+            g.writeStringField("type", "principled");
+            g.writeFieldName("baseColor");
+            colour(p.baseColor());
+            g.writeFieldName("metallic");
+            number(p.metallic());
+            g.writeFieldName("roughness");
+            number(p.roughness());
+            g.writeFieldName("specular");
+            number(p.specular());
+            g.writeFieldName("specularColor");
+            colour(p.specularColor());
+            g.writeFieldName("transmission");
+            number(p.transmission());
+            g.writeNumberField("ior", p.ior());
+            emission(p.emission());
+            g.writeNumberField("emissionStrength", p.emissionStrength());
         } else {
             SceneDescription.Glossy gl = (SceneDescription.Glossy) m;
             g.writeStringField("type", "glossy");
@@ -147,6 +178,36 @@ final class SceneFileWriter {
             rgb(gl.specular());
             g.writeNumberField("exponent", gl.exponent());
             emission(gl.emission());
+        }
+        g.writeEndObject();
+    }
+
+    /** A colour, or its texture object (whose fallback value is then the reader's default). */
+    private void colour(SceneDescription.ColorParam c) throws IOException {
+        if (c.texture() == null) {
+            rgb(c.value());
+        } else {
+            texture(c.texture(), true);
+        }
+    }
+
+    private void number(SceneDescription.NumberParam n) throws IOException {
+        if (n.texture() == null) {
+            g.writeNumber(n.value());
+        } else {
+            texture(n.texture(), false);
+        }
+    }
+
+    private void texture(SceneDescription.TextureRef t, boolean colour) throws IOException {
+        g.writeStartObject();
+        g.writeStringField("texture", t.file());
+        if (t.scaleU() != 1 || t.scaleV() != 1) {
+            g.writeFieldName("uvScale");
+            g.writeArray(new double[] {t.scaleU(), t.scaleV()}, 0, 2);
+        }
+        if (colour && t.linear()) {
+            g.writeBooleanField("linear", true);
         }
         g.writeEndObject();
     }
@@ -182,6 +243,10 @@ final class SceneFileWriter {
             if (t.normals() != null) {
                 g.writeFieldName("normals");
                 floats(t.normals());
+            }
+            if (t.uvs() != null) {
+                g.writeFieldName("uvs");
+                floats(t.uvs());
             }
             g.writeStringField("material", t.material());
         }

@@ -90,18 +90,20 @@ class MtlReaderTest {
 
     @Test
     void unknownKeysWarnOncePerKey() throws Exception {
-        MtlMaterial m = read("newmtl a\nPr 0.5\nKd 0.2\nPm 1\nnewmtl b\nPr 0.1\n").get("a");
+        MtlMaterial m = read("newmtl a\nPs 0.5\nKd 0.2\nPc 1\nnewmtl b\nPs 0.1\n").get("a");
         assertThat(m.kd()).isEqualTo(Rgb.gray(0.2));
         assertThat(warnings).hasSize(2);
-        assertThat(warnings.get(0)).startsWith(dir.resolve("t.mtl") + ": ").contains("unknown key 'Pr' (line 2): ignored");
-        assertThat(warnings.get(1)).contains("'Pm' (line 4)");
+        assertThat(warnings.get(0)).startsWith(dir.resolve("t.mtl") + ": ").contains("unknown key 'Ps' (line 2): ignored");
+        assertThat(warnings.get(1)).contains("'Pc' (line 4)");
     }
 
     @Test
-    void textureMapsWarnOncePerFile() throws Exception {
-        read("newmtl a\nmap_Kd a.png\nmap_Bump -bm 2 n.png\nbump b.png\nnewmtl b\nmap_Kd c.png\n");
+    void unsupportedTextureMapsWarnOncePerFile() throws Exception {
+        Map<String, MtlMaterial> m = read("newmtl a\nmap_Kd a.png\nmap_Bump -bm 2 n.png\nbump b.png\nnewmtl b\nmap_Kd c.png\n");
         assertThat(warnings).singleElement().asString()
-                .contains("texture maps are not supported (first 'map_Kd' at line 2): ignored");
+                .contains("texture statement 'map_Bump' (line 3) is not supported (strahl reads map_Kd, map_Pr and map_Pm): ignored");
+        assertThat(m.get("a").mapKd().file()).isEqualTo(dir.resolve("a.png").toAbsolutePath());
+        assertThat(m.get("b").mapKd().file()).isEqualTo(dir.resolve("c.png").toAbsolutePath());
     }
 
     @Test
