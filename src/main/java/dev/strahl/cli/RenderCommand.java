@@ -9,7 +9,6 @@ import dev.strahl.io.json.EnvironmentMaps;
 import dev.strahl.io.json.SceneFile;
 import dev.strahl.io.json.SceneSettings;
 import dev.strahl.io.text.Units;
-import dev.strahl.render.Acceleration;
 import dev.strahl.render.Aov;
 import dev.strahl.render.CheckpointException;
 import dev.strahl.render.Denoiser;
@@ -20,7 +19,6 @@ import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
-import dev.strahl.render.Schedule;
 import dev.strahl.scene.Camera;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
@@ -141,12 +139,17 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--accel", defaultValue = "bvh", paramLabel = "bvh|none",
             description = "Teaching option: none tests every ray against every primitive (no BVH), to measure what the BVH buys; "
                     + "same image, many times slower (default: ${DEFAULT-VALUE}).")
-    Acceleration accel;
+    Accel accel;
 
     @Option(names = "--schedule", defaultValue = "tiles", paramLabel = "tiles|stripes",
             description = "Teaching option: stripes gives each of n threads one horizontal stripe of the image instead of "
                     + "32x32 tiles taken by whichever thread is free; same image, threads wait more (default: ${DEFAULT-VALUE}).")
     Schedule schedule;
+
+    /** The values of the teaching options --accel and --schedule. */
+    enum Accel { BVH, NONE }
+
+    enum Schedule { TILES, STRIPES }
 
     @Option(names = "--look-from", paramLabel = "X,Y,Z", converter = Vectors.class, description = "Camera position.")
     Vector3d lookFrom;
@@ -327,7 +330,7 @@ final class RenderCommand implements Callable<Integer> {
     private RenderSettings settings() {
         return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0,
                 transport.integrator, transport.lightSamples, timeLimit == null ? Duration.ZERO : timeLimit,
-                new PhotonParameters(transport.photons, transport.photonRadius), accel, schedule, aovs());
+                new PhotonParameters(transport.photons, transport.photonRadius), accel == Accel.NONE, schedule == Schedule.STRIPES, aovs());
     }
 
     /** The feature buffers asked for with --aov (checked), or none. */

@@ -40,8 +40,8 @@ final class StatsFile {
                 json.writeEndArray();
             }
             json.writeNumberField("thread_idle_seconds", stats.threadIdleSeconds());
-            json.writeStringField("accel", settings.accel().name().toLowerCase(java.util.Locale.ROOT));
-            json.writeStringField("schedule", settings.schedule().name().toLowerCase(java.util.Locale.ROOT));
+            json.writeStringField("accel", settings.bruteForce() ? "none" : "bvh");
+            json.writeStringField("schedule", settings.stripes() ? "stripes" : "tiles");
             json.writeNumberField("texture_bytes", textureBytes);
             json.writeEndObject();
         });

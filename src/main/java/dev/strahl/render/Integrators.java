@@ -13,7 +13,7 @@ final class Integrators {
 
     static Integrator create(World scene, RenderSettings s) {
         // the teaching option --accel none: the same world, every ray against every primitive
-        World world = s.accel() == Acceleration.NONE ? scene.bruteForce() : scene;
+        World world = s.bruteForce() ? scene.bruteForce() : scene;
         boolean uniform = s.hemisphere() == HemisphereSampling.UNIFORM;
         return switch (s.integrator()) {
             case PATH -> new PathTracer(world, s.maxDepth(), uniform, s.cullBackFaces(), PathTracer.Strategy.MIS);

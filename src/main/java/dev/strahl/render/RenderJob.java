@@ -87,7 +87,7 @@ public final class RenderJob implements AutoCloseable {
         int number = JOB_NUMBER.incrementAndGet();
         this.workers = cluster != null ? cluster.apply(film)
                 : new RenderWorkers(film, rays, integrator, features ? () -> new FeatureTracer(world, settings.cullBackFaces()) : null,
-                        settings.seed(), settings.effectiveThreads(), settings.schedule(), "strahl-render-" + number);
+                        settings.seed(), settings.effectiveThreads(), settings.stripes(), "strahl-render-" + number);
         this.completedSpp = Math.min(film.minSampleCount(), settings.samplesPerPixel());   // 0, unless the film was restored
         this.restoredSamples = film.totalSamples();
     }

@@ -28,14 +28,14 @@ import java.util.function.Consumer;
  * @param lightSamples    shadow rays per diffuse or glossy hit for the direct and Whitted integrators
  * @param timeLimit       stop at the end of the pass during which this much time has passed; zero for no limit
  * @param photons         the photon mapper's photons per iteration and initial gather radius
- * @param accel           teaching option: the BVH, or none (every ray against every primitive)
- * @param schedule        teaching option: tiles from a shared counter, or one stripe per thread
+ * @param bruteForce      teaching option: every ray against every primitive instead of the BVH (same image, slower)
+ * @param stripes         teaching option: one horizontal stripe per thread instead of tiles from a shared counter
  * @param aovs            the feature buffers to keep beside the image (empty: none); see {@link Aov}
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, long seed, int threads,
                              HemisphereSampling hemisphere, boolean cullBackFaces, int samplesPerPass,
                              IntegratorKind integrator, int lightSamples, Duration timeLimit, PhotonParameters photons,
-                             Acceleration accel, Schedule schedule, Set<Aov> aovs) {
+                             boolean bruteForce, boolean stripes, Set<Aov> aovs) {
 
     /** Largest accepted film edge, to refuse absurd sizes before allocating. */
     public static final int MAX_SIZE = 1 << 15;
@@ -56,8 +56,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * @param lightSamples    shadow rays per diffuse or glossy hit, at least 1
      * @param timeLimit       stop at the end of the pass that crosses this time; zero for no limit
      * @param photons         the photon mapper's parameters
-     * @param accel           how rays find primitives: the BVH, or none (a teaching option)
-     * @param schedule        how threads share the image: tiles, or stripes (a teaching option)
+     * @param bruteForce      teaching option: no BVH, every ray against every primitive (docs/experiments.md)
+     * @param stripes         teaching option: one stripe of the image per thread instead of tiles (docs/experiments.md)
      * @param aovs            the feature buffers to keep; copied (iterated in the order of {@link Aov})
      */
     public RenderSettings {
@@ -86,8 +86,6 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         Objects.requireNonNull(integrator, "integrator");
         Objects.requireNonNull(timeLimit, "timeLimit");
         Objects.requireNonNull(photons, "photons");
-        Objects.requireNonNull(accel, "accel");
-        Objects.requireNonNull(schedule, "schedule");
         aovs = aovs.isEmpty() ? Set.of() : Collections.unmodifiableSet(EnumSet.copyOf(aovs));
         if (timeLimit.isNegative()) {
             throw new IllegalArgumentException("time limit must not be negative, got " + timeLimit);
@@ -103,7 +101,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      */
     public static RenderSettings defaults() {
         return new RenderSettings(512, 512, 64, -1, 0, 0, HemisphereSampling.COSINE, false, 0, IntegratorKind.PATH, 1, Duration.ZERO,
-                PhotonParameters.defaults(), Acceleration.BVH, Schedule.TILES, Set.of());
+                PhotonParameters.defaults(), false, false, Set.of());
     }
 
     /**
@@ -231,23 +229,27 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
     }
 
     /**
-     * These settings with another acceleration: a teaching option, see {@link Acceleration}.
+     * These settings with or without the BVH: a teaching option. Without it every ray is tested
+     * against every primitive, the brute-force loop a first ray tracer starts from; same hits and
+     * image, many times slower (docs/experiments.md).
      *
-     * @param a the BVH (the default) or none
+     * @param b true for brute force, false for the BVH (the default)
      * @return a new settings object
      */
-    public RenderSettings withAccel(Acceleration a) {
-        return edit(e -> e.accel = a);
+    public RenderSettings withBruteForce(boolean b) {
+        return edit(e -> e.bruteForce = b);
     }
 
     /**
-     * These settings with another way of sharing the image among threads: a teaching option, see {@link Schedule}.
+     * These settings with another way of sharing the image among threads: a teaching option. With
+     * stripes, thread i of n renders the i-th horizontal stripe and nothing else (the scheme of a
+     * first multithreaded renderer); without, threads take 32×32 tiles from a shared counter.
      *
-     * @param s tiles (the default) or stripes
+     * @param s true for stripes, false for tiles (the default)
      * @return a new settings object
      */
-    public RenderSettings withSchedule(Schedule s) {
-        return edit(e -> e.schedule = s);
+    public RenderSettings withStripes(boolean s) {
+        return edit(e -> e.stripes = s);
     }
 
     /**
@@ -274,7 +276,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         Fields f = new Fields(this);
         change.accept(f);
         return new RenderSettings(f.width, f.height, f.samplesPerPixel, f.maxDepth, f.seed, f.threads, f.hemisphere, f.cullBackFaces,
-                f.samplesPerPass, f.integrator, f.lightSamples, f.timeLimit, f.photons, f.accel, f.schedule, f.aovs);
+                f.samplesPerPass, f.integrator, f.lightSamples, f.timeLimit, f.photons, f.bruteForce, f.stripes, f.aovs);
     }
 
     /** The components as mutable fields, for {@link #edit}. */
@@ -286,8 +288,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         IntegratorKind integrator;
         Duration timeLimit;
         PhotonParameters photons;
-        Acceleration accel;
-        Schedule schedule;
+        boolean bruteForce;
+        boolean stripes;
         Set<Aov> aovs;
 
         Fields(RenderSettings s) {
@@ -304,8 +306,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
             lightSamples = s.lightSamples;
             timeLimit = s.timeLimit;
             photons = s.photons;
-            accel = s.accel;
-            schedule = s.schedule;
+            bruteForce = s.bruteForce;
+            stripes = s.stripes;
             aovs = s.aovs;
         }
     }

@@ -25,8 +25,8 @@ import org.joml.Vector3d;
 
 /**
  * The threads of one render job and what each owns: a fixed pool whose workers take
- * {@value Film#TILE}-pixel tiles from an atomic counter (or, with the teaching option
- * {@link Schedule#STRIPES}, each renders one horizontal stripe) and add a pass's samples of each pixel in
+ * {@value Film#TILE}-pixel tiles from an atomic counter (or, with the teaching option of stripes,
+ * each renders one horizontal stripe) and add a pass's samples of each pixel in
  * index order, with the random numbers of (seed, pixel, sample index) alone; and the same
  * threads for an integrator's per-sample preparation ({@link Parallel}).
  *
@@ -45,7 +45,8 @@ final class RenderWorkers implements Parallel, PassRunner {
     private final AtomicLong invalidSamples = new AtomicLong();
     /** Summed over threads and passes: how long a thread that had finished its part of a pass waited for the last one. */
     private final AtomicLong idleNanos = new AtomicLong();
-    private final Schedule schedule;
+    /** Teaching option: one stripe per thread instead of tiles. */
+    private final boolean stripes;
     private volatile boolean cancelled;
     /** Guards {@link #holds} and {@link #busy}; workers wait on it while a hold is on. */
     private final Object gate = new Object();
@@ -63,14 +64,14 @@ final class RenderWorkers implements Parallel, PassRunner {
      * {@code features} (else null) makes a tracer per thread (the film must then keep features).
      */
     RenderWorkers(Film film, CameraRays cameraRays, Integrator integrator, Supplier<FeatureTracer> features, long seed, int threads,
-                  Schedule schedule, String name) {
+                  boolean stripes, String name) {
         if (features != null && !film.hasFeatures()) {
             throw new IllegalArgumentException("feature buffers need a film that keeps them");
         }
         this.seed = seed;
         this.film = film;
         this.cameraRays = cameraRays;
-        this.schedule = schedule;
+        this.stripes = stripes;
         boolean stratified = stratifiedSampler();
         AtomicInteger workerNumber = new AtomicInteger();
         this.pool = Executors.newFixedThreadPool(threads, r -> {
@@ -190,7 +191,7 @@ final class RenderWorkers implements Parallel, PassRunner {
         AtomicInteger nextTile = new AtomicInteger();
         try {
             onEveryThread(w -> {
-                if (schedule == Schedule.STRIPES) {
+                if (stripes) {
                     renderStripe(w, firstSample, endSample);
                 } else {
                     renderTiles(w, nextTile, firstSample, endSample);
@@ -289,7 +290,7 @@ final class RenderWorkers implements Parallel, PassRunner {
     }
 
     /**
-     * Teaching option {@link Schedule#STRIPES}: thread i of n renders rows [i·h/n, (i+1)·h/n)
+     * Teaching option with stripes (a teaching option: thread i of n renders rows [i·h/n, (i+1)·h/n)
      * and nothing else (it may hold still between rows, as between tiles).
      */
     private void renderStripe(WorkerState w, int firstSample, int endSample) {

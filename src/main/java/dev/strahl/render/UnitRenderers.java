@@ -67,8 +67,8 @@ final class UnitRenderers implements UnitService {
             out.writeLong(s.timeLimit().toNanos());
             out.writeInt(s.photons().photonsPerIteration());
             out.writeDouble(s.photons().initialRadius());
-            out.writeUTF(s.accel().name());
-            out.writeUTF(s.schedule().name());
+            out.writeBoolean(s.bruteForce());
+            out.writeBoolean(s.stripes());
             out.writeBoolean(stratified);
         } catch (IOException e) {
             throw new UncheckedIOException(e);
@@ -85,7 +85,7 @@ final class UnitRenderers implements UnitService {
             var settings = new RenderSettings(in.readInt(), in.readInt(), in.readInt(), in.readInt(), in.readLong(), in.readInt(),
                     HemisphereSampling.valueOf(in.readUTF()), in.readBoolean(), in.readInt(), IntegratorKind.valueOf(in.readUTF()),
                     in.readInt(), Duration.ofNanos(in.readLong()), new PhotonParameters(in.readInt(), in.readDouble()),
-                    Acceleration.valueOf(in.readUTF()), Schedule.valueOf(in.readUTF()), Set.of());   // a cluster renders no feature buffers (RenderJob refuses them)
+                    in.readBoolean(), in.readBoolean(), Set.of());   // a cluster renders no feature buffers (RenderJob refuses them)
             return new Decoded(settings, in.readBoolean());
         } catch (IOException e) {
             throw new IllegalArgumentException("unreadable settings: " + e.getMessage(), e);

@@ -9,13 +9,11 @@ import dev.strahl.image.Image;
 import dev.strahl.image.Rgb;
 import dev.strahl.io.ImageWriters;
 import dev.strahl.io.SceneLoader;
-import dev.strahl.render.Acceleration;
 import dev.strahl.render.HemisphereSampling;
 import dev.strahl.render.IntegratorKind;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
-import dev.strahl.render.Schedule;
 import dev.strahl.scene.Camera;
 import dev.strahl.scene.Material;
 import dev.strahl.scene.Scene;
@@ -466,13 +464,13 @@ public final class Experiments {
         Map<String, Map<String, Double>> speed = new LinkedHashMap<>();
         timeAccel("cornell", box, settings(128, 16), settings(128, 16), speed);
         profile("Cornell Box, BVH", box, settings(128, 64), shares);
-        profile("Cornell Box, none", box, settings(128, 32).withAccel(Acceleration.NONE), shares);
+        profile("Cornell Box, none", box, settings(128, 32).withBruteForce(true), shares);
         if (bunny != null) {
             Scene b = SceneLoader.load(bunny);
             figure("e8.bunny.triangles", World.of(b).geometry().triangleCount());
             timeAccel("bunny", b, settings(128, 16), settings(48, 1), speed);
             profile("bunny, BVH", b, settings(256, 256), shares);
-            profile("bunny, none", b, settings(48, 2).withAccel(Acceleration.NONE), shares);
+            profile("bunny, none", b, settings(48, 2).withBruteForce(true), shares);
         }
         figure("e8.cornell.triangles", World.of(box).geometry().triangleCount());
         Charts.bars(out.resolve("e8-accel.png"), "Rays per second: BVH against every ray against every primitive", "rays per second (log)",
@@ -489,12 +487,12 @@ public final class Experiments {
     private void timeAccel(String name, Scene scene, RenderSettings s, RenderSettings brute, Map<String, Map<String, Double>> speed)
             throws Exception {
         figure("e8." + name + ".bits_identical", Arrays.equals(render(scene, brute).image().rgb(),
-                render(scene, brute.withAccel(Acceleration.NONE)).image().rgb()));
+                render(scene, brute.withBruteForce(true)).image().rgb()));
         double[] bvh = new double[3], none = new double[3];
         double bvhRays = 0, noneRays = 0;
         for (int i = 0; i < 3; i++) {
             Run a = render(scene, s);
-            Run b = render(scene, brute.withAccel(Acceleration.NONE));
+            Run b = render(scene, brute.withBruteForce(true));
             bvh[i] = a.stats().raysPerSecond();
             none[i] = b.stats().raysPerSecond();
             bvhRays = a.stats().seconds();
@@ -612,14 +610,14 @@ public final class Experiments {
     private void schedule() throws Exception {
         Scene box = scene("cornell-box.json");
         for (int threads : new int[] {2, 4}) {
-            for (Schedule sc : Schedule.values()) {
+            for (boolean sc : new boolean[] {false, true}) {
                 double[] seconds = new double[3], idle = new double[3];
                 for (int i = 0; i < 3; i++) {
-                    Run run = render(box, settings(256, 16).withThreads(threads).withSchedule(sc));
+                    Run run = render(box, settings(256, 16).withThreads(threads).withStripes(sc));
                     seconds[i] = run.stats().seconds();
                     idle[i] = run.stats().threadIdleSeconds();
                 }
-                String key = "e9." + sc.name().toLowerCase(Locale.ROOT) + ".threads" + threads;
+                String key = "e9." + (sc ? "stripes" : "tiles") + ".threads" + threads;
                 figure(key + ".seconds", median(seconds));
                 figure(key + ".idle_seconds", median(idle));
                 figure(key + ".idle_share", median(idle) / (threads * median(seconds)));
@@ -656,12 +654,12 @@ public final class Experiments {
     static void scheduleChart(Path out, Map<String, String> figures) throws IOException {
         Map<String, Map<String, Double>> bars = new LinkedHashMap<>();
         for (int threads : new int[] {2, 4}) {
-            for (Schedule sc : Schedule.values()) {
-                String key = "e9." + sc.name().toLowerCase(Locale.ROOT) + ".threads" + threads;
+            for (boolean sc : new boolean[] {false, true}) {
+                String key = "e9." + (sc ? "stripes" : "tiles") + ".threads" + threads;
                 if (!figures.containsKey(key + ".seconds")) {
                     return;
                 }
-                String column = sc.name().toLowerCase(Locale.ROOT) + ", " + threads + " threads";
+                String column = (sc ? "stripes" : "tiles") + ", " + threads + " threads";
                 bars.computeIfAbsent("render time (s)", k -> new LinkedHashMap<>()).put(column, Double.parseDouble(figures.get(key + ".seconds")));
                 bars.computeIfAbsent("idle thread time, summed (s)", k -> new LinkedHashMap<>())
                         .put(column, Double.parseDouble(figures.get(key + ".idle_seconds")));

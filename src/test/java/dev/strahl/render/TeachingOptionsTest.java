@@ -1,7 +1,6 @@
 package dev.strahl.render;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import dev.strahl.geometry.Ray;
 import dev.strahl.image.Image;
@@ -26,12 +25,10 @@ class TeachingOptionsTest {
 
     @Test
     void defaultsAreTheBvhAndTiles() {
-        assertThat(RenderSettings.defaults().accel()).isEqualTo(Acceleration.BVH);
-        assertThat(RenderSettings.defaults().schedule()).isEqualTo(Schedule.TILES);
-        assertThat(SETTINGS.withAccel(Acceleration.NONE).withSchedule(Schedule.STRIPES))
-                .extracting(RenderSettings::accel, RenderSettings::schedule).containsExactly(Acceleration.NONE, Schedule.STRIPES);
-        assertThatThrownBy(() -> SETTINGS.withSchedule(null)).isInstanceOf(NullPointerException.class);
-        assertThatThrownBy(() -> SETTINGS.withAccel(null)).isInstanceOf(NullPointerException.class);
+        assertThat(RenderSettings.defaults().bruteForce()).isFalse();
+        assertThat(RenderSettings.defaults().stripes()).isFalse();
+        assertThat(SETTINGS.withBruteForce(true).withStripes(true))
+                .extracting(RenderSettings::bruteForce, RenderSettings::stripes).containsExactly(true, true);
     }
 
     @Test
@@ -39,9 +36,9 @@ class TeachingOptionsTest {
         for (String file : List.of("scenes/cornell-box.json", "scenes/cornell-sphere.json")) {
             Scene scene = SceneLoader.load(Path.of(file));
             Image reference = Renders.render(scene, SETTINGS.withThreads(2));
-            assertThat(Renders.render(scene, SETTINGS.withThreads(2).withAccel(Acceleration.NONE)).rgb()).as(file).isEqualTo(reference.rgb());
+            assertThat(Renders.render(scene, SETTINGS.withThreads(2).withBruteForce(true)).rgb()).as(file).isEqualTo(reference.rgb());
             for (int threads : new int[] {1, 3, 7}) {              // 50 rows in 3 and 7 stripes: unequal heights
-                assertThat(Renders.render(scene, SETTINGS.withThreads(threads).withSchedule(Schedule.STRIPES)).rgb())
+                assertThat(Renders.render(scene, SETTINGS.withThreads(threads).withStripes(true)).rgb())
                         .as("%s, %d stripes", file, threads).isEqualTo(reference.rgb());
             }
         }
@@ -77,7 +74,7 @@ class TeachingOptionsTest {
     void eachThreadRendersOnlyItsOwnStripe() throws Exception {
         Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
         RowRecorder rows = new RowRecorder();
-        RenderSettings s = SETTINGS.withThreads(3).withSchedule(Schedule.STRIPES).withSize(16, 60).withSamplesPerPixel(2);
+        RenderSettings s = SETTINGS.withThreads(3).withStripes(true).withSize(16, 60).withSamplesPerPixel(2);
         try (RenderJob job = TestJobs.start(scene, s, rows, new RenderListener() {})) {
             RenderStats stats = job.awaitStats();
             assertThat(stats.threadIdleSeconds()).isGreaterThanOrEqualTo(0);
@@ -99,12 +96,12 @@ class TeachingOptionsTest {
     @Test
     void oneThreadNeverWaitsAndStripesOnUnevenWorkDo() throws Exception {
         Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
-        try (RenderJob job = RenderJob.start(scene, SETTINGS.withThreads(1).withSchedule(Schedule.STRIPES))) {
+        try (RenderJob job = RenderJob.start(scene, SETTINGS.withThreads(1).withStripes(true))) {
             assertThat(job.awaitStats().threadIdleSeconds()).isZero();
         }
         // The Cornell Box from its camera: the top stripe (ceiling, light) and the bottom one (floor,
         // boxes) cost different amounts, so with two stripes one thread waits for the other.
-        try (RenderJob job = RenderJob.start(scene, SETTINGS.withThreads(2).withSchedule(Schedule.STRIPES))) {
+        try (RenderJob job = RenderJob.start(scene, SETTINGS.withThreads(2).withStripes(true))) {
             assertThat(job.awaitStats().threadIdleSeconds()).isPositive();
         }
     }
