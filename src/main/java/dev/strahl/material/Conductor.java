@@ -129,6 +129,7 @@ public record Conductor(Rgb eta, Rgb k, Texture alpha) implements Bsdf {
             return false;
         }
         out.delta = false;
+        out.eta = 1;
         out.pdf = Ggx.visiblePdf(wo, mx, my, mz, a) / (4 * woDotM);
         if (!(out.pdf > 0) || !Double.isFinite(out.pdf)) {
             return false;

@@ -189,6 +189,7 @@ public record Principled(Texture baseColor, Texture metallic, Texture roughness,
             }
         }
         out.delta = false;
+        out.eta = 1;
         out.pdf = pdf(uv, wo, out.wi);
         if (!(out.pdf > 0) || !Double.isFinite(out.pdf)) {
             return false;

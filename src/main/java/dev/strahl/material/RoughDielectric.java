@@ -128,6 +128,7 @@ public record RoughDielectric(double eta, Texture alpha) implements Bsdf {
             if (!(out.wi.z * wo.z() > 0)) {
                 return false;
             }
+            out.eta = 1;
         } else {
             if (Fresnel.refract(wo, mx, my, mz, eta, out.wi) == 0) {
                 return false;                          // F = 1 there, so uc < F always held: cannot happen
@@ -136,6 +137,7 @@ public record RoughDielectric(double eta, Texture alpha) implements Bsdf {
             if (!(out.wi.z * wo.z() < 0)) {
                 return false;
             }
+            out.eta = Fresnel.relativeEta(wo.z(), eta);   // the roulette undoes the radiance's 1/η'² (BsdfSample.eta)
         }
         out.delta = false;
         out.pdf = pdf(uv, wo, out.wi);

@@ -35,6 +35,7 @@ public record SmoothConductor(Rgb eta, Rgb k) implements DeltaBsdf {
         out.weight.set(Fresnel.conductor(c, eta.r(), k.r()), Fresnel.conductor(c, eta.g(), k.g()), Fresnel.conductor(c, eta.b(), k.b()));
         out.pdf = 1;
         out.delta = true;
+        out.eta = 1;
         return true;
     }
 
