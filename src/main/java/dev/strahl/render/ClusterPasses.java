@@ -86,7 +86,7 @@ final class ClusterPasses implements PassRunner {
         int h = Math.min(Film.TILE, film.height() - y0);
         int[] counts = new int[w * h];
         double[] sums = new double[3 * w * h];
-        double[] rgb = new double[3];
+        double[] rgb = new double[film.stateSums()];   // r, g, b first; a unit carries those (no variance, no features)
         boolean any = false;
         for (int ty = 0; ty < h; ty++) {
             for (int tx = 0; tx < w; tx++) {
