@@ -175,7 +175,8 @@ class ClusterTest {
         }
         assertThat(image.rgb()).as("after a kill -9 and a late joiner").isEqualTo(reference.rgb());
         assertThat(w2.unitsRendered()).isEqualTo(before);         // it never said it finished
-        late.await("finished: [1-9]\\d* units rendered here", 30);   // the late joiner took part
+        // the late joiner took part; it may hear this JVM leave before the job's end (then it says "dropped")
+        late.await("(finished|its coordinator left): [1-9]\\d* units rendered here", 30);
     }
 
     @Test
