@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import dev.strahl.io.image.ChannelImage;
 import dev.strahl.io.image.ImageFormatException;
+import dev.strahl.testing.Bytes;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
@@ -207,7 +208,7 @@ class ExrRoundTripTest {
     void anAbsurdDataWindowIsRefusedBeforeAllocating() throws IOException {
         byte[] ok = Files.readAllBytes(written(ExrCompression.ZIP));
         byte[] huge = ok.clone();
-        int at = indexOf(huge, "dataWindow\0box2i\0".getBytes(java.nio.charset.StandardCharsets.US_ASCII)) + 17 + 4;
+        int at = Bytes.indexOf(huge, "dataWindow\0box2i\0".getBytes(java.nio.charset.StandardCharsets.US_ASCII)) + 17 + 4;
         ByteBuffer.wrap(huge).order(ByteOrder.LITTLE_ENDIAN).putInt(at + 8, 2_000_000_000).putInt(at + 12, 1);
         assertThatThrownBy(() -> ExrReader.read(withBytes(huge))).isInstanceOf(ImageFormatException.class)
                 .hasMessageContaining("more than this " + huge.length + "-byte file can hold with ZIP compression");
@@ -216,18 +217,5 @@ class ExrRoundTripTest {
                 .hasMessageContaining("the file is truncated: the data window (0, 0) - (29, 2000000000) needs 125000001 chunks");
         ByteBuffer.wrap(huge).order(ByteOrder.LITTLE_ENDIAN).putInt(at + 8, -5);
         assertThatThrownBy(() -> ExrReader.read(withBytes(huge))).hasMessageContaining("is empty");
-    }
-
-    private static int indexOf(byte[] hay, byte[] needle) {
-        outer:
-        for (int i = 0; i + needle.length <= hay.length; i++) {
-            for (int j = 0; j < needle.length; j++) {
-                if (hay[i + j] != needle[j]) {
-                    continue outer;
-                }
-            }
-            return i;
-        }
-        throw new AssertionError("not found");
     }
 }

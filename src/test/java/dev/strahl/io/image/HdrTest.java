@@ -3,6 +3,7 @@ package dev.strahl.io.image;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import dev.strahl.testing.Bytes;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -193,7 +194,7 @@ class HdrTest {
             }
         }
         byte[] b = Files.readAllBytes(f);
-        int data = indexOf(b, ("+X " + w + "\n").getBytes(StandardCharsets.US_ASCII)) + ("+X " + w + "\n").length();
+        int data = Bytes.indexOf(b, ("+X " + w + "\n").getBytes(StandardCharsets.US_ASCII)) + ("+X " + w + "\n").length();
         boolean rle = b[data] == 2 && b[data + 1] == 2;
         assertThat(rle).as("run-length encoded iff 8 <= width <= 32767").isEqualTo(w >= 8 && w <= 32767);
     }
@@ -265,19 +266,6 @@ class HdrTest {
     }
 
     private static int indexOf(byte[] hay, String needle) {
-        return indexOf(hay, needle.getBytes(StandardCharsets.US_ASCII));
-    }
-
-    private static int indexOf(byte[] hay, byte[] needle) {
-        outer:
-        for (int i = 0; i + needle.length <= hay.length; i++) {
-            for (int j = 0; j < needle.length; j++) {
-                if (hay[i + j] != needle[j]) {
-                    continue outer;
-                }
-            }
-            return i;
-        }
-        throw new AssertionError("not found");
+        return Bytes.indexOf(hay, needle.getBytes(StandardCharsets.US_ASCII));
     }
 }
