@@ -269,23 +269,6 @@ public final class Film {
     }
 
     /**
-     * Sets pixel (x, y) to a state saved by {@link #pixelState}: the sums of its first
-     * {@code samples} samples. Rendering then continues each pixel from the sample index it has
-     * reached, so a restored film gives the same bits as one that was never saved.
-     *
-     * @param x       column
-     * @param y       row
-     * @param samples the pixel's sample count
-     * @param r       the sum of its red values
-     * @param g       the sum of its green values
-     * @param b       the sum of its blue values
-     * @throws IllegalArgumentException if {@code samples} is negative
-     */
-    public void restorePixel(int x, int y, int samples, double r, double g, double b) {
-        restorePixel(x, y, samples, new double[] {r, g, b, 0});
-    }
-
-    /**
      * Sets pixel (x, y) to a state saved by {@link #pixelState}: {@link #stateSums()} sums in the
      * order {@code pixelState} writes them.
      *

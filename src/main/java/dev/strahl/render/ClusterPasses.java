@@ -84,15 +84,16 @@ final class ClusterPasses implements PassRunner {
         int y0 = (tile / tilesX) * Film.TILE;
         int w = Math.min(Film.TILE, film.width() - x0);
         int h = Math.min(Film.TILE, film.height() - y0);
+        int perPixel = film.stateSums();          // the film's whole per-pixel state: colour, variance, features
         int[] counts = new int[w * h];
-        double[] sums = new double[3 * w * h];
-        double[] rgb = new double[film.stateSums()];   // r, g, b first; a unit carries those (no variance, no features)
+        double[] sums = new double[perPixel * w * h];
+        double[] state = new double[perPixel];
         boolean any = false;
         for (int ty = 0; ty < h; ty++) {
             for (int tx = 0; tx < w; tx++) {
                 int i = ty * w + tx;
-                counts[i] = film.pixelState(x0 + tx, y0 + ty, rgb);
-                System.arraycopy(rgb, 0, sums, 3 * i, 3);
+                counts[i] = film.pixelState(x0 + tx, y0 + ty, state);
+                System.arraycopy(state, 0, sums, perPixel * i, perPixel);
                 any |= counts[i] < end;
             }
         }
@@ -114,10 +115,13 @@ final class ClusterPasses implements PassRunner {
             }
             double[] sums = done.sums();
             int[] counts = done.counts();
+            int perPixel = done.sumsPerPixel();
+            double[] state = new double[perPixel];
             for (int ty = 0; ty < done.height(); ty++) {
                 for (int tx = 0; tx < done.width(); tx++) {
                     int i = ty * done.width() + tx;
-                    film.restorePixel(done.x0() + tx, done.y0() + ty, counts[i], sums[3 * i], sums[3 * i + 1], sums[3 * i + 2]);
+                    System.arraycopy(sums, perPixel * i, state, 0, perPixel);
+                    film.restorePixel(done.x0() + tx, done.y0() + ty, counts[i], state);
                 }
             }
             samplesDone.addAndGet(samples);

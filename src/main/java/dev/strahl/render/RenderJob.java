@@ -70,10 +70,6 @@ public final class RenderJob implements AutoCloseable {
         this.settings = Objects.requireNonNull(settings, "settings");
         this.listener = Objects.requireNonNull(listener, "listener");
         boolean features = !settings.aovs().isEmpty();
-        if (features && cluster != null) {
-            // a work unit carries a tile's colour sums and counts, not its feature sums
-            throw new IllegalArgumentException("feature buffers (--aov, --denoise) are not rendered by a cluster yet: render them locally");
-        }
         this.film = restored != null ? restored.film() : new Film(settings.width(), settings.height(), features);
         this.integrator = Objects.requireNonNull(integrator, "integrator");
         this.scene = Objects.requireNonNull(scene, "scene");

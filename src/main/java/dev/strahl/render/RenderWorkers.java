@@ -312,18 +312,7 @@ final class RenderWorkers implements Parallel, PassRunner {
                 // a restored film may hold more samples in some pixels: they go on from there
                 int s0 = Math.max(firstSample, film.sampleCountAt(pixel));
                 rowSamples += Math.max(0, endSample - s0);
-                for (int s = s0; s < endSample; s++) {
-                    boolean finite = sample(w, cameraRays, seed, x, y, s);
-                    if (w.features != null) {
-                        film.addFeatures(pixel, w.featureValues);
-                    }
-                    if (finite) {
-                        film.add(pixel, w.radiance.r, w.radiance.g, w.radiance.b);
-                    } else {
-                        film.add(pixel, 0, 0, 0);
-                        invalid++;
-                    }
-                }
+                invalid += samplePixel(w, cameraRays, seed, film, pixel, x, y, s0, endSample);
             }
             samplesDone.addAndGet(rowSamples);
         }
@@ -338,6 +327,30 @@ final class RenderWorkers implements Parallel, PassRunner {
      *
      * @return whether the radiance is finite (otherwise the caller adds black and counts it)
      */
+    /**
+     * Samples [s0, end) of image pixel (x, y), added in index order to {@code pixel} of
+     * {@code film} (the image's film, or a cluster unit's tile): the one place a sample reaches a
+     * film, so a unit's sums are bit for bit those of a local render.
+     *
+     * @return the samples that were NaN or infinite (added as black)
+     */
+    static int samplePixel(WorkerState w, CameraRays cameraRays, long seed, Film film, int pixel, int x, int y, int s0, int end) {
+        int invalid = 0;
+        for (int s = s0; s < end; s++) {
+            boolean finite = sample(w, cameraRays, seed, x, y, s);
+            if (w.features != null) {
+                film.addFeatures(pixel, w.featureValues);
+            }
+            if (finite) {
+                film.add(pixel, w.radiance.r, w.radiance.g, w.radiance.b);
+            } else {
+                film.add(pixel, 0, 0, 0);
+                invalid++;
+            }
+        }
+        return invalid;
+    }
+
     static boolean sample(WorkerState w, CameraRays cameraRays, long seed, int x, int y, int s) {
         w.sampler.startPixelSample(x, y, s);
         w.sampler.getPixel2D(w.filmPosition);

@@ -1,6 +1,8 @@
 package dev.strahl.render;
 
 import dev.strahl.camera.CameraRays;
+import dev.strahl.film.Film;
+import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.scene.Camera;
 import dev.strahl.scene.Scene;
@@ -16,8 +18,10 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.time.Duration;
 import java.util.Arrays;
+import java.util.EnumSet;
 import java.util.Set;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.function.Supplier;
 
 /**
  * The render package's side of a cluster member: makes the renderer of a job's work units from
@@ -26,7 +30,7 @@ import java.util.concurrent.ConcurrentLinkedQueue;
  * its tile, so its sums are those of a local render.
  */
 final class UnitRenderers implements UnitService {
-    private static final int SETTINGS_FORMAT = 1;
+    private static final int SETTINGS_FORMAT = 2;
 
     @Override
     public UnitRenderer open(Scene scene, byte[] settingsBytes, byte[] digest, int threads) {
@@ -41,7 +45,9 @@ final class UnitRenderers implements UnitService {
         }
         Camera c = scene.camera();
         var rays = new CameraRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), c.aperture(), c.focusDistance(), d.settings.width(), d.settings.height());
-        return new Renderer(integrator, rays, d.settings.seed(), d.stratified);
+        World world = World.of(scene);
+        Supplier<FeatureTracer> features = d.settings.aovs().isEmpty() ? null : () -> new FeatureTracer(world, d.settings.cullBackFaces());
+        return new Renderer(integrator, features, rays, d.settings.seed(), d.stratified);
     }
 
     /** The settings and the sampler choice, as a coordinator sends them. */
@@ -70,6 +76,10 @@ final class UnitRenderers implements UnitService {
             out.writeBoolean(s.bruteForce());
             out.writeBoolean(s.stripes());
             out.writeBoolean(stratified);
+            out.writeInt(s.aovs().size());
+            for (Aov aov : s.aovs()) {
+                out.writeUTF(aov.name());
+            }
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
@@ -82,11 +92,24 @@ final class UnitRenderers implements UnitService {
             if (format != SETTINGS_FORMAT) {
                 throw new IllegalArgumentException("settings of format " + format + "; this strahl reads " + SETTINGS_FORMAT);
             }
-            var settings = new RenderSettings(in.readInt(), in.readInt(), in.readInt(), in.readInt(), in.readLong(), in.readInt(),
-                    HemisphereSampling.valueOf(in.readUTF()), in.readBoolean(), in.readInt(), IntegratorKind.valueOf(in.readUTF()),
-                    in.readInt(), Duration.ofNanos(in.readLong()), new PhotonParameters(in.readInt(), in.readDouble()),
-                    in.readBoolean(), in.readBoolean(), Set.of());   // a cluster renders no feature buffers (RenderJob refuses them)
-            return new Decoded(settings, in.readBoolean());
+            int width = in.readInt(), height = in.readInt(), spp = in.readInt(), depth = in.readInt();
+            long seed = in.readLong();
+            int threads = in.readInt();
+            var hemisphere = HemisphereSampling.valueOf(in.readUTF());
+            boolean cull = in.readBoolean();
+            int perPass = in.readInt();
+            var kind = IntegratorKind.valueOf(in.readUTF());
+            int lightSamples = in.readInt();
+            var timeLimit = Duration.ofNanos(in.readLong());
+            var photons = new PhotonParameters(in.readInt(), in.readDouble());
+            boolean bruteForce = in.readBoolean(), stripes = in.readBoolean(), stratified = in.readBoolean();
+            Set<Aov> aovs = EnumSet.noneOf(Aov.class);
+            for (int n = in.readInt(); n > 0; n--) {
+                aovs.add(Aov.valueOf(in.readUTF()));
+            }
+            var settings = new RenderSettings(width, height, spp, depth, seed, threads, hemisphere, cull, perPass, kind, lightSamples,
+                    timeLimit, photons, bruteForce, stripes, aovs);
+            return new Decoded(settings, stratified);
         } catch (IOException e) {
             throw new IllegalArgumentException("unreadable settings: " + e.getMessage(), e);
         }
@@ -95,13 +118,15 @@ final class UnitRenderers implements UnitService {
     /** Renders units on any thread; each thread takes a worker (integrator scratch and sampler) from a pool. */
     private static final class Renderer implements UnitRenderer {
         private final Integrator integrator;
+        private final Supplier<FeatureTracer> features;
         private final CameraRays rays;
         private final long seed;
         private final boolean stratified;
         private final ConcurrentLinkedQueue<RenderWorkers.WorkerState> idle = new ConcurrentLinkedQueue<>();
 
-        Renderer(Integrator integrator, CameraRays rays, long seed, boolean stratified) {
+        Renderer(Integrator integrator, Supplier<FeatureTracer> features, CameraRays rays, long seed, boolean stratified) {
             this.integrator = integrator;
+            this.features = features;
             this.rays = rays;
             this.seed = seed;
             this.stratified = stratified;
@@ -111,34 +136,31 @@ final class UnitRenderers implements UnitService {
         public void render(WorkUnit unit) {
             RenderWorkers.WorkerState w = idle.poll();
             if (w == null) {
-                w = new RenderWorkers.WorkerState(0, integrator.newWorker(), RenderWorkers.newSampler(stratified, seed), null);
+                w = new RenderWorkers.WorkerState(0, integrator.newWorker(), RenderWorkers.newSampler(stratified, seed),
+                        features != null ? features.get() : null);
             }
             try {
                 long raysBefore = w.integrator.rayCount();
+                // the unit's state in a film of its own, so that samples reach it as they reach the image's film
+                Film tile = new Film(unit.width(), unit.height(), features != null);
+                int perPixel = unit.sumsPerPixel();
+                if (perPixel != tile.stateSums()) {
+                    throw new IllegalArgumentException("a unit of " + perPixel + " sums per pixel for a film of " + tile.stateSums());
+                }
                 int[] counts = unit.counts();
                 double[] sums = unit.sums();
-                int end = unit.endSample();
+                double[] state = new double[perPixel];
                 int invalid = 0;
                 for (int ty = 0; ty < unit.height(); ty++) {
                     for (int tx = 0; tx < unit.width(); tx++) {
                         int i = ty * unit.width() + tx;
-                        int x = unit.x0() + tx;
-                        int y = unit.y0() + ty;
-                        int k = 3 * i;
-                        // as RenderWorkers.renderTiles and Film.add: each sample added to the sums in index order
-                        for (int s = Math.max(unit.firstSample(), counts[i]); s < end; s++) {
-                            if (RenderWorkers.sample(w, rays, seed, x, y, s)) {
-                                sums[k] += w.radiance.r;
-                                sums[k + 1] += w.radiance.g;
-                                sums[k + 2] += w.radiance.b;
-                            } else {
-                                sums[k] += 0;
-                                sums[k + 1] += 0;
-                                sums[k + 2] += 0;
-                                invalid++;
-                            }
-                            counts[i]++;
-                        }
+                        System.arraycopy(sums, perPixel * i, state, 0, perPixel);
+                        tile.restorePixel(tx, ty, counts[i], state);
+                        int s0 = Math.max(unit.firstSample(), counts[i]);
+                        invalid += RenderWorkers.samplePixel(w, rays, seed, tile, tile.pixelIndex(tx, ty), unit.x0() + tx, unit.y0() + ty,
+                                s0, unit.endSample());
+                        counts[i] = tile.pixelState(tx, ty, state);
+                        System.arraycopy(state, 0, sums, perPixel * i, perPixel);
                     }
                 }
                 unit.recordFigures(invalid, w.integrator.rayCount() - raysBefore);

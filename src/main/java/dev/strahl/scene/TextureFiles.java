@@ -1,6 +1,7 @@
 package dev.strahl.scene;
 
 import dev.strahl.io.image.ChannelImage;
+import dev.strahl.io.image.FileReads;
 import dev.strahl.io.image.TextureImages;
 import dev.strahl.texture.Bitmap;
 import java.io.IOException;
@@ -32,6 +33,7 @@ final class TextureFiles {
             WeakReference<Bitmap> ref = CACHE.get(key);
             Bitmap cached = ref == null ? null : ref.get();
             if (cached != null) {
+                FileReads.note(file);        // read once, but still a file of this scene (a cluster ships what is noted)
                 return cached;
             }
         }

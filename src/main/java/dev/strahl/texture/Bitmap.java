@@ -16,6 +16,7 @@ public final class Bitmap {
     private final int width, height, channels;
     final float[] data;          // package-private for ImageTexture's lookups
     private final boolean decoded;
+    private final long contentHash;
     private volatile Bitmap srgbDecoded;
 
     private Bitmap(String name, int width, int height, int channels, float[] data, boolean decoded) {
@@ -32,6 +33,19 @@ public final class Bitmap {
         this.channels = channels;
         this.data = data;
         this.decoded = decoded;
+        this.contentHash = hash(width, height, channels, data);
+    }
+
+    /** 64-bit FNV-1a over the size and every sample's bits: what identifies the pixels in a scene's digest. */
+    private static long hash(int width, int height, int channels, float[] data) {
+        long h = 0xcbf29ce484222325L;
+        h = (h ^ width) * 0x100000001b3L;
+        h = (h ^ height) * 0x100000001b3L;
+        h = (h ^ channels) * 0x100000001b3L;
+        for (float v : data) {
+            h = (h ^ Float.floatToRawIntBits(v)) * 0x100000001b3L;
+        }
+        return h;
     }
 
     /**
@@ -80,6 +94,15 @@ public final class Bitmap {
 
     public String name() {
         return name;
+    }
+
+    /**
+     * A hash of the size and the samples: two bitmaps with other pixels differ in it (as far as
+     * a 64-bit hash can tell), whatever their names; a checkpoint and a cluster job identify a
+     * scene's textures by it.
+     */
+    public long contentHash() {
+        return contentHash;
     }
 
     public int width() {

@@ -117,7 +117,7 @@ public record ImageTexture(Bitmap bitmap, Wrap wrap, UvTransform transform, Chan
 
     @Override
     public String toString() {
-        return "ImageTexture[" + bitmap.name() + (wrap != Wrap.REPEAT ? ", " + wrap : "") + (transform.isIdentity() ? "" : ", " + transform)
+        return "ImageTexture[" + bitmap.name() + String.format("@%016x", bitmap.contentHash()) + (wrap != Wrap.REPEAT ? ", " + wrap : "") + (transform.isIdentity() ? "" : ", " + transform)
                 + (channel != Channel.LUMINANCE ? ", " + channel : "") + "]";
     }
 }

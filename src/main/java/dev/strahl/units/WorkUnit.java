@@ -7,19 +7,22 @@ import java.util.Arrays;
 
 /**
  * One piece of a cluster render: samples [{@code firstSample}, {@code endSample}) of the pixels of
- * one tile, with the state those pixels had before (their sample counts and r, g, b sums). A
+ * one tile, with the state those pixels had before (their sample counts and the film's sums: r, g,
+ * b, squared luminance and, with feature buffers, the feature sums). A
  * member renders it by going on from that state, adding each pixel's samples in index order, and
  * sends the same unit back with the new state. So a unit's result is the very sums the local
  * render holds after the same samples, and the coordinator merges it by replacing the tile's
  * state: no floating-point sum is ever split and re-added in another order.
  *
- * <p>Wire form (big-endian): int x0, y0, width, height, firstSample, endSample; int invalid
- * samples, long rays (both 0 on the way out); then either int -1 and one count for every pixel,
- * or the count of every pixel; then r, g, b sums as doubles, pixel by pixel, row by row.
+ * <p>Wire form (big-endian): int x0, y0, width, height, firstSample, endSample, sums per pixel;
+ * int invalid samples, long rays (both 0 on the way out); then either int -1 and one count for
+ * every pixel, or the count of every pixel; then the sums as doubles, pixel by pixel, row by row.
  */
 public final class WorkUnit {
     /** Largest tile edge a unit may have (a check on what arrives from the network). */
     public static final int MAX_EDGE = 256;
+    /** Most sums a pixel may carry (a check on what arrives from the network). */
+    public static final int MAX_SUMS = 16;
 
     private final int x0;
     private final int y0;
@@ -29,6 +32,7 @@ public final class WorkUnit {
     private final int endSample;
     private final int[] counts;
     private final double[] sums;
+    private final int sumsPerPixel;
     private int invalidSamples;
     private long rays;
 
@@ -42,7 +46,7 @@ public final class WorkUnit {
      * @param firstSample the first sample index to render
      * @param endSample   one past the last sample index
      * @param counts      per pixel, row by row within the tile: the samples it holds
-     * @param sums        per pixel: r, g, b sums
+     * @param sums        per pixel, the same number of sums each (r, g, b first; at most {@value #MAX_SUMS})
      */
     public WorkUnit(int x0, int y0, int width, int height, int firstSample, int endSample, int[] counts, double[] sums) {
         if (width <= 0 || height <= 0 || width > MAX_EDGE || height > MAX_EDGE || x0 < 0 || y0 < 0) {
@@ -51,9 +55,11 @@ public final class WorkUnit {
         if (firstSample < 0 || endSample < firstSample) {
             throw new IllegalArgumentException("bad unit sample range " + firstSample + ".." + endSample);
         }
-        if (counts.length != width * height || sums.length != 3 * width * height) {
+        int pixels = width * height;
+        if (counts.length != pixels || sums.length % pixels != 0 || sums.length < 3 * pixels || sums.length > MAX_SUMS * pixels) {
             throw new IllegalArgumentException("unit arrays do not fit its tile");
         }
+        this.sumsPerPixel = sums.length / pixels;
         this.x0 = x0;
         this.y0 = y0;
         this.width = width;
@@ -93,9 +99,14 @@ public final class WorkUnit {
         return counts;
     }
 
-    /** Per pixel of the tile: r, g, b sums (the renderer updates them in place). */
+    /** Per pixel of the tile, {@link #sumsPerPixel()} sums each (the renderer updates them in place). */
     public double[] sums() {
         return sums;
+    }
+
+    /** How many sums each pixel carries: the film's per-pixel state. */
+    public int sumsPerPixel() {
+        return sumsPerPixel;
     }
 
     /** Samples of this unit that were NaN or infinite (added as black). */
@@ -131,7 +142,7 @@ public final class WorkUnit {
     /** Bytes of the wire form. */
     public int wireSize() {
         boolean uniform = uniformCount() >= 0;
-        return 7 * 4 + 8 + (uniform ? 8 : 4 * counts.length) + 8 * sums.length;
+        return 8 * 4 + 8 + (uniform ? 8 : 4 * counts.length) + 8 * sums.length;
     }
 
     private int uniformCount() {
@@ -154,7 +165,8 @@ public final class WorkUnit {
         int uniform = uniformCount();
         byte[] bytes = new byte[headroom + wireSize()];
         ByteBuffer b = ByteBuffer.wrap(bytes, headroom, bytes.length - headroom);
-        b.putInt(x0).putInt(y0).putInt(width).putInt(height).putInt(firstSample).putInt(endSample).putInt(invalidSamples).putLong(rays);
+        b.putInt(x0).putInt(y0).putInt(width).putInt(height).putInt(firstSample).putInt(endSample).putInt(sumsPerPixel)
+                .putInt(invalidSamples).putLong(rays);
         if (uniform >= 0) {
             b.putInt(-1).putInt(uniform);
         } else {
@@ -182,10 +194,11 @@ public final class WorkUnit {
             int h = b.getInt();
             int first = b.getInt();
             int end = b.getInt();
+            int perPixel = b.getInt();
             int invalid = b.getInt();
             long rays = b.getLong();
-            if (w <= 0 || h <= 0 || w > MAX_EDGE || h > MAX_EDGE) {
-                throw new IOException("not a work unit (tile " + w + "x" + h + ")");
+            if (w <= 0 || h <= 0 || w > MAX_EDGE || h > MAX_EDGE || perPixel < 3 || perPixel > MAX_SUMS) {
+                throw new IOException("not a work unit (tile " + w + "x" + h + ", " + perPixel + " sums per pixel)");
             }
             int[] counts = new int[w * h];
             int c0 = b.getInt(b.position());
@@ -196,7 +209,7 @@ public final class WorkUnit {
                 b.asIntBuffer().get(counts);
                 b.position(b.position() + 4 * counts.length);
             }
-            double[] sums = new double[3 * w * h];
+            double[] sums = new double[perPixel * w * h];
             b.asDoubleBuffer().get(sums);
             WorkUnit unit = new WorkUnit(x0, y0, w, h, first, end, counts, sums);
             unit.recordFigures(invalid, rays);

@@ -9,6 +9,7 @@ import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.scene.Scene;
+import java.awt.image.BufferedImage;
 import java.io.File;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -26,6 +27,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import javax.imageio.ImageIO;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.MethodOrderer;
@@ -188,7 +190,18 @@ class ClusterTest {
         Files.createDirectories(meshes);
         Path src = Path.of("scenes");
         Files.copy(src.resolve("cornell-box.obj"), meshes.resolve("box.obj"));
-        Files.copy(src.resolve("cornell-box.mtl"), meshes.resolve("cornell-box.mtl"));
+        Path textures = dir.resolve("project/textures");
+        Files.createDirectories(textures);
+        BufferedImage checker = new BufferedImage(8, 8, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < 8; y++) {
+            for (int x = 0; x < 8; x++) {
+                checker.setRGB(x, y, (x + y) % 2 == 0 ? 0x3060c0 : 0xe0c040);
+            }
+        }
+        ImageIO.write(checker, "png", textures.resolve("checker.png").toFile());
+        // the floor takes a texture from a third folder: it must be shipped too
+        Files.writeString(meshes.resolve("cornell-box.mtl"), Files.readString(src.resolve("cornell-box.mtl"))
+                .replace("newmtl floor\n", "newmtl floor\nmap_Kd ../textures/checker.png\n"));
         String json = Files.readString(src.resolve("cornell-box.json")).replace("\"cornell-box.obj\"", "\"../meshes/box.obj\"");
         Files.writeString(scenes.resolve("box.json"), json);
         String scene = scenes.resolve("box.json").toString();
@@ -196,10 +209,10 @@ class ClusterTest {
         Run r = onCluster(scene, "box.pfm", "--spp", "4");
         assertThat(r.code()).as(r.err()).isZero();
         assertThat(Files.readAllBytes(dir.resolve("box.pfm"))).isEqualTo(local);
-        first.await("scenes/box.json \\(3 files, 3 fetched", 30);
+        first.await("scenes/box.json \\(4 files, 4 fetched", 30);
         Run again = onCluster(scene, "box2.pfm", "--spp", "4");
         assertThat(again.code()).as(again.err()).isZero();
-        first.await("scenes/box.json \\(3 files, 0 fetched", 30);
+        first.await("scenes/box.json \\(4 files, 0 fetched", 30);
         assertThat(Files.readAllBytes(dir.resolve("box2.pfm"))).isEqualTo(local);
     }
 
@@ -213,6 +226,61 @@ class ClusterTest {
         assertThat(r.code()).as(r.err()).isZero();
         assertThat(r.err()).contains("resuming");
         assertThat(Files.readAllBytes(dir.resolve("resumed.pfm"))).isEqualTo(local);
+    }
+
+    @Test
+    @Order(4)
+    void featureBuffersAndTheDenoisedImageAreBitIdenticalToo() throws Exception {
+        // the denoiser reads the variance and the feature sums: equal outputs need the film's whole per-pixel state
+        String[] opts = {"--spp", "6", "--aov", "albedo,normal,depth", "--denoise"};
+        byte[] local = local(SCENE, "dn-local.pfm", opts);
+        Run r = onCluster(SCENE, "dn-cluster.pfm", opts);
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(Files.readAllBytes(dir.resolve("dn-cluster.pfm"))).as("denoised image").isEqualTo(local);
+        for (String aov : List.of("albedo", "normal", "depth")) {
+            assertThat(Files.readAllBytes(dir.resolve("dn-cluster." + aov + ".pfm"))).as(aov)
+                    .isEqualTo(Files.readAllBytes(dir.resolve("dn-local." + aov + ".pfm")));
+        }
+    }
+
+    @Test
+    @Order(4)
+    void aTimeLimitAndCtrlCEndAClusterRenderWithTheImageSoFar() throws Exception {
+        Run limited = onCluster(SCENE, "limited.png", "--spp", "1000000", "--time-limit", "2s");
+        assertThat(limited.code()).as(limited.err()).isZero();
+        assertThat(limited.err()).containsPattern("the time limit of 2 ?s ended the render at \\d+ of 1000000 spp");
+        assertThat(dir.resolve("limited.png")).isNotEmptyFile();
+
+        int ended = count(first.text(), "job \\S+ [^:]*(finished|dropped)[^:]*:");
+        Path log = dir.resolve("interrupted.txt");
+        Path png = dir.resolve("interrupted.png");
+        Path ck = dir.resolve("interrupted.ck");
+        Process coordinator = child(log, List.of(), "render", SCENE, "-o", png.toString(), "--width", "96", "--height", "64",
+                "--spp", "1000000", "--threads", "1", "--checkpoint", ck.toString(), "--checkpoint-interval", "10ms",
+                "--cluster", "127.0.0.1:" + first.port, "--cluster-name", name, "--port", Integer.toString(freePort()));
+        try {
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+            while (!Files.exists(ck)) {                                // a pass has completed: there is something to keep
+                assertThat(coordinator.isAlive()).as(Files.readString(log)).isTrue();
+                assertThat(System.nanoTime()).as("a checkpoint is written").isLessThan(deadline);
+                Thread.sleep(50);
+            }
+            Process kill = new ProcessBuilder("kill", "-INT", Long.toString(coordinator.pid())).start();
+            assertThat(kill.waitFor(10, TimeUnit.SECONDS)).isTrue();
+            assertThat(coordinator.waitFor(60, TimeUnit.SECONDS)).as("exited").isTrue();
+            String err = Files.readString(log);
+            assertThat(coordinator.exitValue()).as(err).isEqualTo(Interrupts.SIGINT_EXIT);
+            assertThat(err).containsPattern("interrupted at \\d+ of 1000000 spp").contains("--resume " + ck).doesNotContain("Exception");
+            assertThat(png).isNotEmptyFile();
+            long deadline2 = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+            while (count(first.text(), "job \\S+ [^:]*(finished|dropped)[^:]*:") == ended) {   // the worker is done with it and stays up
+                assertThat(first.process.isAlive()).isTrue();
+                assertThat(System.nanoTime()).as("the worker ends the job: " + first.text()).isLessThan(deadline2);
+                Thread.sleep(50);
+            }
+        } finally {
+            coordinator.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+        }
     }
 
     @Test

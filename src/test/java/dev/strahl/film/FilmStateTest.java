@@ -86,10 +86,10 @@ class FilmStateTest {
         Film f = new Film(33, 2);                            // the padding of the second tile column is not a pixel
         for (int y = 0; y < 2; y++) {
             for (int x = 0; x < 33; x++) {
-                f.restorePixel(x, y, x == 32 && y == 1 ? 5 : 9, 0, 0, 0);
+                f.restorePixel(x, y, x == 32 && y == 1 ? 5 : 9, new double[4]);
             }
         }
         assertThat(f.minSampleCount()).isEqualTo(5);
-        assertThatThrownBy(() -> f.restorePixel(0, 0, -1, 0, 0, 0)).isInstanceOf(IllegalArgumentException.class);
+        assertThatThrownBy(() -> f.restorePixel(0, 0, -1, new double[4])).isInstanceOf(IllegalArgumentException.class);
     }
 }

@@ -5,13 +5,19 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import dev.strahl.scene.Camera;
 import dev.strahl.film.Film;
+import dev.strahl.scene.Material;
 import dev.strahl.scene.Scene;
+import dev.strahl.scene.Texture;
+import dev.strahl.scene.TriangleMesh;
 import dev.strahl.io.SceneLoader;
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.FileTime;
 import java.util.SplittableRandom;
 import java.util.concurrent.TimeUnit;
+import javax.imageio.ImageIO;
 import org.joml.Vector3d;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -245,6 +251,29 @@ class CheckpointTest {
         assertRefused(Checkpoint.of(moved, SETTINGS), file, "another scene");
         // the same content loaded again is the same scene
         Checkpoint.of(SceneLoader.load(Path.of("scenes/cornell-box.json")), SETTINGS).restore(file);
+    }
+
+    @Test
+    void aTextureWithOtherPixelsUnderTheSameNameIsAnotherScene() throws Exception {
+        Path png = dir.resolve("wood.png");
+        Scene first = texturedQuad(png, 0x806040);
+        Path file = dir.resolve("tex.ck");
+        Checkpoint.of(first, SETTINGS).save(file, uninterrupted, 0, 0);
+        Checkpoint.of(texturedQuad(png, 0x806040), SETTINGS).restore(file);       // same pixels: the same scene
+        assertRefused(Checkpoint.of(texturedQuad(png, 0x806041), SETTINGS), file, "another scene");
+    }
+
+    /** A quad whose albedo is a 2×2 texture of one colour, written to {@code png} first. */
+    private static Scene texturedQuad(Path png, int rgb) throws IOException {
+        BufferedImage image = new BufferedImage(2, 2, BufferedImage.TYPE_INT_RGB);
+        for (int i = 0; i < 4; i++) {
+            image.setRGB(i % 2, i / 2, rgb);
+        }
+        ImageIO.write(image, "png", png.toFile());
+        Files.setLastModifiedTime(png, FileTime.fromMillis(System.currentTimeMillis() + rgb));   // not the texture cache's entry
+        TriangleMesh quad = new TriangleMesh(new float[] {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1}, new int[] {0, 1, 2, 0, 2, 3}, null,
+                new float[] {0, 0, 1, 0, 1, 1, 0, 1});
+        return Scene.builder().addMesh(quad, Material.diffuse("wood", Texture.image(png))).build();
     }
 
     @Test

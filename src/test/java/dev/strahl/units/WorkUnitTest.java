@@ -14,7 +14,7 @@ class WorkUnitTest {
     private static WorkUnit unit(boolean uniform) {
         Random r = new Random(7);
         int[] counts = new int[32 * 20];
-        double[] sums = new double[3 * counts.length];
+        double[] sums = new double[11 * counts.length];          // colour, variance and feature sums
         for (int i = 0; i < counts.length; i++) {
             counts[i] = uniform ? 16 : 16 + r.nextInt(3);
         }
@@ -38,6 +38,7 @@ class WorkUnitTest {
             assertThat(back.height()).isEqualTo(20);
             assertThat(back.firstSample()).isEqualTo(16);
             assertThat(back.endSample()).isEqualTo(80);
+            assertThat(back.sumsPerPixel()).isEqualTo(11);
             assertThat(back.invalidSamples()).isEqualTo(3);
             assertThat(back.rays()).isEqualTo(123456789012L);
             assertThat(back.counts()).isEqualTo(u.counts());
@@ -51,7 +52,7 @@ class WorkUnitTest {
     @Test
     void samplesCountsOnlyWhatPixelsLack() {
         int[] counts = {0, 5, 10, 12};
-        WorkUnit u = new WorkUnit(0, 0, 2, 2, 4, 10, counts, new double[12]);
+        WorkUnit u = new WorkUnit(0, 0, 2, 2, 4, 10, counts, new double[16]);
         assertThat(u.samples()).isEqualTo(6 + 5 + 0 + 0);
     }
 
@@ -68,5 +69,10 @@ class WorkUnitTest {
         backwards[23] = 0;
         assertThatThrownBy(() -> WorkUnit.decode(backwards, 0)).isInstanceOf(IOException.class);
         assertThatThrownBy(() -> new WorkUnit(0, 0, 2, 2, 0, 1, new int[3], new double[12])).isInstanceOf(IllegalArgumentException.class);
+        assertThatThrownBy(() -> new WorkUnit(0, 0, 2, 2, 0, 1, new int[4], new double[13])).as("sums not a whole number per pixel")
+                .isInstanceOf(IllegalArgumentException.class);
+        byte[] tooMany = bytes.clone();
+        tooMany[27] = 99;                                      // 99 sums per pixel
+        assertThatThrownBy(() -> WorkUnit.decode(tooMany, 0)).isInstanceOf(IOException.class);
     }
 }
