@@ -25,7 +25,6 @@ class SourceSizeTest {
             "dev/strahl/cli/RenderCommand.java", 570,
             "dev/strahl/scene/Material.java", 528,
             "dev/strahl/io/json/JsonSceneReader.java", 497,
-            "dev/strahl/cluster/HazelcastMember.java", 454,
             "dev/strahl/render/RenderJob.java", 453,
             "dev/strahl/io/obj/ObjReader.java", 441,
             "dev/strahl/accel/Bvh.java", 434,

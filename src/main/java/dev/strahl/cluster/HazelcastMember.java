@@ -10,9 +10,6 @@ import com.hazelcast.config.NetworkConfig;
 import com.hazelcast.core.Hazelcast;
 import com.hazelcast.core.HazelcastInstance;
 import com.hazelcast.core.IExecutorService;
-import dev.strahl.io.json.SceneFile;
-import dev.strahl.scene.Scene;
-import dev.strahl.scene.SceneException;
 import dev.strahl.units.ClusterBackend;
 import dev.strahl.units.JobChannel;
 import dev.strahl.units.JobSpec;
@@ -23,7 +20,6 @@ import dev.strahl.units.WorkUnit;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -36,7 +32,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
-import java.util.stream.Stream;
 
 /**
  * This process as a Hazelcast member of a render cluster. Configured for a trusted network and
@@ -120,7 +115,7 @@ public final class HazelcastMember implements ClusterBackend, MembershipListener
         return member;
     }
 
-    private static String rootMessage(Throwable e) {
+    static String rootMessage(Throwable e) {
         while (e.getCause() != null && e.getCause() != e) {
             e = e.getCause();
         }
@@ -227,6 +222,23 @@ public final class HazelcastMember implements ClusterBackend, MembershipListener
         log.accept(line);
     }
 
+    HazelcastInstance hazelcast() {
+        return hz;
+    }
+
+    /** Where this member keeps shipped files by hash, and its jobs' folders. */
+    Path cache() {
+        return cache;
+    }
+
+    UnitService service() {
+        return service;
+    }
+
+    MemberOptions options() {
+        return options;
+    }
+
     void ended(CoordinatedJob job) {
         coordinated.remove(job.id());
         served.remove(job.id());
@@ -285,66 +297,6 @@ public final class HazelcastMember implements ClusterBackend, MembershipListener
         return unit.encode(1);                     // the first byte 0: an answer with a result
     }
 
-    /** Fetches the job's description and files from its coordinator, loads the scene and opens a renderer. */
-    UnitRenderer prepare(ServedJob job) throws IOException {
-        Member coordinator = hz.getCluster().getMembers().stream().filter(m -> m.getUuid().equals(job.coordinator)).findFirst()
-                .orElseThrow(() -> new IOException("the coordinator of job " + job.id + " has left"));
-        JobFiles files = JobFiles.decode(fetch(job, coordinator, ""));
-        Files.createDirectories(cache.resolve("files"));
-        long fetched = 0;
-        int fetchedFiles = 0;
-        Path dir = cache.resolve("jobs").resolve(job.id.replaceAll("[^0-9a-z-]", "_"));
-        job.dir = dir;
-        for (var e : files.files().entrySet()) {
-            Path cached = cache.resolve("files").resolve(e.getValue());
-            if (!Files.isRegularFile(cached) || !JobFiles.hash(cached).equals(e.getValue())) {
-                byte[] content = fetch(job, coordinator, e.getValue());
-                if (!JobFiles.hash(content).equals(e.getValue())) {
-                    throw new IOException("file " + e.getKey() + " arrived damaged");
-                }
-                Path tmp = Files.createTempFile(cached.getParent(), ".fetch", ".tmp");
-                Files.write(tmp, content);
-                Files.move(tmp, cached, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-                fetched += content.length;
-                fetchedFiles++;
-            }
-            Path target = dir.resolve(e.getKey()).normalize();
-            if (!target.startsWith(dir)) {
-                throw new IOException("refused file name " + e.getKey());
-            }
-            Files.createDirectories(target.getParent());
-            Files.copy(cached, target, StandardCopyOption.REPLACE_EXISTING);
-        }
-        Scene scene;
-        try {
-            scene = SceneFile.load(dir.resolve(files.sceneFile())).scene().withCamera(files.camera());
-        } catch (SceneException e) {
-            throw new IOException("cannot load the scene here: " + e.getMessage(), e);
-        }
-        UnitRenderer renderer = service.open(scene, files.settings(), files.digest(), options.threads());
-        log.accept("job " + job.id + " from " + name(coordinator) + ": " + files.sceneFile() + " (" + files.files().size() + " files, "
-                + fetchedFiles + " fetched, " + fetched + " bytes; the others from the cache)");
-        return renderer;
-    }
-
-    private byte[] fetch(ServedJob job, Member coordinator, String hash) throws IOException {
-        try {
-            byte[] answer = hz.getExecutorService(FETCHES).submitToMember(new Tasks.Fetch(job.id, job.coordinator, VERSION, hash), coordinator)
-                    .get(120, TimeUnit.SECONDS);
-            if (!Tasks.Answers.isOk(answer)) {
-                throw new IOException(Tasks.Answers.message(answer));
-            }
-            byte[] result = new byte[answer.length - 1];
-            System.arraycopy(answer, 1, result, 0, result.length);
-            return result;
-        } catch (ExecutionException | TimeoutException e) {
-            throw new IOException("cannot fetch from the coordinator " + name(coordinator) + ": " + rootMessage(e), e);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IOException("interrupted", e);
-        }
-    }
-
     void dropJob(String id, String why) {
         ended.add(id);
         ServedJob j = served.remove(id);
@@ -354,17 +306,7 @@ public final class HazelcastMember implements ClusterBackend, MembershipListener
         if (j.renderer != null || j.failure != null) {
             log.accept("job " + id + " " + why + ": " + j.units.get() + " units rendered here");
         }
-        if (j.dir != null) {
-            deleteTree(j.dir);
-        }
-    }
-
-    private static void deleteTree(Path dir) {
-        try (Stream<Path> walk = Files.walk(dir)) {
-            walk.sorted(Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
-        } catch (IOException e) {
-            // a temporary folder: left for the system to clean
-        }
+        j.deleteFolder();
     }
 
     private void checkVersion(Member m) {
@@ -420,35 +362,5 @@ public final class HazelcastMember implements ClusterBackend, MembershipListener
         hz.shutdown();
     }
 
-    /** A job this member renders units of: its renderer, made at the first unit. */
-    static final class ServedJob {
-        final String id;
-        final UUID coordinator;
-        final AtomicLong units = new AtomicLong();
-        volatile UnitRenderer renderer;
-        volatile String failure;
-        volatile Path dir;
-        boolean local;
 
-        ServedJob(String id, UUID coordinator) {
-            this.id = id;
-            this.coordinator = coordinator;
-        }
-
-        synchronized UnitRenderer renderer(HazelcastMember member) throws IOException {
-            if (renderer == null) {
-                if (failure != null) {
-                    throw new IOException(failure);
-                }
-                try {
-                    renderer = member.prepare(this);
-                } catch (IOException | RuntimeException e) {
-                    failure = e.getMessage() != null ? e.getMessage() : e.toString();
-                    member.log("job " + id + ": " + failure);
-                    throw e;
-                }
-            }
-            return renderer;
-        }
-    }
 }

@@ -328,11 +328,9 @@ final class RenderWorkers implements Parallel, PassRunner {
      * @return whether the radiance is finite (otherwise the caller adds black and counts it)
      */
     /**
-     * Samples [s0, end) of image pixel (x, y), added in index order to {@code pixel} of
-     * {@code film} (the image's film, or a cluster unit's tile): the one place a sample reaches a
-     * film, so a unit's sums are bit for bit those of a local render.
-     *
-     * @return the samples that were NaN or infinite (added as black)
+     * Samples [s0, end) of image pixel (x, y), added in index order to {@code pixel} of {@code film}
+     * (the image's, or a cluster unit's tile): the one place a sample reaches a film. Returns the
+     * samples that were NaN or infinite (added as black).
      */
     static int samplePixel(WorkerState w, CameraRays cameraRays, long seed, Film film, int pixel, int x, int y, int s0, int end) {
         int invalid = 0;
