@@ -1,6 +1,7 @@
 package dev.strahl.io.json;
 
 import dev.strahl.image.Rgb;
+import dev.strahl.io.gltf.GltfReader;
 import dev.strahl.io.mesh.MeshFiles;
 import dev.strahl.scene.Camera;
 import dev.strahl.scene.Material;
@@ -162,7 +163,7 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
     }
 
     /**
-     * An OBJ or PLY file, as written (relative to the scene file's folder unless absolute); with
+     * An OBJ, PLY or glTF file ({@code "type": "gltf"}, never with a material), as written (relative to the scene file's folder unless absolute); with
      * a material name, every triangle is of that material, without one an OBJ uses its MTL
      * materials and a PLY the grey default.
      */
@@ -214,9 +215,20 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
         }
         Scene.Builder builder = Scene.builder();
         notes.forEach(builder::note);
+        boolean gltfCamera = false;
         for (ShapeSpec shape : shapes) {
             if (shape instanceof SphereShape s) {
                 builder.addSphere(s.center(), s.radius(), byName.get(s.material()), s.transform());
+            } else if (shape instanceof MeshShape m && GltfReader.isGltfFile(Path.of(m.file()))) {
+                // a glTF asset's camera and lights are used only where the scene has none of its own
+                GltfReader.Asset asset = GltfReader.add(folder.resolve(m.file()), m.transform(), builder);
+                if (camera == null && asset.camera() != null && !gltfCamera) {
+                    builder.camera(asset.camera());
+                    gltfCamera = true;
+                }
+                if (environment == null && byName.values().stream().noneMatch(Material::isEmissive)) {
+                    GltfReader.addLights(asset, builder);
+                }
             } else if (shape instanceof MeshShape m) {
                 Material material = m.material() == null ? null : byName.get(m.material());
                 MeshFiles.add(folder.resolve(m.file()), material, m.transform(), builder);
