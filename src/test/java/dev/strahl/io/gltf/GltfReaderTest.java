@@ -314,4 +314,16 @@ class GltfReaderTest {
         GltfReader.add(file, Transform.translation(0, 3, 0), b);
         assertThat(triangles(b.build())).allMatch(t -> t.contains("(0.000 3.000 0.000)") || t.contains("(1.000 3.000 0.000)"));
     }
+
+    @Test
+    void theFuzzSeedsLoad() throws Exception {
+        for (byte[] seed : GltfFuzzSeeds.glb()) {
+            Scene scene = SceneLoader.load(java.nio.file.Files.write(dir.resolve("seed.glb"), seed));
+            assertThat(World.of(scene).geometry().triangleCount()).isPositive();
+        }
+        for (byte[] seed : GltfFuzzSeeds.gltf()) {
+            Scene scene = SceneLoader.load(java.nio.file.Files.write(dir.resolve("seed.gltf"), seed));
+            assertThat(World.of(scene).geometry().triangleCount()).isPositive();
+        }
+    }
 }
