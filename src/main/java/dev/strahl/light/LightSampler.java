@@ -33,6 +33,11 @@ import org.joml.Vector3dc;
  * {@link Geometry#samplePoint} (the one sampling of a primitive); the density per unit area is
  * thus mean(Le) / total power for every emitter, which lets {@link #pdf} work from the material
  * alone. Lights are one-sided: they emit into the hemisphere of their geometric normal.
+ * A textured emitter ({@link Emission}) is chosen by area × its mean over the texture, and its
+ * point uniformly by area like any other: the sample carries Le at the point's (u, v), which is
+ * unbiased whatever the texture (it is not importance-sampled within the texture), and the
+ * density stays a function of the material, as the MIS weights of hit emitters need; a point
+ * in the emitter's alpha cut-out carries Le = 0.
  * Immutable and thread-safe.
  */
 public final class LightSampler {
@@ -45,18 +50,27 @@ public final class LightSampler {
     private final double pArea;          // 1 - pEnvironment
     private final double pEnvironmentAlone;  // the same for light sampling alone, where a constant environment counts too
     private final double pAreaAlone;
-    private final Rgb[] emission;        // per material: the caller's table, not a copy
+    private final Emission[] emission;   // per material: the caller's table, not a copy
     private final int[] prims;           // emissive primitives
     private final double[] cdf;          // cumulative power, cdf[last] = 1
     private final double totalPower;     // sum of area × mean(Le)
     private final double[] density;      // per material: mean(Le) / total power, the density per unit area
 
     /**
-     * @param emissionByMaterial emitted radiance of each material index (black = not a light); kept,
-     *                           not copied (the world's one table), so it must not change afterwards
+     * @param emissionByMaterial emitted radiance of each material index (black = not a light)
      * @param environment        the light from where rays leave the scene (black: none)
      */
     public LightSampler(Geometry geometry, Rgb[] emissionByMaterial, Environment environment) {
+        this(geometry, constants(emissionByMaterial), environment);
+    }
+
+    /**
+     * @param emissionByMaterial emission of each material index (black = not a light), constant or
+     *                           textured; kept, not copied (the world's one table), so it must not
+     *                           change afterwards
+     * @param environment        the light from where rays leave the scene (black: none)
+     */
+    public LightSampler(Geometry geometry, Emission[] emissionByMaterial, Environment environment) {
         this.geometry = geometry;
         this.environment = environment;
         this.emission = emissionByMaterial;
@@ -122,14 +136,23 @@ public final class LightSampler {
         return totalPower;
     }
 
-    /** The emitted radiance of a material, black if it is not a light. */
-    public Rgb emission(int material) {
+    /** The emission of a material, {@link Emission#BLACK} if it is not a light. */
+    public Emission emission(int material) {
         return emission[material];
     }
 
+    /** Selection weight per unit area: the mean radiance's channel mean (over the texture for a textured emitter). */
     private double weight(int material) {
-        Rgb le = emission[material];
+        Rgb le = emission[material].mean();
         return (le.r() + le.g() + le.b()) / 3;
+    }
+
+    private static Emission[] constants(Rgb[] radiance) {
+        Emission[] out = new Emission[radiance.length];
+        for (int m = 0; m < out.length; m++) {
+            out[m] = Emission.of(radiance[m]);
+        }
+        return out;
     }
 
     /**
@@ -177,7 +200,7 @@ public final class LightSampler {
         }
         out.distance = dist;
         out.pdf = pArea * density[m] * dist * dist / cosLight;
-        out.radiance.set(emission[m]);
+        emission[m].eval(scratch.uv, out.radiance);
         return out.pdf > 0 && Double.isFinite(out.pdf);
     }
 

@@ -96,7 +96,7 @@ final class PhotonSource {
             SurfacePoint.offset(point.p, point.ng, dir, ray.o);
             ray.d.set(dir);
             ray.tMax = Double.POSITIVE_INFINITY;
-            flux.set(lights.emission(point.material)).mul(Math.PI / (pA * lightProbability));
+            lights.emission(point.material).eval(point.uv, flux).mul(Math.PI / (pA * lightProbability));
             return false;
         }
         sampler.get2D(u);

@@ -7,8 +7,10 @@ import dev.strahl.geometry.MeshTopology;
 import dev.strahl.geometry.Sphere;
 import dev.strahl.image.Image;
 import dev.strahl.image.Rgb;
+import dev.strahl.light.Emission;
 import dev.strahl.light.Environment;
 import dev.strahl.material.Bsdf;
+import dev.strahl.world.SurfaceMaps;
 import dev.strahl.world.World;
 import java.util.ArrayList;
 import java.util.IdentityHashMap;
@@ -322,10 +324,13 @@ public final class Scene {
         public Scene build() {
             Geometry g = geometry.build();
             Bsdf[] bsdfs = new Bsdf[materials.size()];
-            Rgb[] emission = new Rgb[materials.size()];
+            Emission[] emission = new Emission[materials.size()];
+            SurfaceMaps[] maps = new SurfaceMaps[materials.size()];
             for (int i = 0; i < bsdfs.length; i++) {
-                bsdfs[i] = materials.get(i).bsdf();
-                emission[i] = materials.get(i).emission();
+                Surface surface = materials.get(i).surface();
+                bsdfs[i] = surface.bsdf();
+                emission[i] = surface.emissionTable();
+                maps[i] = surface.maps();
             }
             Environment env = environment;
             boolean studio = false;
@@ -333,7 +338,7 @@ public final class Scene {
                 studio = !anyEmits(g, emission);
                 env = studio ? StudioSky.environment() : Environment.BLACK;
             }
-            World world = World.build(g, bsdfs, emission, env);
+            World world = World.build(g, bsdfs, emission, maps, env);
             Aabb bounds = world.bounds();
             // A bare model (no light) is an object: shown from above at three quarters. A scene with
             // its own lights is often a room made to be seen from its open front (the Cornell Box): +Z.
@@ -341,7 +346,7 @@ public final class Scene {
             return new Scene(world, List.copyOf(materials), cam, List.copyOf(notes), studio, camera == null);
         }
 
-        private static boolean anyEmits(Geometry g, Rgb[] emission) {
+        private static boolean anyEmits(Geometry g, Emission[] emission) {
             for (int prim = 0; prim < g.primitiveCount(); prim++) {
                 if (!emission[g.material(prim)].isBlack()) {
                     return true;
