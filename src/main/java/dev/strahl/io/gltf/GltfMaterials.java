@@ -10,7 +10,8 @@ import java.util.Map;
 /**
  * glTF materials as strahl's {@code principled} material (glTF's own BRDF): pbrMetallicRoughness
  * (factors or textures), emission (emissiveFactor × KHR_materials_emissive_strength),
- * KHR_materials_specular, _transmission and _ior. Where a texture and a factor other than 1 are
+ * KHR_materials_specular, _transmission and _ior; normalTexture as a normal map, alphaMode MASK
+ * (and BLEND, as MASK) as an alpha cut-out. Where a texture and a factor other than 1 are
  * both given, the texture is used and the factor ignored with a note (strahl's parameters are a
  * value or a texture). Everything is two-sided ({@code doubleSided} makes no difference).
  */
@@ -47,9 +48,11 @@ final class GltfMaterials {
 
     private Material build(GltfJson m, String name) throws SceneException {
         Material.PrincipledBuilder b = Material.principled(name);
+        double baseAlpha = 1;
         GltfJson pbr = m.get("pbrMetallicRoughness");
         if (pbr != null) {
             double[] base = pbr.numbers("baseColorFactor", 4, new double[] {1, 1, 1, 1});
+            baseAlpha = base[3];
             Texture baseTexture = texture(pbr, "baseColorTexture", name);
             if (baseTexture != null) {
                 b.baseColor(baseTexture);
@@ -80,10 +83,17 @@ final class GltfMaterials {
                 throw es.error("emissiveStrength must be >= 0, got " + strength);
             }
         }
-        if (m.has("emissiveTexture")) {
-            doc.noteOnce("warning: emissiveTexture is not supported yet: " + m.path + " emits its emissiveFactor");
+        Texture emissiveTexture = texture(m, "emissiveTexture", name);
+        if (emissiveTexture != null) {
+            // strahl's textured emission is colour(u, v) × strength: a grey factor folds into the strength
+            double factor = Math.max(emissive[0], Math.max(emissive[1], emissive[2]));
+            if (emissive[0] != emissive[1] || emissive[1] != emissive[2]) {
+                doc.noteOnce(m.path + ": the colour of emissiveFactor with an emissiveTexture is not supported: its largest channel is used");
+            }
+            b.emission(emissiveTexture, strength * factor);
+        } else {
+            b.emission(new Rgb(emissive[0], emissive[1], emissive[2]), strength);
         }
-        b.emission(new Rgb(emissive[0], emissive[1], emissive[2]), strength);
         specular(m, b, name);
         GltfJson tr = GltfTextures.extension(m, "KHR_materials_transmission");
         if (tr != null) {
@@ -105,17 +115,48 @@ final class GltfMaterials {
                 b.ior(value);
             }
         }
-        if (m.has("normalTexture")) {
-            doc.noteOnce("warning: normalTexture is not supported yet: " + m.path + " is shaded with its mesh normals");
+        Material material = b.build();
+        GltfJson normal = m.get("normalTexture");
+        Texture normalMap = texture(m, "normalTexture", name);
+        if (normalMap != null) {
+            double scale = normal.number("scale", 1);
+            material = material.withNormalMap(normalMap.linear(), scale);
         }
+        return alphaCutout(m, material, baseAlpha, name);
+    }
+
+    /**
+     * alphaMode MASK: absent where baseColorTexture.alpha × baseColorFactor.alpha &lt; alphaCutoff,
+     * written as texture.alpha &lt; cutoff / factor; BLEND is treated as MASK at 0.5, with a note.
+     */
+    private Material alphaCutout(GltfJson m, Material material, double factor, String name) throws SceneException {
         String alpha = m.string("alphaMode", "OPAQUE");
         if (!alpha.equals("OPAQUE") && !alpha.equals("MASK") && !alpha.equals("BLEND")) {
             throw m.get("alphaMode").error("unknown alphaMode '" + alpha + "' (known: OPAQUE, MASK, BLEND)");
         }
-        if (!alpha.equals("OPAQUE")) {
-            doc.noteOnce("warning: alphaMode " + alpha + " is not supported yet: " + m.path + " is opaque");
+        if (alpha.equals("OPAQUE")) {
+            return material;
         }
-        return b.build();
+        double cutoff = 0.5;
+        if (alpha.equals("BLEND")) {
+            doc.noteOnce("alphaMode BLEND is rendered as MASK with alphaCutoff 0.5 (" + m.path + ")");
+        } else {
+            cutoff = m.number("alphaCutoff", 0.5);
+            if (!(cutoff >= 0) || !Double.isFinite(cutoff)) {
+                throw m.get("alphaCutoff").error("must be >= 0, got " + cutoff);
+            }
+        }
+        unit(m, "baseColorFactor", factor);
+        GltfJson pbr = m.get("pbrMetallicRoughness");
+        Texture base = pbr == null ? null : texture(pbr, "baseColorTexture", name);
+        if (cutoff == 0) {
+            return material;                             // alpha < 0 nowhere
+        }
+        if (base == null || !base.hasAlpha()) {
+            return material.withAlphaCutout(Texture.constant(factor < cutoff ? 0 : 1), 0.5);
+        }
+        double scaled = cutoff / factor;                  // alpha × factor < cutoff ⇔ alpha < cutoff / factor
+        return scaled > 1 ? material.withAlphaCutout(Texture.constant(0), 0.5) : material.withAlphaCutout(base.alpha(), scaled);
     }
 
     private void specular(GltfJson m, Material.PrincipledBuilder b, String name) throws SceneException {

@@ -153,13 +153,47 @@ class GltfMaterialsTest {
         assertThat(p.metallic().value(0.5, 0.25)).isCloseTo(0, within(1e-6));
     }
 
+    /** A 2×1 RGBA PNG: opaque white, then transparent black. */
+    static byte[] halfTransparent() throws Exception {
+        BufferedImage img = new BufferedImage(2, 1, BufferedImage.TYPE_INT_ARGB);
+        img.setRGB(0, 0, 0xFFFFFFFF);
+        img.setRGB(1, 0, 0x00000000);
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ImageIO.write(img, "png", out);
+        return out.toByteArray();
+    }
+
     @Test
-    void whatIsNotSupportedYetIsNoted() throws Exception {
-        GltfWriter w = textured(map("alphaMode", "MASK", "normalTexture", map("index", 0), "doubleSided", true));
-        w.add("images", map("uri", "data:image/png;base64," + Base64.getEncoder().encodeToString(redOverGreen())));
-        w.add("textures", map("source", 0));
-        Scene scene = SceneLoader.load(w.writeGlb(dir.resolve("later.glb")));
-        assertThat(scene.notes()).anyMatch(n -> n.contains("alphaMode MASK"));
-        assertThat(scene.notes()).anyMatch(n -> n.contains("normalTexture"));
+    void normalMapsAlphaMasksAndEmissiveTexturesUseTheMaterialMaps() throws Exception {
+        Files.write(dir.resolve("base.png"), halfTransparent());
+        Files.write(dir.resolve("normal.png"), redOverGreen());
+        Files.write(dir.resolve("glow.png"), redOverGreen());
+        GltfWriter w = textured(map("name", "leaf", "alphaMode", "MASK", "alphaCutoff", 0.25, "doubleSided", true,
+                "pbrMetallicRoughness", map("baseColorTexture", map("index", 0), "baseColorFactor", List.of(1, 1, 1, 0.5)),
+                "normalTexture", map("index", 1, "scale", 0.5), "emissiveTexture", map("index", 2), "emissiveFactor", List.of(0.5, 0.5, 0.5),
+                "extensions", map("KHR_materials_emissive_strength", map("emissiveStrength", 4))));
+        for (String f : List.of("base.png", "normal.png", "glow.png")) {
+            w.add("textures", map("source", w.add("images", map("uri", f))));
+        }
+        Scene scene = SceneLoader.load(w.writeSeparate(dir.resolve("maps.gltf"), "maps.bin"));
+        dev.strahl.scene.Texture base = dev.strahl.scene.Texture.image(dir.resolve("base.png"));
+        Material expected = Material.principled("leaf").baseColor(base)
+                .emission(dev.strahl.scene.Texture.image(dir.resolve("glow.png")), 2).build()
+                .withNormalMap(dev.strahl.scene.Texture.image(dir.resolve("normal.png")).linear(), 0.5)
+                .withAlphaCutout(base.alpha(), 0.5);           // alpha × 0.5 < 0.25 ⇔ alpha < 0.5
+        assertThat(scene.materials()).containsExactly(expected);
+    }
+
+    @Test
+    void blendIsAMaskAtOneHalfAndAConstantAlphaCutsAllOrNothing() throws Exception {
+        GltfWriter w = textured(map("name", "glass", "alphaMode", "BLEND",
+                "pbrMetallicRoughness", map("baseColorFactor", List.of(1, 1, 1, 0.25))));
+        Scene scene = SceneLoader.load(w.writeGlb(dir.resolve("blend.glb")));
+        assertThat(scene.notes()).anyMatch(n -> n.startsWith("alphaMode BLEND is rendered as MASK with alphaCutoff 0.5"));
+        assertThat(scene.materials()).containsExactly(Material.principled("glass").build()
+                .withAlphaCutout(dev.strahl.scene.Texture.constant(0), 0.5));
+        GltfWriter opaque = textured(map("name", "o", "alphaMode", "MASK", "pbrMetallicRoughness", map("baseColorFactor", List.of(1, 1, 1, 0.75))));
+        assertThat(SceneLoader.load(opaque.writeGlb(dir.resolve("mask.glb"))).materials())
+                .containsExactly(Material.principled("o").build().withAlphaCutout(dev.strahl.scene.Texture.constant(1), 0.5));
     }
 }
