@@ -34,7 +34,7 @@ final class ViewCommand implements Callable<Integer> {
     @Mixin
     TransportOptions transport;
 
-    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE", description = "Scene file: .json (strahl scene), .obj (with its .mtl) or .ply.")
+    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE", description = "Scene file: .json (strahl scene), .obj (with its .mtl), .ply, or glTF 2.0 (.gltf, .glb).")
     Path scene;
 
     @Option(names = "--width", defaultValue = "512", description = "Film width in pixels at start; resizing the window keeps the aspect (default: ${DEFAULT-VALUE}).")
