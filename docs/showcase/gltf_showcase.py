@@ -41,14 +41,19 @@ def accessor(array: np.ndarray, kind: str) -> int:
     return len(gltf["accessors"]) - 1
 
 
+_shared = {}
+
+
 def mesh(positions, normals, uvs, indices, material) -> int:
-    attributes = {"POSITION": accessor(np.asarray(positions, np.float32), "VEC3"),
-                  "NORMAL": accessor(np.asarray(normals, np.float32), "VEC3")}
-    if uvs is not None:
-        attributes["TEXCOORD_0"] = accessor(np.asarray(uvs, np.float32), "VEC2")
-    gltf["meshes"].append({"primitives": [{"attributes": attributes,
-                                           "indices": accessor(np.asarray(indices, np.uint32).ravel(), "SCALAR"),
-                                           "material": material}]})
+    key = id(positions)                                # meshes of the same arrays share their accessors
+    if key not in _shared:
+        attributes = {"POSITION": accessor(np.asarray(positions, np.float32), "VEC3"),
+                      "NORMAL": accessor(np.asarray(normals, np.float32), "VEC3")}
+        if uvs is not None:
+            attributes["TEXCOORD_0"] = accessor(np.asarray(uvs, np.float32), "VEC2")
+        _shared[key] = (attributes, accessor(np.asarray(indices, np.uint32).ravel(), "SCALAR"))
+    attributes, index = _shared[key]
+    gltf["meshes"].append({"primitives": [{"attributes": attributes, "indices": index, "material": material}]})
     return len(gltf["meshes"]) - 1
 
 

@@ -52,8 +52,7 @@ public final class JsonSceneReader {
     /** The shape types and the keys each accepts. */
     static final Map<String, Set<String>> SHAPE_KEYS = Map.of(
             "sphere", Set.of("type", "center", "radius", "material", "transform"),
-            "mesh", Set.of("type", "file", "material", "transform"),
-            "gltf", Set.of("type", "file", "transform"),
+            "mesh", Set.of("type", "file", "material", "transform"), "gltf", Set.of("type", "file", "transform"),
             "triangles", Set.of("type", "positions", "indices", "normals", "uvs", "material", "transform"));
     static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment");
     static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov", "aperture", "focusDistance");
@@ -282,8 +281,7 @@ public final class JsonSceneReader {
         v.allowOnly(s, "shapes[] of type " + type, keys);
         Transform transform = s.containsKey("transform") ? TransformReader.read(v, s.get("transform")) : Transform.IDENTITY;
         switch (type) {
-            case "mesh":
-            case "gltf": {
+            case "mesh", "gltf": {
                 JsonNode fileNode = v.require(s, "file", node);
                 String name = v.string(fileNode, "shapes[].file");
                 Path mesh;
@@ -293,11 +291,8 @@ public final class JsonSceneReader {
                     throw new SceneException(file, fileNode.line, "'shapes[].file' is not a valid path: " + name);
                 }
                 String lower = name.toLowerCase(Locale.ROOT);
-                if (type.equals("mesh") && !lower.endsWith(".obj") && !lower.endsWith(".ply")) {
-                    throw new SceneException(file, fileNode.line, "'shapes[].file' must name an .obj or .ply file, got '" + name + "'");
-                }
-                if (type.equals("gltf") && !lower.endsWith(".gltf") && !lower.endsWith(".glb")) {
-                    throw new SceneException(file, fileNode.line, "'shapes[].file' must name a .gltf or .glb file, got '" + name + "'");
+                if (type.equals("gltf") ? !lower.endsWith(".gltf") && !lower.endsWith(".glb") : !lower.endsWith(".obj") && !lower.endsWith(".ply")) {
+                    throw new SceneException(file, fileNode.line, "'shapes[].file' must name " + (type.equals("gltf") ? "a .gltf or .glb" : "an .obj or .ply") + " file, got '" + name + "'");
                 }
                 if (!Files.isRegularFile(mesh)) {
                     throw new SceneException(file, fileNode.line, "mesh file not found: " + mesh);
