@@ -6,7 +6,9 @@ import dev.strahl.geometry.Geometry;
 import dev.strahl.image.Rgb;
 import dev.strahl.light.Environment;
 import dev.strahl.light.LightSampler;
+import dev.strahl.light.PunctualLight;
 import dev.strahl.material.Bsdf;
+import java.util.List;
 import java.util.Objects;
 import java.util.function.Function;
 
@@ -31,19 +33,23 @@ public final class World {
     private final Bsdf[] bsdfs;
     private final Rgb[] emission;
     private final Environment environment;
+    private final List<PunctualLight> punctualLights;
     private final double bvhBuildSeconds;
 
-    private World(Geometry geometry, Bvh bvh, Bsdf[] bsdfs, Rgb[] emission, Environment environment, double bvhBuildSeconds) {
-        this(geometry, bvh, new LightSampler(geometry, emission, environment), bsdfs, emission, environment, bvhBuildSeconds);
+    private World(Geometry geometry, Bvh bvh, Bsdf[] bsdfs, Rgb[] emission, Environment environment, List<PunctualLight> punctual,
+                  double bvhBuildSeconds) {
+        this(geometry, bvh, new LightSampler(geometry, emission, environment, punctual), bsdfs, emission, environment, punctual,
+                bvhBuildSeconds);
     }
 
     private World(Geometry geometry, Bvh bvh, LightSampler lights, Bsdf[] bsdfs, Rgb[] emission, Environment environment,
-                  double bvhBuildSeconds) {
+                  List<PunctualLight> punctual, double bvhBuildSeconds) {
         this.geometry = geometry;
         this.bvh = bvh;
         this.bsdfs = bsdfs;
         this.emission = emission;
         this.environment = environment;
+        this.punctualLights = punctual;
         this.bvhBuildSeconds = bvhBuildSeconds;
         this.lights = lights;
     }
@@ -53,7 +59,7 @@ public final class World {
      * primitive instead of the BVH ({@link Bvh#bruteForce()}); everything else shared.
      */
     public World bruteForce() {
-        return new World(geometry, bvh.bruteForce(), lights, bsdfs, emission, environment, bvhBuildSeconds);
+        return new World(geometry, bvh.bruteForce(), lights, bsdfs, emission, environment, punctualLights, bvhBuildSeconds);
     }
 
     /**
@@ -65,6 +71,15 @@ public final class World {
      * @param environment the light of rays that leave the scene
      */
     public static World build(Geometry geometry, Bsdf[] bsdfs, Rgb[] emission, Environment environment) {
+        return build(geometry, bsdfs, emission, environment, List.of());
+    }
+
+    /**
+     * As {@link #build(Geometry, Bsdf[], Rgb[], Environment)}, with punctual lights.
+     *
+     * @param punctual point, spot and directional lights
+     */
+    public static World build(Geometry geometry, Bsdf[] bsdfs, Rgb[] emission, Environment environment, List<PunctualLight> punctual) {
         if (bsdfs.length != emission.length) {
             throw new IllegalArgumentException(bsdfs.length + " BSDFs for " + emission.length + " emissions");
         }
@@ -72,7 +87,8 @@ public final class World {
         Bvh bvh = Bvh.build(geometry);
         double seconds = (System.nanoTime() - start) * 1e-9;
         // The BVH hands back the same primitives reordered into its leaves: hits refer to those.
-        return new World(bvh.geometry(), bvh, bsdfs.clone(), emission.clone(), Objects.requireNonNull(environment), seconds);
+        return new World(bvh.geometry(), bvh, bsdfs.clone(), emission.clone(), Objects.requireNonNull(environment),
+                List.copyOf(punctual), seconds);
     }
 
     /** The world behind an API {@code Scene}. */
@@ -108,7 +124,12 @@ public final class World {
 
     /** The same world under another environment: geometry, BVH and material tables are shared, the light sampler is new. */
     public World withEnvironment(Environment newEnvironment) {
-        return new World(geometry, bvh, bsdfs, emission, Objects.requireNonNull(newEnvironment), bvhBuildSeconds);
+        return new World(geometry, bvh, bsdfs, emission, Objects.requireNonNull(newEnvironment), punctualLights, bvhBuildSeconds);
+    }
+
+    /** The point, spot and directional lights (sampled by {@link #lights()} too). */
+    public List<PunctualLight> punctualLights() {
+        return punctualLights;
     }
 
     public int materialCount() {

@@ -64,6 +64,33 @@ final class SceneFileWriter {
             g.writeNumberField("rotate", d.environment().rotate());
             g.writeEndObject();
         }
+        if (!d.lights().isEmpty()) {
+            g.writeArrayFieldStart("lights");
+            for (SceneLights.Light l : d.lights()) {
+                light(l);
+            }
+            g.writeEndArray();
+        }
+        g.writeEndObject();
+    }
+
+    private void light(SceneLights.Light l) throws IOException {
+        g.writeStartObject();
+        g.writeStringField("type", l.type());
+        if (l.position() != null) {
+            g.writeFieldName("position");
+            vector(l.position());
+        }
+        if (l.direction() != null) {
+            g.writeFieldName("direction");
+            vector(l.direction());
+        }
+        g.writeFieldName(l.type().equals("directional") ? "irradiance" : "intensity");
+        rgb(l.intensity());
+        if (l.type().equals("spot")) {
+            g.writeNumberField("innerCone", l.innerCone());
+            g.writeNumberField("outerCone", l.outerCone());
+        }
         g.writeEndObject();
     }
 
