@@ -58,7 +58,7 @@ public final class JsonSceneReader {
     static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov", "aperture", "focusDistance");
     /** The environment types (the object form; an array is a constant radiance) and their keys. */
     static final Map<String, Set<String>> ENVIRONMENT_KEYS = Map.of("envmap", Set.of("type", "file", "scale", "rotate"));
-    static final Set<String> FILM_KEYS = Set.of("width", "height");
+    static final Set<String> FILM_KEYS = Set.of("width", "height", "aovs");
     static final Set<String> INTEGRATOR_KEYS = Set.of("type", "spp", "maxDepth", "seed", "lightSamples", "hemisphere", "photons",
             "photonRadius");
 
@@ -492,6 +492,6 @@ public final class JsonSceneReader {
                 }
             }
         }
-        return new SceneSettings(width, height, spp, maxDepth, seed, type, lightSamples, hemisphere, photons, photonRadius);
+        return new SceneSettings(width, height, spp, maxDepth, seed, type, lightSamples, hemisphere, photons, photonRadius, SceneSettings.readAovs(film, v));
     }
 }

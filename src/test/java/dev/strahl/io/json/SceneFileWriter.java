@@ -109,13 +109,20 @@ final class SceneFileWriter {
     }
 
     private void settings(SceneSettings s) throws IOException {
-        if (s.width() != null || s.height() != null) {
+        if (s.width() != null || s.height() != null || s.aovs() != null) {
             g.writeObjectFieldStart("film");
             if (s.width() != null) {
                 g.writeNumberField("width", s.width());
             }
             if (s.height() != null) {
                 g.writeNumberField("height", s.height());
+            }
+            if (s.aovs() != null) {
+                g.writeArrayFieldStart("aovs");
+                for (var aov : new java.util.TreeSet<>(s.aovs())) {
+                    g.writeString(aov.id());
+                }
+                g.writeEndArray();
             }
             g.writeEndObject();
         }
