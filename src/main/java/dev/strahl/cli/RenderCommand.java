@@ -335,17 +335,7 @@ final class RenderCommand implements Callable<Integer> {
 
     /** The feature buffers asked for with --aov (checked), or none. */
     private Set<Aov> aovs() {
-        Set<Aov> set = EnumSet.noneOf(Aov.class);
-        if (aovNames != null) {
-            for (String name : aovNames) {
-                try {
-                    set.add(Aov.of(name.trim()));
-                } catch (IllegalArgumentException e) {
-                    throw new IllegalArgumentException("--aov: " + e.getMessage());
-                }
-            }
-        }
-        return set;
+        return SceneFileOptions.aovs(aovNames);
     }
 
     /** The PNG's tone curve and exposure, the EXR's type and compression, from the options (checked). */

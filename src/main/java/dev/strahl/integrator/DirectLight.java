@@ -17,9 +17,10 @@ import dev.strahl.world.World;
 import org.joml.Vector3d;
 
 /**
- * Next-event estimation: light arriving directly from the area lights and the environment at a
- * surface point, estimated with shadow rays to points sampled on the lights (or towards directions
- * sampled on the environment). One per worker thread (it owns its
+ * Next-event estimation: light arriving directly from the area lights, the punctual lights and
+ * the environment at a surface point, estimated with shadow rays to points sampled on the lights
+ * (or towards directions sampled on the environment). A punctual light is a delta light: no BSDF
+ * sample can hit it, so its samples always have weight 1, also under {@link Use#MIS}. One per worker thread (it owns its
  * scratch objects); shared by the path tracer, direct lighting, Whitted and the photon mapper.
  *
  * <p>Each light sample draws its numbers first, whatever follows: a pair for the point on the
@@ -89,7 +90,7 @@ public final class DirectLight {
             if (f.isBlack() || !visible(s.sp)) {
                 continue;
             }
-            double w = use == Use.LIGHT_ONLY ? 1 : MathUtil.powerHeuristic(n * ls.pdf, bsdf.pdf(s.sp.uv, s.woLocal, wiLocal));
+            double w = use == Use.LIGHT_ONLY || ls.delta ? 1 : MathUtil.powerHeuristic(n * ls.pdf, bsdf.pdf(s.sp.uv, s.woLocal, wiLocal));
             f.mul(ls.radiance);
             out.addProduct(beta, f, Math.abs(wiLocal.z) * w * scale / ls.pdf);
         }
@@ -103,8 +104,12 @@ public final class DirectLight {
             shadow.tMax = Double.POSITIVE_INFINITY;
             return !occluded(shadow);
         }
-        toSurface.set(ls.wi).negate();
-        SurfacePoint.offset(ls.p, ls.ng, toSurface, target);
+        if (ls.delta) {
+            target.set(ls.p);                      // a point light is no surface: nothing to move off
+        } else {
+            toSurface.set(ls.wi).negate();
+            SurfacePoint.offset(ls.p, ls.ng, toSurface, target);
+        }
         shadow.d.set(target).sub(shadow.o);
         double dist = shadow.d.length();
         if (!(dist > 0)) {

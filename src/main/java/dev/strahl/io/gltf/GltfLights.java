@@ -81,6 +81,9 @@ final class GltfLights {
                 default:
                     throw def.get("type").error("unknown light type '" + type + "' (known: directional, point, spot)");
             }
+            if (!position.isFinite() || !direction.isFinite() || !Double.isFinite(power.r() + power.g() + power.b())) {
+                throw def.error("the light of nodes[" + p.node() + "] is not finite (its node's transform or color × intensity overflows)");
+            }
             if (kind != Kind.POINT && !(direction.lengthSquared() > 1e-24)) {
                 throw def.error("the node of this light (nodes[" + p.node() + "]) scales its direction to nothing");
             }

@@ -104,11 +104,23 @@ public final class GltfReader {
         return new Asset(camera == null ? null : camera.camera(), camera == null ? 0 : camera.aspectRatio(), lights);
     }
 
-    /** Adds the asset's punctual lights to {@code builder}. */
+    /**
+     * Adds the asset's punctual lights (KHR_lights_punctual) to {@code builder}: point and spot
+     * lights of radiant intensity colour × intensity, directional lights of that irradiance.
+     */
     public static void addLights(Asset asset, Scene.Builder builder) {
-        if (!asset.lights().isEmpty()) {
-            builder.note("warning: " + asset.lights().size() + " KHR_lights_punctual light" + (asset.lights().size() == 1 ? "" : "s")
-                    + " ignored: punctual lights are not supported yet");
+        for (GltfLights.Light l : asset.lights()) {
+            switch (l.kind()) {
+                case POINT:
+                    builder.pointLight(l.position(), l.power());
+                    break;
+                case SPOT:
+                    builder.spotLight(l.position(), l.direction(), l.power(), l.inner(), l.outer());
+                    break;
+                default:
+                    builder.directionalLight(l.direction(), l.power());
+                    break;
+            }
         }
     }
 

@@ -30,14 +30,21 @@ import org.joml.Vector3dc;
  * @param materials   the named materials, in file order
  * @param shapes      the shapes, in file order
  * @param environment the environment, or null for the default
+ * @param lights      the punctual lights ({@link SceneLights}), in file order
  */
 record SceneDescription(Camera camera, SceneSettings settings, Map<String, MaterialSpec> materials, List<ShapeSpec> shapes,
-                        EnvironmentSpec environment) {
+                        EnvironmentSpec environment, List<SceneLights.Light> lights) {
 
     SceneDescription {
         Objects.requireNonNull(settings, "settings");
         materials = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(materials));
         shapes = List.copyOf(shapes);
+        lights = List.copyOf(lights);
+    }
+
+    SceneDescription(Camera camera, SceneSettings settings, Map<String, MaterialSpec> materials, List<ShapeSpec> shapes,
+                     EnvironmentSpec environment) {
+        this(camera, settings, materials, shapes, environment, List.of());
     }
 
     /**
@@ -237,6 +244,7 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
                 builder.addMesh(t.mesh(), byName.get(t.material()), t.transform());
             }
         }
+        SceneLights.addTo(lights, builder);
         if (camera != null) {
             builder.camera(camera);
         }

@@ -326,4 +326,68 @@ class GltfReaderTest {
             assertThat(World.of(scene).geometry().triangleCount()).isPositive();
         }
     }
+
+    /** A 20 × 20 Lambertian floor (albedo 0.5) at y = 0, seen straight down through a 1° camera at (0, 1, 0). */
+    static GltfWriter litFloor() {
+        GltfWriter w = new GltfWriter();
+        int floor = w.mesh(new float[] {-10, 0, -10, 10, 0, -10, 10, 0, 10, -10, 0, 10}, new int[] {0, 2, 1, 0, 3, 2}, 0);
+        w.add("materials", map("name", "floor", "pbrMetallicRoughness", map("baseColorFactor", List.of(0.5, 0.5, 0.5, 1), "metallicFactor", 0),
+                "extensions", map("KHR_materials_specular", map("specularFactor", 0))));
+        w.rootNode(map("mesh", floor));
+        double h = Math.sqrt(0.5);
+        w.add("cameras", map("type", "perspective", "perspective", map("yfov", Math.toRadians(1), "aspectRatio", 1.0)));
+        w.rootNode(map("camera", 0, "translation", List.of(0, 1, 0), "rotation", List.of(-h, 0, 0, h)));
+        return w;
+    }
+
+    @Test
+    void punctualLightsLightTheAssetWithoutTheStudioSky() throws Exception {
+        GltfWriter w = litFloor();
+        w.root.put("extensions", map("KHR_lights_punctual", map("lights", List.of(map("type", "point", "color", List.of(1, 1, 1), "intensity", 8),
+                map("type", "spot", "intensity", 3, "spot", map("innerConeAngle", 0.1, "outerConeAngle", 0.4)),
+                map("type", "directional", "color", List.of(1, 0.5, 0.25), "intensity", 2)))));
+        w.rootNode(map("translation", List.of(0, 2, 0), "extensions", map("KHR_lights_punctual", map("light", 0))));
+        Path file = w.writeGlb(dir.resolve("lit.glb"));
+        Scene scene = SceneLoader.load(file);
+        assertThat(scene.notes()).noneMatch(n -> n.contains("studio"));
+        assertThat(World.of(scene).punctualLights()).hasSize(1);
+        assertThat(World.of(scene).punctualLights().get(0).toString())
+                .isEqualTo(dev.strahl.light.PunctualLight.point(new Vector3d(0, 2, 0), dev.strahl.image.Rgb.gray(8)).toString());
+        // E = I / d² = 8 / 4 at the floor below; a Lambertian floor of albedo 0.5 sends L = 0.5/π · 2
+        dev.strahl.image.Image img = dev.strahl.testing.Renders.render(scene, RenderSettings.defaults().withSize(4, 4).withSamplesPerPixel(4));
+        double mean = 0;
+        for (float f : img.rgb()) {
+            mean += f / img.rgb().length;
+        }
+        assertThat(mean).isCloseTo(0.5 / Math.PI * 2, within(0.005));
+    }
+
+    /** Every number of a light's description to 9 decimals (no −0). */
+    static String rounded(String description) {
+        return java.util.regex.Pattern.compile("-?[0-9.]+(E-?[0-9]+)?").matcher(description)
+                .replaceAll(m -> String.format(java.util.Locale.ROOT, "%.9f", Double.parseDouble(m.group()) + 0.0).replace("-0.000000000", "0.000000000"));
+    }
+
+    @Test
+    void spotAndDirectionalLightsAreMovedByTheirNodes() throws Exception {
+        GltfWriter w = litFloor();
+        w.root.put("extensions", map("KHR_lights_punctual", map("lights", List.of(
+                map("type", "spot", "intensity", 3, "spot", map("innerConeAngle", 0.1, "outerConeAngle", 0.4)),
+                map("type", "directional", "color", List.of(1, 0.5, 0.25), "intensity", 2, "range", 5)))));
+        double h = Math.sqrt(0.5);
+        w.rootNode(map("translation", List.of(1, 3, 0), "rotation", List.of(-h, 0, 0, h), "extensions", map("KHR_lights_punctual", map("light", 0))));
+        w.rootNode(map("rotation", List.of(0, h, 0, h), "extensions", map("KHR_lights_punctual", map("light", 1))));
+        Scene scene = SceneLoader.load(w.writeGlb(dir.resolve("spot.glb")));
+        List<String> lights = World.of(scene).punctualLights().stream().map(l -> rounded(l.toString())).toList();
+        // the spot looks down (−Z turned by −90° about x is −Y); the directional light travels along −X (−Z turned 90° about y)
+        Vector3d down = new Vector3d(0, -1, 0);
+        org.joml.Quaterniond q = new org.joml.Quaterniond(-h, 0, 0, h).normalize();
+        Vector3d spotDir = q.transform(new Vector3d(0, 0, -1));
+        Vector3d sunDir = new org.joml.Quaterniond(0, h, 0, h).normalize().transform(new Vector3d(0, 0, -1));
+        assertThat(spotDir.distance(down)).isLessThan(1e-12);
+        assertThat(lights).containsExactly(
+                rounded(dev.strahl.light.PunctualLight.spot(new Vector3d(1, 3, 0), spotDir, dev.strahl.image.Rgb.gray(3), 0.1, 0.4).toString()),
+                rounded(dev.strahl.light.PunctualLight.directional(sunDir, new dev.strahl.image.Rgb(2, 1, 0.5)).toString()));
+        assertThat(scene.notes()).anyMatch(n -> n.contains("range is ignored"));
+    }
 }

@@ -386,9 +386,9 @@ class JsonSceneReaderTest {
                 {
                   %s
                   "shapes": [ %s ],
-                  "lights": []
+                  "lamps": []
                 }
-                """.formatted(MATERIALS, SPHERE), "unknown key 'lights' in scene", "camera, environment, film, integrator, materials, shapes"),
+                """.formatted(MATERIALS, SPHERE), "unknown key 'lamps' in scene", "camera, environment, film, integrator, lights, materials, shapes"),
             bad("unknown key in camera", 6, """
                 {
                   %s
