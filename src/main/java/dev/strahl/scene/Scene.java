@@ -1,6 +1,5 @@
 package dev.strahl.scene;
 
-import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.GeometryBuilder;
 import dev.strahl.geometry.MeshTopology;
@@ -379,17 +378,12 @@ public final class Scene {
                 emission[i] = surface.emissionTable();
                 maps[i] = surface.maps();
             }
-            Environment env = environment;
-            boolean studio = false;
-            if (env == null) {
-                studio = punctual.isEmpty() && !anyEmits(g, emission);
-                env = studio ? StudioSky.environment() : Environment.BLACK;
-            }
+            boolean studio = environment == null && punctual.isEmpty() && !anyEmits(g, emission);
+            Environment env = environment != null ? environment : studio ? StudioSky.environment() : Environment.BLACK;
             World world = World.build(g, bsdfs, emission, maps, env, punctual);
-            Aabb bounds = world.bounds();
             // A bare model (no light) is an object: shown from above at three quarters. A scene with
             // its own lights is often a room made to be seen from its open front (the Cornell Box): +Z.
-            Camera cam = camera != null ? camera : studio ? Camera.framing(bounds, 40) : Camera.frontFraming(bounds, 40);
+            Camera cam = camera != null ? camera : studio ? Camera.framing(world.bounds(), 40) : Camera.frontFraming(world.bounds(), 40);
             return new Scene(world, List.copyOf(materials), cam, List.copyOf(notes), studio, camera == null);
         }
 
