@@ -233,7 +233,7 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
                     builder.camera(asset.camera());
                     gltfCamera = true;
                 }
-                if (environment == null && byName.values().stream().noneMatch(Material::isEmissive)) {
+                if (environment == null && lights.isEmpty() && byName.values().stream().noneMatch(Material::isEmissive)) {
                     GltfReader.addLights(asset, builder);
                 }
             } else if (shape instanceof MeshShape m) {

@@ -390,4 +390,23 @@ class GltfReaderTest {
                 rounded(dev.strahl.light.PunctualLight.directional(sunDir, new dev.strahl.image.Rgb(2, 1, 0.5)).toString()));
         assertThat(scene.notes()).anyMatch(n -> n.contains("range is ignored"));
     }
+
+    @Test
+    void aSceneFileUsesTheAssetsCameraAndLightsOnlyWhereItHasNone() throws Exception {
+        GltfWriter w = litFloor();
+        w.root.put("extensions", map("KHR_lights_punctual", map("lights", List.of(map("type", "point", "intensity", 8)))));
+        w.rootNode(map("translation", List.of(0, 2, 0), "extensions", map("KHR_lights_punctual", map("light", 0))));
+        w.writeGlb(dir.resolve("asset.glb"));
+        Path bare = dir.resolve("bare.json");
+        java.nio.file.Files.writeString(bare, "{\"shapes\": [{\"type\": \"gltf\", \"file\": \"asset.glb\"}]}");
+        Scene taken = SceneLoader.load(bare);
+        assertThat(World.of(taken).punctualLights()).hasSize(1);
+        assertThat(taken.camera().fovDegrees()).isCloseTo(1, within(1e-9));
+        Path own = dir.resolve("own.json");
+        java.nio.file.Files.writeString(own, "{\"camera\": {\"lookFrom\": [0, 5, 5], \"lookAt\": [0, 0, 0], \"up\": [0, 1, 0], \"fov\": 30},"
+                + " \"environment\": [0.1, 0.1, 0.1], \"shapes\": [{\"type\": \"gltf\", \"file\": \"asset.glb\"}]}");
+        Scene kept = SceneLoader.load(own);
+        assertThat(World.of(kept).punctualLights()).isEmpty();
+        assertThat(kept.camera().fovDegrees()).isEqualTo(30);
+    }
 }
