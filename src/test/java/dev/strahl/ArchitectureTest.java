@@ -15,7 +15,7 @@ import com.tngtech.archunit.lang.ArchRule;
  * import fails the build instead of a review. Bottom to top (a layer may use the layers below it):
  * <pre>
  * image ← math ← sampling ← { geometry, material, film } ← { accel, light, camera, io.image ← io.exr } ← world
- *   ← integrator ← photon ← scene ← render ← io.text ← { io.obj, io.ply } ← io.mesh ← io.json ← io
+ *   ← integrator ← photon ← scene ← render ← io.text ← { io.obj, io.ply, io.gltf } ← io.mesh ← io.json ← io
  *   ← bench ← viewer ← cli
  * </pre>
  * On top of that: no cycle between any two packages; the scene model knows no file format;
@@ -41,7 +41,7 @@ class ArchitectureTest {
 
     /** The layers bottom to top; each may use only those before it. */
     private static final String[] LAYERS = {"image", "math", "sampling", "texture", "geometry", "material", "film", "accel", "light", "camera",
-        "io.image", "io.exr", "denoise", "world", "integrator", "photon", "scene", "units", "render", "io.text", "io.obj", "io.ply", "io.mesh", "io.json", "io",
+        "io.image", "io.exr", "denoise", "world", "integrator", "photon", "scene", "units", "render", "io.text", "io.obj", "io.ply", "io.gltf", "io.mesh", "io.json", "io",
         "cluster", "bench", "viewer", "cli"};
 
     @ArchTest
@@ -64,7 +64,7 @@ class ArchitectureTest {
 
     @ArchTest
     static final ArchRule theSceneModelKnowsNoFileFormat = noClasses().that().resideInAPackage("dev.strahl.scene")
-            .should().dependOnClassesThat().resideInAnyPackage("dev.strahl.io", "dev.strahl.io.text..", "dev.strahl.io.obj..", "dev.strahl.io.ply..", "dev.strahl.io.mesh..",
+            .should().dependOnClassesThat().resideInAnyPackage("dev.strahl.io", "dev.strahl.io.text..", "dev.strahl.io.obj..", "dev.strahl.io.ply..", "dev.strahl.io.gltf..", "dev.strahl.io.mesh..",
                     "dev.strahl.io.json..", "dev.strahl.io.exr..")
             .because("file formats build scenes through the scene API, never the other way round (texture images, read by io.image, are"
                     + " the one file content a material holds)");

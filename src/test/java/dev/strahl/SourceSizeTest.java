@@ -23,7 +23,6 @@ class SourceSizeTest {
     /** Known debt: files over the limit, each with the most lines it may have. Split them; never add one. */
     static final Map<String, Integer> OVER_THE_LIMIT = Map.of(
             "dev/strahl/cli/RenderCommand.java", 570,
-            "dev/strahl/scene/Material.java", 528,
             "dev/strahl/io/json/JsonSceneReader.java", 497,
             "dev/strahl/render/RenderJob.java", 453,
             "dev/strahl/io/obj/ObjReader.java", 441,

@@ -53,7 +53,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "render",
         mixinStandardHelpOptions = true,
         versionProvider = Main.Version.class,
-        description = {"Renders a scene (.json scene file, .obj or .ply) to a PNG (sRGB, 8 bit), PFM (linear float) or OpenEXR image.",
+        description = {"Renders a scene (.json scene file, .obj, .ply, .gltf or .glb) to a PNG (sRGB, 8 bit), PFM (linear float) or OpenEXR image.",
             "Without camera options the scene's camera is used; an OBJ or PLY is framed from a raised three-quarter view and, without lights, lit by a built-in studio sky.",
             "Ctrl-C stops and writes the image rendered so far; a second Ctrl-C exits at once."},
         sortOptions = false)
@@ -65,7 +65,7 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     TransportOptions transport;
 
-    @Parameters(index = "0", paramLabel = "SCENE", description = "Scene file: .json (strahl scene), .obj (with its .mtl) or .ply.")
+    @Parameters(index = "0", paramLabel = "SCENE", description = "Scene file: .json (strahl scene), .obj (with its .mtl), .ply, or glTF 2.0 (.gltf, .glb).")
     Path scene;
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE",
@@ -335,17 +335,7 @@ final class RenderCommand implements Callable<Integer> {
 
     /** The feature buffers asked for with --aov (checked), or none. */
     private Set<Aov> aovs() {
-        Set<Aov> set = EnumSet.noneOf(Aov.class);
-        if (aovNames != null) {
-            for (String name : aovNames) {
-                try {
-                    set.add(Aov.of(name.trim()));
-                } catch (IllegalArgumentException e) {
-                    throw new IllegalArgumentException("--aov: " + e.getMessage());
-                }
-            }
-        }
-        return set;
+        return SceneFileOptions.aovs(aovNames);
     }
 
     /** The PNG's tone curve and exposure, the EXR's type and compression, from the options (checked). */

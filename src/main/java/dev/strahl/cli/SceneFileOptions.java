@@ -1,7 +1,9 @@
 package dev.strahl.cli;
 
 import dev.strahl.io.json.SceneSettings.Setting;
+import dev.strahl.render.Aov;
 import java.util.EnumSet;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import picocli.CommandLine;
@@ -13,19 +15,35 @@ import picocli.CommandLine;
  */
 final class SceneFileOptions {
     /** Each option that a scene file's {@code film} or {@code integrator} key also sets. */
-    static final Map<String, Setting> OPTIONS = Map.of(
-            "--width", Setting.WIDTH,
-            "--height", Setting.HEIGHT,
-            "--spp", Setting.SAMPLES_PER_PIXEL,
-            "--max-depth", Setting.MAX_DEPTH,
-            "--seed", Setting.SEED,
-            "--integrator", Setting.INTEGRATOR,
-            "--light-samples", Setting.LIGHT_SAMPLES,
-            "--hemisphere", Setting.HEMISPHERE,
-            "--photons", Setting.PHOTONS,
-            "--photon-radius", Setting.PHOTON_RADIUS);
+    static final Map<String, Setting> OPTIONS = Map.ofEntries(
+            Map.entry("--width", Setting.WIDTH),
+            Map.entry("--height", Setting.HEIGHT),
+            Map.entry("--spp", Setting.SAMPLES_PER_PIXEL),
+            Map.entry("--max-depth", Setting.MAX_DEPTH),
+            Map.entry("--seed", Setting.SEED),
+            Map.entry("--integrator", Setting.INTEGRATOR),
+            Map.entry("--light-samples", Setting.LIGHT_SAMPLES),
+            Map.entry("--hemisphere", Setting.HEMISPHERE),
+            Map.entry("--photons", Setting.PHOTONS),
+            Map.entry("--photon-radius", Setting.PHOTON_RADIUS),
+            Map.entry("--aov", Setting.AOVS));
 
     private SceneFileOptions() {
+    }
+
+    /** The feature buffers named by {@code --aov} (null: not given, none); an unknown name is an error naming the option. */
+    static Set<Aov> aovs(List<String> names) {
+        Set<Aov> set = EnumSet.noneOf(Aov.class);
+        if (names != null) {
+            for (String name : names) {
+                try {
+                    set.add(Aov.of(name.trim()));
+                } catch (IllegalArgumentException e) {
+                    throw new IllegalArgumentException("--aov: " + e.getMessage());
+                }
+            }
+        }
+        return set;
     }
 
     /** The settings whose option is on the command line of {@code parsed}. */

@@ -9,6 +9,7 @@ import java.awt.AWTError;
 import java.awt.HeadlessException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -34,7 +35,7 @@ final class ViewCommand implements Callable<Integer> {
     @Mixin
     TransportOptions transport;
 
-    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE", description = "Scene file: .json (strahl scene), .obj (with its .mtl) or .ply.")
+    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE", description = "Scene file: .json (strahl scene), .obj (with its .mtl), .ply, or glTF 2.0 (.gltf, .glb).")
     Path scene;
 
     @Option(names = "--width", defaultValue = "512", description = "Film width in pixels at start; resizing the window keeps the aspect (default: ${DEFAULT-VALUE}).")
@@ -56,13 +57,19 @@ final class ViewCommand implements Callable<Integer> {
             description = "Light or dark look; system follows the desktop where it can (default: ${DEFAULT-VALUE}).")
     String theme;
 
+    @Option(names = "--aov", split = ",", paramLabel = "LIST",
+            description = "Feature buffers the render keeps beside the image: albedo, normal, depth (comma-separated), as the scene"
+                    + " file's film.aovs; the denoiser's guides.")
+    List<String> aovNames;
+
     @Mixin
     DebugOption debug;
 
     /** What the options say; those given on the command line win over the scene file's settings. */
     ViewerOptions options() {
         return new ViewerOptions(scene, width, height, spp, transport.maxDepth, transport.hemisphere, threads, seed,
-                transport.integrator, transport.lightSamples, Theme.parse(theme), given(), transport.photons, transport.photonRadius);
+                transport.integrator, transport.lightSamples, Theme.parse(theme), given(), transport.photons, transport.photonRadius,
+                SceneFileOptions.aovs(aovNames));
     }
 
     /**

@@ -232,20 +232,29 @@ public final class Geometry {
             // Re-project onto the surface to remove the round-off of o + t·d.
             sp.p.set(cx + r * sp.ng.x, cy + r * sp.ng.y, cz + r * sp.ng.z);
             sp.n.set(sp.ng);
-            double phi = Math.atan2(sp.ng.z, sp.ng.x);
-            if (phi < 0) {
-                phi += 2 * Math.PI;
-            }
-            double theta = Math.acos(Math.max(-1, Math.min(1, sp.ng.y)));
-            sp.uv.set(phi * (0.5 / Math.PI), 1 - theta / Math.PI);
-            // dp/du = 2π (−z', 0, x') r with (x', z') the offsets from the axis.
-            sp.dpdu.set(-2 * Math.PI * r * sp.ng.z, 0, 2 * Math.PI * r * sp.ng.x);
+            sphereTexCoords(r, sp);
         }
+    }
+
+    /**
+     * A sphere's u = φ/2π, v = 1 − θ/π and dp/du = 2π r (−z', 0, x') at the point with outward
+     * normal {@code sp.ng}; (dp/du, dp/dv, ng) is left-handed, so {@code sp.tangentSign} = −1.
+     */
+    private static void sphereTexCoords(double r, SurfacePoint sp) {
+        double phi = Math.atan2(sp.ng.z, sp.ng.x);
+        if (phi < 0) {
+            phi += 2 * Math.PI;
+        }
+        double theta = Math.acos(Math.max(-1, Math.min(1, sp.ng.y)));
+        sp.uv.set(phi * (0.5 / Math.PI), 1 - theta / Math.PI);
+        sp.dpdu.set(-2 * Math.PI * r * sp.ng.z, 0, 2 * Math.PI * r * sp.ng.x);
+        sp.tangentSign = -1;
     }
 
     /** The texture coordinates and dp/du of a point with barycentrics (b0, b1, b2) on the triangle (a, b, c). */
     private void texCoords(int a, int b, int c, double b0, double b1, double b2, SurfacePoint sp) {
         float[] t = uv;
+        sp.tangentSign = 1;
         if (t == null || Float.isNaN(t[2 * a]) || Float.isNaN(t[2 * b]) || Float.isNaN(t[2 * c])) {
             sp.uv.set(b1, b2);
             sp.dpdu.set((double) pos[3 * b] - pos[3 * a], (double) pos[3 * b + 1] - pos[3 * a + 1], (double) pos[3 * b + 2] - pos[3 * a + 2]);
@@ -264,6 +273,8 @@ public final class Geometry {
             return;
         }
         double inv = 1 / det;
+        // cross(dp/du, dp/dv) = ng·|e1 × e2| / det: a negative det is a mirrored mapping.
+        sp.tangentSign = det < 0 ? -1 : 1;
         sp.dpdu.set((dv12 * p02x - dv02 * p12x) * inv, (dv12 * p02y - dv02 * p12y) * inv, (dv12 * p02z - dv02 * p12z) * inv);
     }
 
@@ -284,7 +295,8 @@ public final class Geometry {
 
     /**
      * A point on a primitive from two uniform numbers, uniform by area; writes the point into
-     * {@code sp.p} and its geometric normal into {@code sp.ng} (and {@code sp.n}). The one
+     * {@code sp.p}, its geometric normal into {@code sp.ng} (and {@code sp.n}) and its texture
+     * coordinates (as {@link #surface} gives them) into {@code sp.uv}. The one
      * sampling of triangles: light sampling and photon emission use it.
      *
      * <p>On a triangle the barycentrics are 1 − √u1 on v0, b1 = u2·√u1 on v1 and b2 = √u1 − b1
@@ -302,6 +314,7 @@ public final class Geometry {
                     pos[i0 + 1] + b1 * ((double) pos[i1 + 1] - pos[i0 + 1]) + b2 * ((double) pos[i2 + 1] - pos[i0 + 1]),
                     pos[i0 + 2] + b1 * ((double) pos[i1 + 2] - pos[i0 + 2]) + b2 * ((double) pos[i2 + 2] - pos[i0 + 2]));
             edgeCross(i0, i1, i2, sp.ng).normalize();
+            texCoords(i0 / 3, i1 / 3, i2 / 3, 1 - su, b1, b2, sp);
         } else {
             int k = 4 * (prim - triangleCount);
             double z = 1 - 2 * u1;
@@ -310,6 +323,7 @@ public final class Geometry {
             sp.ng.set(rr * Math.cos(phi), rr * Math.sin(phi), z);
             double r = sph[k + 3];
             sp.p.set(sph[k] + r * sp.ng.x, sph[k + 1] + r * sp.ng.y, sph[k + 2] + r * sp.ng.z);
+            sphereTexCoords(r, sp);
         }
         sp.n.set(sp.ng);
     }

@@ -24,6 +24,11 @@ public final class SurfacePoint {
     public final Vector2d uv = new Vector2d();
     /** ∂p/∂u, not normalised: the tangent of normal maps. */
     public final Vector3d dpdu = new Vector3d();
+    /**
+     * The handedness of the texture mapping: dp/dv points along tangentSign · (n × dp/du)
+     * (MikkTSpace's bitangent sign); −1 where the mapping is mirrored.
+     */
+    public double tangentSign = 1;
     public int material;
     public int prim;
 

@@ -3,6 +3,7 @@ package dev.strahl.integrator;
 import dev.strahl.math.MutableRgb;
 import dev.strahl.accel.Bvh;
 import dev.strahl.accel.TraversalStack;
+import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.SurfacePoint;
 import dev.strahl.light.LightSample;
@@ -11,12 +12,15 @@ import dev.strahl.material.Bsdf;
 import dev.strahl.math.MathUtil;
 import dev.strahl.sampling.Sample2D;
 import dev.strahl.sampling.Sampler;
+import dev.strahl.world.SurfaceMaps;
+import dev.strahl.world.World;
 import org.joml.Vector3d;
 
 /**
- * Next-event estimation: light arriving directly from the area lights and the environment at a
- * surface point, estimated with shadow rays to points sampled on the lights (or towards directions
- * sampled on the environment). One per worker thread (it owns its
+ * Next-event estimation: light arriving directly from the area lights, the punctual lights and
+ * the environment at a surface point, estimated with shadow rays to points sampled on the lights
+ * (or towards directions sampled on the environment). A punctual light is a delta light: no BSDF
+ * sample can hit it, so its samples always have weight 1, also under {@link Use#MIS}. One per worker thread (it owns its
  * scratch objects); shared by the path tracer, direct lighting, Whitted and the photon mapper.
  *
  * <p>Each light sample draws its numbers first, whatever follows: a pair for the point on the
@@ -35,9 +39,14 @@ public final class DirectLight {
         MIS
     }
 
+    private final World world;
     private final Bvh bvh;
     private final LightSampler lights;
     private final TraversalStack stack;
+    private final boolean cutouts;
+    private final Hit hit = new Hit();
+    private final SurfacePoint blocker = new SurfacePoint();
+    private final Vector3d origin = new Vector3d();
     private final SurfacePoint lightPoint = new SurfacePoint();
     private final LightSample ls = new LightSample();
     private final Ray shadow = new Ray();
@@ -48,10 +57,12 @@ public final class DirectLight {
     private final Sample2D uPoint = new Sample2D();
     public long rays;
 
-    DirectLight(Bvh bvh, LightSampler lights, TraversalStack stack) {
-        this.bvh = bvh;
-        this.lights = lights;
+    DirectLight(World world, TraversalStack stack) {
+        this.world = world;
+        this.bvh = world.bvh();
+        this.lights = world.lights();
         this.stack = stack;
+        this.cutouts = world.hasCutouts();
     }
 
     /**
@@ -79,7 +90,7 @@ public final class DirectLight {
             if (f.isBlack() || !visible(s.sp)) {
                 continue;
             }
-            double w = use == Use.LIGHT_ONLY ? 1 : MathUtil.powerHeuristic(n * ls.pdf, bsdf.pdf(s.sp.uv, s.woLocal, wiLocal));
+            double w = use == Use.LIGHT_ONLY || ls.delta ? 1 : MathUtil.powerHeuristic(n * ls.pdf, bsdf.pdf(s.sp.uv, s.woLocal, wiLocal));
             f.mul(ls.radiance);
             out.addProduct(beta, f, Math.abs(wiLocal.z) * w * scale / ls.pdf);
         }
@@ -91,11 +102,14 @@ public final class DirectLight {
         if (ls.infinite) {
             shadow.d.set(ls.wi);
             shadow.tMax = Double.POSITIVE_INFINITY;
-            rays++;
-            return !bvh.occluded(shadow, stack);
+            return !occluded(shadow);
         }
-        toSurface.set(ls.wi).negate();
-        SurfacePoint.offset(ls.p, ls.ng, toSurface, target);
+        if (ls.delta) {
+            target.set(ls.p);                      // a point light is no surface: nothing to move off
+        } else {
+            toSurface.set(ls.wi).negate();
+            SurfacePoint.offset(ls.p, ls.ng, toSurface, target);
+        }
         shadow.d.set(target).sub(shadow.o);
         double dist = shadow.d.length();
         if (!(dist > 0)) {
@@ -103,7 +117,41 @@ public final class DirectLight {
         }
         shadow.d.div(dist);
         shadow.tMax = dist;
+        return !occluded(shadow);
+    }
+
+    /**
+     * Whether something blocks the shadow ray. Alpha cut-outs let it pass: in a world with
+     * cut-outs, a blocked ray is traced again hit by hit (closest hits), past every cut-away
+     * surface, and counts as blocked only by a surface that is there. May move the ray's origin.
+     */
+    private boolean occluded(Ray ray) {
         rays++;
-        return !bvh.occluded(shadow, stack);
+        if (!bvh.occluded(ray, stack)) {
+            return false;
+        }
+        if (!cutouts) {
+            return true;
+        }
+        double tMax = ray.tMax;
+        origin.set(ray.o);
+        for (int pass = 0; pass < Tracer.MAX_PASSES; pass++) {
+            rays++;
+            hit.reset();
+            if (!bvh.intersect(ray, hit, stack, false)) {
+                return false;
+            }
+            world.geometry().surface(ray, hit, blocker);
+            SurfaceMaps maps = world.maps(blocker.material);
+            if (maps == null || !maps.cutAway(blocker.uv)) {
+                return true;
+            }
+            blocker.spawnOrigin(ray.d, ray.o);
+            ray.tMax = tMax - origin.distance(ray.o);
+            if (!(ray.tMax > 0)) {
+                return false;
+            }
+        }
+        return true;
     }
 }

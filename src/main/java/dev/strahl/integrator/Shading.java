@@ -6,9 +6,11 @@ import dev.strahl.geometry.SurfacePoint;
 import dev.strahl.material.Bsdf;
 import dev.strahl.material.BsdfSample;
 import dev.strahl.math.Frame;
-import dev.strahl.image.Rgb;
+import dev.strahl.light.Emission;
+import dev.strahl.math.MutableRgb;
 import dev.strahl.sampling.Sample2D;
 import dev.strahl.sampling.Sampler;
+import dev.strahl.world.SurfaceMaps;
 import dev.strahl.world.World;
 import org.joml.Vector3d;
 import org.joml.Vector3dc;
@@ -28,9 +30,11 @@ public final class Shading {
     public final Vector3d wi = new Vector3d();
     private final Vector3d wo = new Vector3d();
     private final Sample2D uDirection = new Sample2D();
+    private final MutableRgb texel = new MutableRgb();
+    private final Vector3d tangent = new Vector3d();
     public Bsdf bsdf;
-    /** Emitted radiance towards the ray's origin: black unless the front of an emitter was hit. */
-    public Rgb emitted;
+    /** Emitted radiance towards the ray's origin (Le at the hit's (u, v)): black unless the front of an emitter was hit. */
+    public final MutableRgb emitted = new MutableRgb();
     /** Cosine between the emitter's normal and the direction back to the ray origin. */
     double cosEmitter;
 
@@ -51,12 +55,28 @@ public final class Shading {
      */
     void at(Ray ray, Hit hit, World world, Bsdf[] bsdfs) {
         world.geometry().surface(ray, hit, sp);
+        setUp(ray, world, bsdfs);
+    }
+
+    /**
+     * {@link #at} for a surface point already filled in: the material's normal map tilts the
+     * shading normal first (every BSDF sees the tilted frame), then the sides are settled.
+     */
+    void setUp(Ray ray, World world, Bsdf[] bsdfs) {
         bsdf = bsdfs[sp.material];
+        SurfaceMaps maps = world.maps(sp.material);
+        if (maps != null && maps.normal() != null) {
+            maps.tiltNormal(sp, texel, tangent);
+        }
         wo.set(ray.d).negate();
         double cosGeometric = wo.dot(sp.ng);
-        Rgb le = world.emission(sp.material);
+        Emission le = world.emission(sp.material);
         cosEmitter = cosGeometric;
-        emitted = cosGeometric > 0 ? le : Rgb.BLACK;
+        if (cosGeometric > 0 && !le.isBlack()) {
+            le.eval(sp.uv, emitted);
+        } else {
+            emitted.setZero();
+        }
         if (bsdf.isTwoSided() && cosGeometric < 0) {
             sp.ng.negate();
             sp.n.negate();

@@ -10,8 +10,9 @@ import java.nio.file.Path;
 
 /**
  * Loads a scene from a file: a strahl scene file ({@code .json}, see docs/scene-format.md), a
- * Wavefront OBJ with its MTL materials ({@code .obj}) or a PLY mesh ({@code .ply}, ASCII or
- * binary, grey diffuse). An OBJ or PLY has no camera: the scene is framed from a raised
+ * Wavefront OBJ with its MTL materials ({@code .obj}), a PLY mesh ({@code .ply}, ASCII or
+ * binary, grey diffuse) or a glTF 2.0 asset ({@code .gltf} with its {@code .bin} and images, or
+ * {@code .glb}; its camera is used when it has one). An OBJ or PLY has no camera: the scene is framed from a raised
  * three-quarter view; without lights it is lit by strahl's studio sky ({@link Scene#notes()} says so).
  *
  * <pre>{@code
@@ -26,7 +27,7 @@ public final class SceneLoader {
     /**
      * Loads and builds the scene in {@code file}; the format follows the file's extension, in any case.
      *
-     * @param file a {@code .json}, {@code .obj} or {@code .ply} file
+     * @param file a {@code .json}, {@code .obj}, {@code .ply}, {@code .gltf} or {@code .glb} file
      * @return the scene
      * @throws SceneException if the file is missing, unreadable or malformed: the message names
      *                        the file and, where known, the line
@@ -53,9 +54,10 @@ public final class SceneLoader {
     /**
      * Render settings with what a scene file says about rendering (its {@code film} and
      * {@code integrator} keys) on top of {@code base}; a mesh file says nothing and gives
-     * {@code base}. Reads the file again: load the scene first.
+     * {@code base}; a glTF camera's {@code aspectRatio} sets the size to 512 pixels across and
+     * as many down as the ratio asks. Reads the file again: load the scene first.
      *
-     * @param file a {@code .json}, {@code .obj} or {@code .ply} file
+     * @param file a {@code .json}, {@code .obj}, {@code .ply}, {@code .gltf} or {@code .glb} file
      * @param base the settings to start from, e.g. {@link RenderSettings#defaults()}
      * @return the combined settings
      * @throws SceneException if the file is missing, unreadable or malformed

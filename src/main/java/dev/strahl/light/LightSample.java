@@ -14,6 +14,12 @@ public final class LightSample {
     public double distance;
     /** Whether the sample is of the environment: then only {@link #wi}, the pdf and the radiance mean anything. */
     public boolean infinite;
+    /**
+     * Whether the sample is of a punctual (delta) light: then {@link #radiance} is the irradiance
+     * it gives a surface facing it, {@link #pdf} the probability of choosing it, and no BSDF
+     * sample can find it (no MIS weight).
+     */
+    public boolean delta;
     /** Solid-angle density of wi at the reference point, light selection included. */
     public double pdf;
     /** Emitted radiance towards the reference point. */

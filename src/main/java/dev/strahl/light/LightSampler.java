@@ -1,14 +1,16 @@
 package dev.strahl.light;
 
+import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.SurfacePoint;
 import dev.strahl.image.Rgb;
 import java.util.Arrays;
+import java.util.List;
 import org.joml.Vector3dc;
 
 /**
- * Picks points on the emissive primitives (area lights) and directions towards the
- * {@link Environment} for next-event estimation.
+ * Picks points on the emissive primitives (area lights), punctual lights ({@link PunctualLight})
+ * and directions towards the {@link Environment} for next-event estimation.
  *
  * <p><b>Area lights or environment.</b> When a scene has both, each light sample is of the
  * environment with probability {@value #ENVIRONMENT_PROBABILITY} and of the area lights otherwise
@@ -33,6 +35,19 @@ import org.joml.Vector3dc;
  * {@link Geometry#samplePoint} (the one sampling of a primitive); the density per unit area is
  * thus mean(Le) / total power for every emitter, which lets {@link #pdf} work from the material
  * alone. Lights are one-sided: they emit into the hemisphere of their geometric normal.
+ * A textured emitter ({@link Emission}) is chosen by area × its mean over the texture, and its
+ * point uniformly by area like any other: the sample carries Le at the point's (u, v), which is
+ * unbiased whatever the texture (it is not importance-sampled within the texture), and the
+ * density stays a function of the material, as the MIS weights of hit emitters need; a point
+ * in the emitter's alpha cut-out carries Le = 0.
+ *
+ * <p><b>Punctual lights</b> share the part of the light samples that is not the environment's
+ * with the area lights, by power: a punctual light with probability P_punctual / (P_punctual +
+ * P_area), P_area = π·Σ area·mean(Le) the flux of the (Lambertian) area lights and P_punctual the
+ * sum of {@link PunctualLight}'s powers (a directional light's over the scene's bounding sphere,
+ * {@link #boundingRadius}); among them again by power. The number that chose the kind is
+ * rescaled to choose within it, as for the environment. Without punctual lights the area lights
+ * get the very same numbers and densities as before they existed.
  * Immutable and thread-safe.
  */
 public final class LightSampler {
@@ -45,18 +60,54 @@ public final class LightSampler {
     private final double pArea;          // 1 - pEnvironment
     private final double pEnvironmentAlone;  // the same for light sampling alone, where a constant environment counts too
     private final double pAreaAlone;
-    private final Rgb[] emission;        // per material: the caller's table, not a copy
+    private final Emission[] emission;   // per material: the caller's table, not a copy
     private final int[] prims;           // emissive primitives
     private final double[] cdf;          // cumulative power, cdf[last] = 1
     private final double totalPower;     // sum of area × mean(Le)
     private final double[] density;      // per material: mean(Le) / total power, the density per unit area
+    private final PunctualLight[] punctual;
+    private final double[] punctualCdf;  // cumulative power of the punctual lights, last = 1
+    private final double[] punctualProbability;  // each punctual light's share of the punctual power
+    private final double punctualPower;  // their total power (W)
+    private final double pPunctualShare; // of the samples that are not the environment's, the punctual lights' share
+    private final double pAreaLights;    // pArea · (1 − pPunctualShare): exactly pArea without punctual lights
+    private final double pAreaLightsAlone;
 
     /**
-     * @param emissionByMaterial emitted radiance of each material index (black = not a light); kept,
-     *                           not copied (the world's one table), so it must not change afterwards
+     * @param emissionByMaterial emitted radiance of each material index (black = not a light)
      * @param environment        the light from where rays leave the scene (black: none)
      */
     public LightSampler(Geometry geometry, Rgb[] emissionByMaterial, Environment environment) {
+        this(geometry, constants(emissionByMaterial), environment, List.of());
+    }
+
+    /**
+     * @param emissionByMaterial emitted radiance of each material index (black = not a light)
+     * @param environment        the light from where rays leave the scene (black: none)
+     * @param punctualLights     point, spot and directional lights
+     */
+    public LightSampler(Geometry geometry, Rgb[] emissionByMaterial, Environment environment, List<PunctualLight> punctualLights) {
+        this(geometry, constants(emissionByMaterial), environment, punctualLights);
+    }
+
+    /**
+     * @param emissionByMaterial emission of each material index (black = not a light), constant or
+     *                           textured; kept, not copied (the world's one table), so it must not
+     *                           change afterwards
+     * @param environment        the light from where rays leave the scene (black: none)
+     */
+    public LightSampler(Geometry geometry, Emission[] emissionByMaterial, Environment environment) {
+        this(geometry, emissionByMaterial, environment, List.of());
+    }
+
+    /**
+     * @param emissionByMaterial emission of each material index (black = not a light), constant or
+     *                           textured; kept, not copied (the world's one table), so it must not
+     *                           change afterwards
+     * @param environment        the light from where rays leave the scene (black: none)
+     * @param punctualLights     point, spot and directional lights
+     */
+    public LightSampler(Geometry geometry, Emission[] emissionByMaterial, Environment environment, List<PunctualLight> punctualLights) {
         this.geometry = geometry;
         this.environment = environment;
         this.emission = emissionByMaterial;
@@ -86,10 +137,38 @@ public final class LightSampler {
         for (int m = 0; m < emission.length; m++) {
             density[m] = total > 0 ? weight(m) / total : 0;
         }
-        this.pEnvironmentAlone = environment.isBlack() ? 0 : n == 0 ? 1 : ENVIRONMENT_PROBABILITY;
+        this.punctual = punctualLights.toArray(new PunctualLight[0]);
+        double radius = boundingRadius(geometry.bounds());
+        this.punctualCdf = new double[punctual.length];
+        this.punctualProbability = new double[punctual.length];
+        double sum = 0;
+        for (int i = 0; i < punctual.length; i++) {
+            punctualProbability[i] = punctual[i].power(radius);
+            sum += punctualProbability[i];
+            punctualCdf[i] = sum;
+        }
+        for (int i = 0; i < punctual.length; i++) {
+            punctualCdf[i] = sum > 0 ? punctualCdf[i] / sum : (i + 1.0) / punctual.length;
+            punctualProbability[i] = sum > 0 ? punctualProbability[i] / sum : 1.0 / punctual.length;
+        }
+        this.punctualPower = sum;
+        boolean local = n > 0 || punctual.length > 0;
+        double areaFlux = Math.PI * total;
+        this.pPunctualShare = punctual.length == 0 ? 0 : n == 0 ? 1 : sum / (sum + areaFlux);
+        this.pEnvironmentAlone = environment.isBlack() ? 0 : !local ? 1 : ENVIRONMENT_PROBABILITY;
         this.pAreaAlone = 1 - pEnvironmentAlone;
         this.pEnvironment = environment.isConstant() ? 0 : pEnvironmentAlone;
         this.pArea = 1 - pEnvironment;
+        this.pAreaLights = pArea * (1 - pPunctualShare);
+        this.pAreaLightsAlone = pAreaAlone * (1 - pPunctualShare);
+    }
+
+    /**
+     * The radius of the sphere around the centre of {@code box} that holds it: where a directional
+     * light's and the environment's photons start (1 for empty bounds).
+     */
+    public static double boundingRadius(Aabb box) {
+        return box.isEmpty() ? 1 : Math.max(1e-6, 0.5 * box.diagonal() * (1 + 1e-6));
     }
 
     /** Area lights only, no environment. */
@@ -112,9 +191,37 @@ public final class LightSampler {
         return prims.length;
     }
 
-    /** Whether there is nothing to sample: no area light and a black environment. */
+    /** Whether there is nothing to sample: no area light, no punctual light and a black environment. */
     public boolean isEmpty() {
-        return prims.length == 0 && pEnvironmentAlone == 0;
+        return prims.length == 0 && punctual.length == 0 && pEnvironmentAlone == 0;
+    }
+
+    /** Number of punctual lights. */
+    public int punctualCount() {
+        return punctual.length;
+    }
+
+    /** Total power of the punctual lights (mean over channels, W); see {@link PunctualLight}. */
+    public double punctualPower() {
+        return punctualPower;
+    }
+
+    /**
+     * Picks a punctual light in proportion to its power, for photon emission: returns its index
+     * (for {@link #punctualProbability} and {@link #punctualLight}).
+     */
+    public int selectPunctual(double u) {
+        return select(punctualCdf, u);
+    }
+
+    /** The probability with which {@link #selectPunctual} picks light i. */
+    public double punctualProbability(int i) {
+        return punctualProbability[i];
+    }
+
+    /** Punctual light i. */
+    public PunctualLight punctualLight(int i) {
+        return punctual[i];
     }
 
     /** Total emitted power over π: the sum of area × mean(Le) (the flux of a Lambertian emitter is π times this). */
@@ -122,19 +229,29 @@ public final class LightSampler {
         return totalPower;
     }
 
-    /** The emitted radiance of a material, black if it is not a light. */
-    public Rgb emission(int material) {
+    /** The emission of a material, {@link Emission#BLACK} if it is not a light. */
+    public Emission emission(int material) {
         return emission[material];
     }
 
+    /** Selection weight per unit area: the mean radiance's channel mean (over the texture for a textured emitter). */
     private double weight(int material) {
-        Rgb le = emission[material];
+        Rgb le = emission[material].mean();
         return (le.r() + le.g() + le.b()) / 3;
+    }
+
+    private static Emission[] constants(Rgb[] radiance) {
+        Emission[] out = new Emission[radiance.length];
+        for (int m = 0; m < out.length; m++) {
+            out[m] = Emission.of(radiance[m]);
+        }
+        return out;
     }
 
     /**
      * Samples a direction towards a light from {@code ref}: the environment with probability
-     * {@link #environmentProbability} (then {@code out.infinite}), else a point on an area light.
+     * {@link #environmentProbability} (then {@code out.infinite}), else a punctual light (then
+     * {@code out.delta}) or a point on an area light.
      * Returns false when nothing can be sampled or the chosen point faces away from ref.
      *
      * @param withConstant whether a constant environment is sampled too: true for light sampling
@@ -148,18 +265,28 @@ public final class LightSampler {
         if (uLight < pEnvironment) {
             double pdf = environment.sample(u1, u2, out.uv, out.wi, out.radiance);
             out.infinite = true;
+            out.delta = false;
             out.distance = Double.POSITIVE_INFINITY;
             out.pdf = pEnvironment * pdf;
             return pdf > 0 && Double.isFinite(out.pdf);
         }
-        if (prims.length == 0) {
+        if (prims.length == 0 && punctual.length == 0) {
             return false;
         }
         if (pEnvironment > 0) {
             uLight = Math.min((uLight - pEnvironment) / pArea, Math.nextDown(1.0));
         }
+        if (pPunctualShare > 0) {
+            if (uLight < pPunctualShare) {
+                int i = select(punctualCdf, Math.min(uLight / pPunctualShare, Math.nextDown(1.0)));
+                out.pdf = pArea * pPunctualShare * punctualProbability[i];
+                return punctual[i].illuminate(ref, out) && out.pdf > 0;
+            }
+            uLight = Math.min((uLight - pPunctualShare) / (1 - pPunctualShare), Math.nextDown(1.0));
+        }
         out.infinite = false;
-        geometry.samplePoint(prims[select(uLight)], u1, u2, scratch);
+        out.delta = false;
+        geometry.samplePoint(prims[select(cdf, uLight)], u1, u2, scratch);
         int m = scratch.material;
         out.p.set(scratch.p);
         out.ng.set(scratch.ng);
@@ -176,13 +303,13 @@ public final class LightSampler {
             return false;
         }
         out.distance = dist;
-        out.pdf = pArea * density[m] * dist * dist / cosLight;
-        out.radiance.set(emission[m]);
+        out.pdf = (withConstant ? pAreaLightsAlone : pAreaLights) * density[m] * dist * dist / cosLight;
+        emission[m].eval(scratch.uv, out.radiance);
         return out.pdf > 0 && Double.isFinite(out.pdf);
     }
 
     /** Index of the first emitter whose cumulative power exceeds u: a linear scan for a few lights, else bisection. */
-    private int select(double u) {
+    private static int select(double[] cdf, double u) {
         int n = cdf.length;
         if (n <= 8) {
             int i = 0;
@@ -206,7 +333,7 @@ public final class LightSampler {
         if (prims.length == 0) {
             return 0;
         }
-        geometry.samplePoint(prims[select(uLight)], u1, u2, dest);
+        geometry.samplePoint(prims[select(cdf, uLight)], u1, u2, dest);
         return weight(dest.material) / totalPower;
     }
 
@@ -219,7 +346,7 @@ public final class LightSampler {
         if (cosLight <= 0 || totalPower <= 0) {
             return 0;
         }
-        return pArea * density[material] * dist * dist / cosLight;
+        return pAreaLights * density[material] * dist * dist / cosLight;
     }
 
     /**

@@ -14,8 +14,8 @@ import dev.strahl.world.World;
 import org.joml.Vector3d;
 
 /**
- * Where photons start: on the area lights, in proportion to their power, and from the scene's
- * environment, if it has one. Each photon carries the flux an estimator of the total
+ * Where photons start: on the area lights, in proportion to their power, from the punctual
+ * lights and from the scene's environment, if it has one. Each photon carries the flux an estimator of the total
  * emitted power gives it: emitting it with density p (over everything that is sampled), it
  * carries Le·cosθ / p, so that the mean over photons is the total flux.
  *
@@ -34,9 +34,14 @@ import org.joml.Vector3d;
  *       towards the environment wi is sampled as for next-event estimation, {@link
  *       Environment#sample} (density p(wi)), the photon travels along −wi from a point of the same
  *       disk; flux L(wi)·πR² / p(wi).</li>
+ *   <li><b>Punctual lights</b>: one chosen by power ({@link LightSampler#selectPunctual}), its
+ *       photon from {@code PunctualLight.emit} (points: uniform directions; spots: uniform in the
+ *       outer cone, flux weighted by the falloff; directional: from the same disk as the
+ *       environment's), the flux divided by the light's probability.</li>
  * </ul>
- * When a scene has both, a photon comes from the lights with probability P_lights / (P_lights +
- * P_env) by mean power, and its flux is divided by that probability. One per thread (scratch).
+ * When a scene has several kinds, a photon comes from the area lights, the punctual lights or the
+ * environment with probability proportional to their mean power (P_area, P_punctual, P_env), and
+ * its flux is divided by that probability. One per thread (scratch).
  */
 final class PhotonSource {
     private final LightSampler lights;
@@ -44,6 +49,7 @@ final class PhotonSource {
     private final MutableRgb radiance = new MutableRgb();
     private final double[] uv = new double[2];
     private final double lightProbability;       // 1 without environment, 0 without lights
+    private final double punctualProbability;    // 0 without punctual lights
     private final Vector3d center = new Vector3d();
     private final double radius;
     private final SurfacePoint point = new SurfacePoint();
@@ -60,17 +66,19 @@ final class PhotonSource {
             this.radius = 1;
         } else {
             center.set(0.5 * (box.minX + box.maxX), 0.5 * (box.minY + box.maxY), 0.5 * (box.minZ + box.maxZ));
-            this.radius = Math.max(1e-6, 0.5 * box.diagonal() * (1 + 1e-6));
+            this.radius = LightSampler.boundingRadius(box);
         }
         double lightPower = lights.lightCount() == 0 ? 0 : Math.PI * lights.totalPower();
         double envPower = environment.power() * Math.PI * radius * radius;
-        double total = lightPower + envPower;
+        double punctualPower = lights.punctualPower();
+        double total = lightPower + envPower + punctualPower;
         this.lightProbability = total > 0 ? lightPower / total : 0;
+        this.punctualProbability = total > 0 ? punctualPower / total : 0;
     }
 
     /** Whether anything emits: without lights and environment there are no photons. */
     boolean isEmpty() {
-        return lights.lightCount() == 0 && environment.isBlack();
+        return lights.lightCount() == 0 && lights.punctualCount() == 0 && environment.isBlack();
     }
 
     /** Radius of the bounding sphere from which environment photons start. */
@@ -96,11 +104,20 @@ final class PhotonSource {
             SurfacePoint.offset(point.p, point.ng, dir, ray.o);
             ray.d.set(dir);
             ray.tMax = Double.POSITIVE_INFINITY;
-            flux.set(lights.emission(point.material)).mul(Math.PI / (pA * lightProbability));
+            lights.emission(point.material).eval(point.uv, flux).mul(Math.PI / (pA * lightProbability));
+            return false;
+        }
+        if (uChoice - lightProbability < punctualProbability) {
+            int i = lights.selectPunctual(sampler.get1D());
+            sampler.get2D(u);
+            double u1 = u.u1, u2 = u.u2;
+            sampler.get2D(u);
+            lights.punctualLight(i).emit(u1, u2, u.u1, u.u2, center, radius, frame, local, ray, flux);
+            flux.mul(1 / (lights.punctualProbability(i) * punctualProbability));
             return false;
         }
         sampler.get2D(u);
-        double scale = Math.PI * radius * radius / (1 - lightProbability);
+        double scale = Math.PI * radius * radius / (1 - lightProbability - punctualProbability);
         if (environment.isConstant()) {
             Warp.uniformSphere(u.u1, u.u2, dir);
             radiance.set(environment.constantRadiance()).mul(4 * Math.PI);

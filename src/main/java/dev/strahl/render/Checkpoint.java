@@ -367,6 +367,7 @@ final class Checkpoint {
             sb.append("lens ").append(c.aperture()).append(' ').append(c.focusDistance()).append('\n');
         }
         sb.append("environment ").append(world.environment()).append('\n');
+        world.punctualLights().forEach(l -> sb.append("light ").append(l).append('\n'));   // none: the digest stays what it was
         md.update(sb.toString().getBytes(StandardCharsets.UTF_8));
         return md.digest();
     }

@@ -72,6 +72,22 @@ public final class Warp {
     }
 
     /**
+     * Uniform direction in the cone of half-angle θmax around z, cosθ uniform in [cosθmax, 1]
+     * (pbrt-v4 §A.5.4, {@code SampleUniformCone}). pdf = 1/(2π(1 − cosθmax)).
+     */
+    public static Vector3d uniformCone(double u1, double u2, double cosThetaMax, Vector3d dest) {
+        double z = 1 - u1 * (1 - cosThetaMax);
+        double r = Math.sqrt(Math.max(0, 1 - z * z));
+        double phi = 2 * Math.PI * u2;
+        return dest.set(r * Math.cos(phi), r * Math.sin(phi), z);
+    }
+
+    /** Density of {@link #uniformCone} at a direction whose cosine with z is {@code cosTheta}: 0 outside the cone. */
+    public static double uniformConePdf(double cosTheta, double cosThetaMax) {
+        return cosTheta >= cosThetaMax && cosThetaMax < 1 ? INV_TWO_PI / (1 - cosThetaMax) : 0;
+    }
+
+    /**
      * Uniform barycentric coordinates (b0, b1) on a triangle, into {@code dest.x, dest.y}; the
      * point is b0·p0 + b1·p1 + (1 − b0 − b1)·p2. Uses the square-root parametrisation
      * (Osada et al. 2002; pbrt-v4 §6.5.4). pdf = 1/area.

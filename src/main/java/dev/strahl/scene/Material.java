@@ -11,7 +11,6 @@ import dev.strahl.material.Principled;
 import dev.strahl.material.RoughDielectric;
 import dev.strahl.texture.Bitmap;
 import dev.strahl.texture.Channel;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
@@ -19,29 +18,27 @@ import java.util.Set;
 import java.util.TreeSet;
 
 /**
- * What a surface is made of: how it scatters light and the radiance it emits (black for
- * non-emitters). Emission is one-sided, into the hemisphere of the geometric normal; every
- * material but glass scatters alike on both sides. Immutable; made by the factories below.
+ * What a surface is made of: how it scatters light, the radiance it emits (black for
+ * non-emitters; constant or a texture), and optionally a tangent-space normal map and an alpha
+ * cut-out. Emission is one-sided, into the hemisphere of the geometric normal; every material
+ * but glass scatters alike on both sides. Immutable; made by the factories below.
  */
 public final class Material {
     private final String name;
-    private final Bsdf bsdf;
-    private final Rgb emission;
-    /** The images its textures read (for memory figures). */
-    private final List<Bitmap> images;
+    private final Surface surface;
 
     private Material(String name, Bsdf bsdf, Rgb emission) {
-        this(name, bsdf, emission, List.of());
+        this(name, Surface.of(bsdf, emission, List.of()));
     }
 
     private Material(String name, Bsdf bsdf, Rgb emission, List<Bitmap> images) {
+        this(name, Surface.of(bsdf, emission, images));
+    }
+
+    private Material(String name, Surface surface) {
         this.name = Objects.requireNonNull(name, "name");
-        this.bsdf = Objects.requireNonNull(bsdf, "bsdf");
-        this.emission = Objects.requireNonNull(emission, "emission");
-        this.images = List.copyOf(images);
-        if (emission.r() < 0 || emission.g() < 0 || emission.b() < 0) {
-            throw new IllegalArgumentException("emission must not be negative, got " + emission + " for material '" + name + "'");
-        }
+        this.surface = surface;
+        Surface.nonNegative(surface.emission(), "emission", name);
     }
 
     /** A material with a given scattering function (for strahl's own packages and tests). */
@@ -59,33 +56,31 @@ public final class Material {
     }
 
     /**
-     * The emitted radiance Le, linear RGB.
+     * The emitted radiance Le, linear RGB; for a textured emitter the strength times the
+     * texture's mean.
      *
      * @return black for a material that does not emit
      */
     public Rgb emission() {
-        return emission;
+        return surface.meanEmission();
     }
 
     Bsdf bsdf() {
-        return bsdf;
+        return surface.bsdf();
+    }
+
+    /** The internals the world is built from. */
+    Surface surface() {
+        return surface;
     }
 
     /** The images the material's textures read, each once. */
     List<Bitmap> images() {
-        return images;
+        return surface.images();
     }
 
-    /** The images behind some textures (their sRGB-decoded twins where colours are read). */
     private static List<Bitmap> images(dev.strahl.texture.Texture... textures) {
-        List<Bitmap> out = new ArrayList<>();
-        for (dev.strahl.texture.Texture t : textures) {
-            Bitmap b = t.bitmap();
-            if (b != null && out.stream().noneMatch(x -> x == b)) {
-                out.add(b);
-            }
-        }
-        return out;
+        return Surface.images(textures);
     }
 
     /**
@@ -215,196 +210,9 @@ public final class Material {
      * texture's luminance unless a channel is given, as glTF's metallicRoughness texture keeps
      * roughness in G and metallic in B ({@link #metallicRoughness}).
      */
-    public static final class PrincipledBuilder {
-        private final String name;
-        private dev.strahl.texture.Texture baseColor = dev.strahl.texture.Texture.of(Rgb.WHITE);
-        private dev.strahl.texture.Texture metallic = dev.strahl.texture.Texture.of(1);
-        private dev.strahl.texture.Texture roughness = dev.strahl.texture.Texture.of(1);
-        private dev.strahl.texture.Texture specular = dev.strahl.texture.Texture.of(1);
-        private dev.strahl.texture.Texture specularColor = dev.strahl.texture.Texture.of(Rgb.WHITE);
-        private dev.strahl.texture.Texture transmission = dev.strahl.texture.Texture.of(0);
-        private double ior = 1.5;
-        private Rgb emission = Rgb.BLACK;
-
+    public static final class PrincipledBuilder extends PrincipledParameters {
         private PrincipledBuilder(String name) {
-            this.name = Objects.requireNonNull(name, "name");
-        }
-
-        /**
-         * The base colour.
-         *
-         * @param colour linear RGB, each channel in [0, 1]
-         * @return this builder
-         */
-        public PrincipledBuilder baseColor(Rgb colour) {
-            checkUnit(colour, "baseColor");
-            baseColor = dev.strahl.texture.Texture.of(colour);
-            return this;
-        }
-
-        /**
-         * The base colour as a texture.
-         *
-         * @param texture a colour texture
-         * @return this builder
-         */
-        public PrincipledBuilder baseColor(Texture texture) {
-            baseColor = texture.colour();
-            return this;
-        }
-
-        /**
-         * Metallic: 0 a dielectric, 1 a metal.
-         *
-         * @param value in [0, 1]
-         * @return this builder
-         */
-        public PrincipledBuilder metallic(double value) {
-            metallic = dev.strahl.texture.Texture.of(unit(value, "metallic"));
-            return this;
-        }
-
-        /**
-         * Metallic as a texture (its luminance).
-         *
-         * @param texture a linear texture
-         * @return this builder
-         */
-        public PrincipledBuilder metallic(Texture texture) {
-            metallic = texture.scalar(Channel.LUMINANCE);
-            return this;
-        }
-
-        /**
-         * Perceptual roughness; GGX α = roughness².
-         *
-         * @param value in [0, 1]
-         * @return this builder
-         */
-        public PrincipledBuilder roughness(double value) {
-            roughness = dev.strahl.texture.Texture.of(unit(value, "roughness"));
-            return this;
-        }
-
-        /**
-         * Roughness as a texture (its luminance).
-         *
-         * @param texture a linear texture
-         * @return this builder
-         */
-        public PrincipledBuilder roughness(Texture texture) {
-            roughness = texture.scalar(Channel.LUMINANCE);
-            return this;
-        }
-
-        /**
-         * glTF's metallicRoughness texture: roughness from its G channel, metallic from its B channel.
-         *
-         * @param texture a linear texture
-         * @return this builder
-         */
-        public PrincipledBuilder metallicRoughness(Texture texture) {
-            roughness = texture.scalar(Channel.G);
-            metallic = texture.scalar(Channel.B);
-            return this;
-        }
-
-        /**
-         * KHR_materials_specular's specular factor: the strength of the dielectric's specular layer (0: a pure Lambertian base).
-         *
-         * @param value in [0, 1]
-         * @return this builder
-         */
-        public PrincipledBuilder specular(double value) {
-            specular = dev.strahl.texture.Texture.of(unit(value, "specular"));
-            return this;
-        }
-
-        /**
-         * The specular factor as a texture (its luminance).
-         *
-         * @param texture a linear texture
-         * @return this builder
-         */
-        public PrincipledBuilder specular(Texture texture) {
-            specular = texture.scalar(Channel.LUMINANCE);
-            return this;
-        }
-
-        /**
-         * KHR_materials_specular's specular colour, which tints the dielectric's f0.
-         *
-         * @param colour linear RGB, each channel ≥ 0
-         * @return this builder
-         */
-        public PrincipledBuilder specularColor(Rgb colour) {
-            if (colour.r() < 0 || colour.g() < 0 || colour.b() < 0) {
-                throw new IllegalArgumentException("specularColor must not be negative, got " + colour + " for material '" + name + "'");
-            }
-            specularColor = dev.strahl.texture.Texture.of(colour);
-            return this;
-        }
-
-        /**
-         * The specular colour as a texture.
-         *
-         * @param texture a colour texture
-         * @return this builder
-         */
-        public PrincipledBuilder specularColor(Texture texture) {
-            specularColor = texture.colour();
-            return this;
-        }
-
-        /**
-         * KHR_materials_transmission's factor: the part of the dielectric base that is transmitted (thin-walled).
-         *
-         * @param value in [0, 1]
-         * @return this builder
-         */
-        public PrincipledBuilder transmission(double value) {
-            transmission = dev.strahl.texture.Texture.of(unit(value, "transmission"));
-            return this;
-        }
-
-        /**
-         * The transmission factor as a texture (its luminance).
-         *
-         * @param texture a linear texture
-         * @return this builder
-         */
-        public PrincipledBuilder transmission(Texture texture) {
-            transmission = texture.scalar(Channel.LUMINANCE);
-            return this;
-        }
-
-        /**
-         * The index of refraction, which sets the dielectric's f0 = ((ior − 1)/(ior + 1))².
-         *
-         * @param value positive
-         * @return this builder
-         */
-        public PrincipledBuilder ior(double value) {
-            if (!(value > 0) || !Double.isFinite(value)) {
-                throw new IllegalArgumentException("ior must be positive, got " + value + " for material '" + name + "'");
-            }
-            ior = value;
-            return this;
-        }
-
-        /**
-         * Emitted radiance: colour × strength (glTF's emissiveFactor and KHR_materials_emissive_strength).
-         *
-         * @param colour   linear RGB, not negative
-         * @param strength a factor ≥ 0
-         * @return this builder
-         */
-        public PrincipledBuilder emission(Rgb colour, double strength) {
-            if (!(strength >= 0) || !Double.isFinite(strength)) {
-                throw new IllegalArgumentException("emission strength must be >= 0, got " + strength + " for material '" + name + "'");
-            }
-            emission = colour.scale(strength);
-            return this;
+            super(name);
         }
 
         /**
@@ -413,21 +221,9 @@ public final class Material {
          * @return a new material
          */
         public Material build() {
-            return new Material(name, new Principled(baseColor, metallic, roughness, specular, specularColor, transmission, ior), emission,
+            Surface s = Surface.of(new Principled(baseColor, metallic, roughness, specular, specularColor, transmission, ior), emission,
                     images(baseColor, metallic, roughness, specular, specularColor, transmission));
-        }
-
-        private double unit(double value, String what) {
-            if (!(value >= 0 && value <= 1)) {
-                throw new IllegalArgumentException(what + " must lie in [0, 1], got " + value + " for material '" + name + "'");
-            }
-            return value;
-        }
-
-        private void checkUnit(Rgb c, String what) {
-            if (c.r() < 0 || c.g() < 0 || c.b() < 0 || c.max() > 1) {
-                throw new IllegalArgumentException(what + " must lie in [0, 1], got " + c + " for material '" + name + "'");
-            }
+            return new Material(name, emissionTexture == null ? s : s.withEmission(emission, emissionTexture));
         }
     }
 
@@ -498,7 +294,55 @@ public final class Material {
      * @return a new material
      */
     public Material withEmission(Rgb radiance) {
-        return new Material(name, bsdf, radiance, images);
+        return new Material(name, surface.withEmission(radiance, null));
+    }
+
+    /**
+     * The same surface emitting a texture: Le(u, v) = radiance(u, v) × strength (a one-sided area
+     * light; the texture is sRGB-decoded unless {@link Texture#linear()}). Light sampling picks
+     * its points by area and weighs the emitter by its mean radiance.
+     *
+     * @param radiance a colour texture
+     * @param strength a factor ≥ 0
+     * @return a new material
+     */
+    public Material withEmission(Texture radiance, double strength) {
+        Surface.nonNegative(strength, "emission strength", name);
+        if (radiance.isConstant()) {
+            return withEmission(radiance.constantColour().scale(strength));
+        }
+        return new Material(name, surface.withEmission(Rgb.gray(strength), radiance.colour()));
+    }
+
+    /**
+     * The same surface with a tangent-space normal map (glTF's normalTexture: linear texels,
+     * n = 2·rgb − 1 with x along the texture's u direction, y along v, z along the surface
+     * normal; tangents from the texture coordinates, MikkTSpace's convention). It tilts the
+     * shading normal of every kind of material.
+     *
+     * @param map   the normal map, read as linear data whether or not it is {@link Texture#linear()}
+     * @param scale glTF's normalTexture.scale: multiplies x and y, finite
+     * @return a new material
+     */
+    public Material withNormalMap(Texture map, double scale) {
+        if (!Double.isFinite(scale)) {
+            throw new IllegalArgumentException("normal map scale must be finite, got " + scale + " for material '" + name + "'");
+        }
+        return new Material(name, surface.withNormalMap(map.data(), scale));
+    }
+
+    /**
+     * The same surface with an alpha cut-out: where alpha(u, v) &lt; cutoff the surface is absent
+     * (camera, bounce and shadow rays pass through it unchanged; an emitter emits nothing there).
+     * The texture's luminance is read, or its alpha channel for {@link Texture#alpha()}.
+     *
+     * @param alpha  a scalar texture, linear
+     * @param cutoff the threshold, in [0, 1]
+     * @return a new material
+     */
+    public Material withAlphaCutout(Texture alpha, double cutoff) {
+        Surface.unit(cutoff, "alpha cutoff", name);
+        return new Material(name, surface.withAlpha(alpha.scalar(Channel.LUMINANCE), cutoff));
     }
 
     /**
@@ -507,22 +351,22 @@ public final class Material {
      * @return true if its emission is not black
      */
     public boolean isEmissive() {
-        return !emission.isBlack();
+        return !surface.meanEmission().isBlack();
     }
 
     @Override
     public boolean equals(Object o) {
-        return o instanceof Material m && m.name.equals(name) && m.bsdf.equals(bsdf) && m.emission.equals(emission);
+        return o instanceof Material m && m.name.equals(name) && m.surface.equals(surface);
     }
 
     @Override
     public int hashCode() {
-        return Objects.hash(name, bsdf, emission);
+        return Objects.hash(name, surface);
     }
 
-    /** The name, the scattering function with all its parameters and the emission. */
+    /** The name, the scattering function with all its parameters, the emission and the maps. */
     @Override
     public String toString() {
-        return "Material[name=" + name + ", bsdf=" + bsdf + ", emission=" + emission + "]";
+        return "Material[name=" + name + ", bsdf=" + surface.bsdf() + ", emission=" + surface.emission() + surface.describeMaps() + "]";
     }
 }

@@ -1,14 +1,16 @@
 package dev.strahl.scene;
 
-import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.GeometryBuilder;
 import dev.strahl.geometry.MeshTopology;
 import dev.strahl.geometry.Sphere;
 import dev.strahl.image.Image;
 import dev.strahl.image.Rgb;
+import dev.strahl.light.Emission;
 import dev.strahl.light.Environment;
+import dev.strahl.light.PunctualLight;
 import dev.strahl.material.Bsdf;
+import dev.strahl.world.SurfaceMaps;
 import dev.strahl.world.World;
 import java.util.ArrayList;
 import java.util.IdentityHashMap;
@@ -20,6 +22,8 @@ import org.joml.Vector3dc;
 /**
  * Everything a render needs: shapes with their materials, the lights among them, a camera and the
  * environment (a constant radiance or a latitude–longitude map).
+ * Lights are emissive materials, punctual lights ({@link Builder#pointLight}, {@link
+ * Builder#spotLight}, {@link Builder#directionalLight}) and the environment.
  * A scene without any light gets strahl's studio sky (a procedural sky with a soft sun) and, without
  * a camera, is framed from a raised three-quarter view; {@link #notes()} says so. A scene with
  * lights but no camera is framed from +Z. Immutable once built (the BVH is built then, once) and safe to share
@@ -150,6 +154,7 @@ public final class Scene {
         private final List<Material> materials = new ArrayList<>();
         private final Map<Material, Integer> materialIndex = new IdentityHashMap<>();
         private final List<String> notes = new ArrayList<>();
+        private final List<PunctualLight> punctual = new ArrayList<>();
         private Camera camera;
         private Environment environment;
 
@@ -304,6 +309,49 @@ public final class Scene {
         }
 
         /**
+         * Adds a point light (glTF {@code KHR_lights_punctual} "point"): the irradiance it gives a
+         * surface at distance d, facing it, is I/d². A delta light: only light sampling finds it.
+         * @param position  where it is
+         * @param intensity radiant intensity I, W/sr per channel, ≥ 0
+         * @return this builder
+         * @throws IllegalArgumentException if the position is not finite or the intensity negative
+         */
+        public Builder pointLight(Vector3dc position, Rgb intensity) {
+            punctual.add(PunctualLight.point(position, intensity));
+            return this;
+        }
+
+        /**
+         * Adds a spot light (glTF "spot"): a point light whose intensity I is scaled by glTF's
+         * falloff clamp((cd − cos outer) / (cos inner − cos outer), 0, 1)², cd the cosine between
+         * {@code direction} and the way from the light to the lit point.
+         *
+         * @param position          where it is
+         * @param direction         its axis, the direction it shines in (any length but zero)
+         * @param intensity         radiant intensity I on the axis, W/sr per channel, ≥ 0
+         * @param innerConeRadians  full intensity within this angle of the axis, ≥ 0
+         * @param outerConeRadians  no light beyond this angle, ≥ inner, &gt; 0 and ≤ π/2
+         * @return this builder
+         * @throws IllegalArgumentException for angles out of range, a zero direction or a negative intensity
+         */
+        public Builder spotLight(Vector3dc position, Vector3dc direction, Rgb intensity, double innerConeRadians, double outerConeRadians) {
+            punctual.add(PunctualLight.spot(position, direction, intensity, innerConeRadians, outerConeRadians));
+            return this;
+        }
+
+        /**
+         * Adds a directional light (glTF "directional"): parallel light, as from a distant sun.
+         * @param direction  the direction the light travels (any length but zero)
+         * @param irradiance irradiance E on a surface facing the light, W/m² per channel, ≥ 0
+         * @return this builder
+         * @throws IllegalArgumentException for a zero direction or a negative irradiance
+         */
+        public Builder directionalLight(Vector3dc direction, Rgb irradiance) {
+            punctual.add(PunctualLight.directional(direction, irradiance));
+            return this;
+        }
+
+        /**
          * Adds a remark for the user (e.g. from a loader); start a warning with {@code "warning: "}.
          *
          * @param note one line
@@ -322,26 +370,24 @@ public final class Scene {
         public Scene build() {
             Geometry g = geometry.build();
             Bsdf[] bsdfs = new Bsdf[materials.size()];
-            Rgb[] emission = new Rgb[materials.size()];
+            Emission[] emission = new Emission[materials.size()];
+            SurfaceMaps[] maps = new SurfaceMaps[materials.size()];
             for (int i = 0; i < bsdfs.length; i++) {
-                bsdfs[i] = materials.get(i).bsdf();
-                emission[i] = materials.get(i).emission();
+                Surface surface = materials.get(i).surface();
+                bsdfs[i] = surface.bsdf();
+                emission[i] = surface.emissionTable();
+                maps[i] = surface.maps();
             }
-            Environment env = environment;
-            boolean studio = false;
-            if (env == null) {
-                studio = !anyEmits(g, emission);
-                env = studio ? StudioSky.environment() : Environment.BLACK;
-            }
-            World world = World.build(g, bsdfs, emission, env);
-            Aabb bounds = world.bounds();
+            boolean studio = environment == null && punctual.isEmpty() && !anyEmits(g, emission);
+            Environment env = environment != null ? environment : studio ? StudioSky.environment() : Environment.BLACK;
+            World world = World.build(g, bsdfs, emission, maps, env, punctual);
             // A bare model (no light) is an object: shown from above at three quarters. A scene with
             // its own lights is often a room made to be seen from its open front (the Cornell Box): +Z.
-            Camera cam = camera != null ? camera : studio ? Camera.framing(bounds, 40) : Camera.frontFraming(bounds, 40);
+            Camera cam = camera != null ? camera : studio ? Camera.framing(world.bounds(), 40) : Camera.frontFraming(world.bounds(), 40);
             return new Scene(world, List.copyOf(materials), cam, List.copyOf(notes), studio, camera == null);
         }
 
-        private static boolean anyEmits(Geometry g, Rgb[] emission) {
+        private static boolean anyEmits(Geometry g, Emission[] emission) {
             for (int prim = 0; prim < g.primitiveCount(); prim++) {
                 if (!emission[g.material(prim)].isBlack()) {
                     return true;

@@ -46,14 +46,21 @@ public final class Texture {
     private final boolean linear;
     private final UvTransform transform;
     private final Wrap wrap;
+    /** The one channel the texture reads ({@link #alpha()}), or null for all. */
+    private final Channel channel;
 
     private Texture(Path file, Bitmap bitmap, Rgb constant, boolean linear, UvTransform transform, Wrap wrap) {
+        this(file, bitmap, constant, linear, transform, wrap, null);
+    }
+
+    private Texture(Path file, Bitmap bitmap, Rgb constant, boolean linear, UvTransform transform, Wrap wrap, Channel channel) {
         this.file = file;
         this.bitmap = bitmap;
         this.constant = constant;
         this.linear = linear;
         this.transform = transform;
         this.wrap = wrap;
+        this.channel = channel;
     }
 
     /**
@@ -95,7 +102,29 @@ public final class Texture {
      * @return a new texture
      */
     public Texture linear() {
-        return new Texture(file, bitmap, constant, true, transform, wrap);
+        return new Texture(file, bitmap, constant, true, transform, wrap, channel);
+    }
+
+    /**
+     * The image's alpha channel as a scalar texture (linear; read as a grey value wherever a
+     * colour is asked for): 1 where the image has none, and 1 for a constant.
+     *
+     * @return a new texture with this one's coordinates and wrap mode
+     */
+    public Texture alpha() {
+        if (constant != null) {
+            return constant(1);
+        }
+        return new Texture(file, bitmap, null, true, transform, wrap, Channel.A);
+    }
+
+    /**
+     * Whether the image has an alpha channel (grey + alpha or RGBA).
+     *
+     * @return false for a constant and for images without alpha
+     */
+    public boolean hasAlpha() {
+        return bitmap != null && (bitmap.channels() == 2 || bitmap.channels() == 4);
     }
 
     /**
@@ -107,7 +136,7 @@ public final class Texture {
      * @return a new texture
      */
     public Texture withUvScale(double su, double sv) {
-        return new Texture(file, bitmap, constant, linear, new UvTransform(su, sv, transform.offsetU(), transform.offsetV(), 0), wrap);
+        return new Texture(file, bitmap, constant, linear, new UvTransform(su, sv, transform.offsetU(), transform.offsetV(), 0), wrap, channel);
     }
 
     /**
@@ -118,7 +147,7 @@ public final class Texture {
      * @return a new texture
      */
     public Texture withUvOffset(double ou, double ov) {
-        return new Texture(file, bitmap, constant, linear, new UvTransform(transform.scaleU(), transform.scaleV(), ou, ov, 0), wrap);
+        return new Texture(file, bitmap, constant, linear, new UvTransform(transform.scaleU(), transform.scaleV(), ou, ov, 0), wrap, channel);
     }
 
     /**
@@ -128,7 +157,7 @@ public final class Texture {
      * @return a new texture
      */
     public Texture withWrap(Wrap mode) {
-        return new Texture(file, bitmap, constant, linear, transform, Objects.requireNonNull(mode, "mode"));
+        return new Texture(file, bitmap, constant, linear, transform, Objects.requireNonNull(mode, "mode"), channel);
     }
 
     /**
@@ -149,20 +178,36 @@ public final class Texture {
         return constant != null;
     }
 
-    /** The texture as a colour: sRGB-decoded texels unless linear. */
+    /** The constant's colour; null for an image. */
+    Rgb constantColour() {
+        return constant;
+    }
+
+    /** The texture as a colour: sRGB-decoded texels unless linear (an {@link #alpha()} texture: its grey value). */
     dev.strahl.texture.Texture colour() {
         if (constant != null) {
             return dev.strahl.texture.Texture.of(constant);
         }
+        if (channel != null) {
+            return new ImageTexture(bitmap, wrap(), transform, channel);
+        }
         return new ImageTexture(linear ? bitmap : bitmap.srgbDecoded(), wrap(), transform, Channel.LUMINANCE);
     }
 
-    /** The texture as a number from a channel of the linear texels. */
+    /** The texture as linear data (normal maps): the texels as stored, never sRGB-decoded. */
+    dev.strahl.texture.Texture data() {
+        if (constant != null) {
+            return dev.strahl.texture.Texture.of(constant);
+        }
+        return new ImageTexture(bitmap, wrap(), transform, channel != null ? channel : Channel.LUMINANCE);
+    }
+
+    /** The texture as a number from a channel of the linear texels ({@link #alpha()}'s channel if it has one). */
     dev.strahl.texture.Texture scalar(Channel channel) {
         if (constant != null) {
             return new ConstantTexture(constant, channelOf(constant, channel));
         }
-        return new ImageTexture(bitmap, wrap(), transform, channel);
+        return new ImageTexture(bitmap, wrap(), transform, this.channel != null ? this.channel : channel);
     }
 
     private static double channelOf(Rgb c, Channel channel) {
@@ -187,12 +232,12 @@ public final class Texture {
     @Override
     public boolean equals(Object o) {
         return o instanceof Texture t && Objects.equals(file, t.file) && t.bitmap == bitmap && Objects.equals(constant, t.constant)
-                && linear == t.linear && transform.equals(t.transform) && wrap == t.wrap;
+                && linear == t.linear && transform.equals(t.transform) && wrap == t.wrap && channel == t.channel;
     }
 
     @Override
     public int hashCode() {
-        return Objects.hash(file, constant, linear, transform, wrap);
+        return Objects.hash(file, constant, linear, transform, wrap, channel);
     }
 
     @Override
@@ -200,7 +245,7 @@ public final class Texture {
         if (constant != null) {
             return "Texture[" + constant + "]";
         }
-        return "Texture[" + file + (linear ? ", linear" : "") + (transform.isIdentity() ? "" : ", " + transform)
+        return "Texture[" + file + (channel != null ? ", alpha" : linear ? ", linear" : "") + (transform.isIdentity() ? "" : ", " + transform)
                 + (wrap != Wrap.REPEAT ? ", " + wrap : "") + "]";
     }
 }

@@ -27,6 +27,11 @@ public record ImageTexture(Bitmap bitmap, Wrap wrap, UvTransform transform, Chan
 
     @Override
     public void rgb(double u, double v, MutableRgb dest) {
+        if (channel == Channel.A) {
+            double a = value(u, v);                // an alpha texture is grey wherever a colour is asked for
+            dest.set(a, a, a);
+            return;
+        }
         Bitmap b = bitmap;
         double su = mapU(u, v) * b.width() - 0.5, sv = mapV(u, v) * b.height() - 0.5;
         if (!Double.isFinite(su) || !Double.isFinite(sv)) {
@@ -98,6 +103,14 @@ public record ImageTexture(Bitmap bitmap, Wrap wrap, UvTransform transform, Chan
     public Rgb mean() {
         double r = 0, g = 0, bl = 0;
         Bitmap b = bitmap;
+        if (channel == Channel.A) {
+            for (int y = 0; y < b.height(); y++) {
+                for (int x = 0; x < b.width(); x++) {
+                    r += b.value(x, y, Channel.A);
+                }
+            }
+            return Rgb.gray(r / ((double) b.width() * b.height()));
+        }
         int n = b.channels();
         float[] d = b.data;
         for (int i = 0; i < d.length; i += n) {

@@ -1,6 +1,7 @@
 package dev.strahl.viewer;
 
 import dev.strahl.film.Tonemap;
+import dev.strahl.image.ToneMapping;
 import java.awt.image.BufferedImage;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -15,8 +16,9 @@ import java.util.function.Consumer;
  * coalesced: only the newest waiting frame is converted, older ones are dropped, and so are frames
  * of a job older than one already shown. Each result is a new {@link BufferedImage} (written
  * through its data buffer by {@link Tonemap}), published whole by one reference: the display never
- * sees half of one pass and half of the next. Changing the exposure re-converts the last frame
- * and never restarts rendering.
+ * sees half of one pass and half of the next. Changing the exposure or the tone curve
+ * ({@link ToneMapping}: clamp, ACES, AgX, as {@code --tonemap} for PNGs) re-converts the last
+ * frame and never restarts rendering.
  */
 final class FramePresenter implements Consumer<RenderController.Frame>, AutoCloseable {
 
@@ -25,7 +27,7 @@ final class FramePresenter implements Consumer<RenderController.Frame>, AutoClos
     static final double MAX_EXPOSURE = 10;
 
     /** A converted frame: what the image panel paints. */
-    record Shown(BufferedImage image, RenderController.Frame frame, double exposure) {}
+    record Shown(BufferedImage image, RenderController.Frame frame, double exposure, ToneMapping curve) {}
 
     private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
         Thread t = new Thread(r, "strahl-viewer-display");
@@ -35,6 +37,7 @@ final class FramePresenter implements Consumer<RenderController.Frame>, AutoClos
     private final AtomicBoolean scheduled = new AtomicBoolean();
     private RenderController.Frame latest;     // guarded by this
     private volatile double exposure;
+    private volatile ToneMapping curve = ToneMapping.CLAMP;
     private volatile Shown shown;
     private final List<Runnable> onShown = new CopyOnWriteArrayList<>();
 
@@ -61,6 +64,16 @@ final class FramePresenter implements Consumer<RenderController.Frame>, AutoClos
 
     double exposure() {
         return exposure;
+    }
+
+    /** Sets the display's tone curve (display only, as the exposure). */
+    void setToneMapping(ToneMapping newCurve) {
+        curve = java.util.Objects.requireNonNull(newCurve, "curve");
+        schedule();
+    }
+
+    ToneMapping toneMapping() {
+        return curve;
     }
 
     /** The last converted frame, or null before the first one. */
@@ -92,11 +105,12 @@ final class FramePresenter implements Consumer<RenderController.Frame>, AutoClos
         scheduled.set(false);                  // a frame arriving from now on schedules another round
         RenderController.Frame f = latest();
         double e = exposure;
+        ToneMapping c = curve;
         Shown s = shown;
-        if (f == null || (s != null && s.frame() == f && s.exposure() == e)) {
+        if (f == null || (s != null && s.frame() == f && s.exposure() == e && s.curve() == c)) {
             return;
         }
-        shown = new Shown(Tonemap.toBufferedImage(f.image(), e), f, e);
+        shown = new Shown(Tonemap.toBufferedImage(f.image(), e, c), f, e, c);
         onShown.forEach(Runnable::run);
     }
 

@@ -184,6 +184,7 @@ final class ViewerActions {
         view.add(item(brighter));
         view.add(item(darker));
         view.add(item(normalExposure));
+        view.add(ToneMenu.menu(presenter));
         bar.add(view);
 
         JMenu help = new JMenu("Help");

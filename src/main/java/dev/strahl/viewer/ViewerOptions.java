@@ -1,5 +1,6 @@
 package dev.strahl.viewer;
 
+import dev.strahl.render.Aov;
 import dev.strahl.render.IntegratorKind;
 import dev.strahl.render.PhotonParameters;
 import dev.strahl.render.RenderSettings;
@@ -32,10 +33,11 @@ import java.util.Set;
  * @param given      the settings given explicitly (on the command line): a scene file does not override them
  * @param photons      photons per iteration for the photon mapper
  * @param photonRadius the photon mapper's initial gather radius; 0 = automatic
+ * @param aovs         the feature buffers the render keeps ({@code --aov}, a scene file's {@code film.aovs})
  */
 public record ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere,
                             int threads, long seed, IntegratorKind integrator, int lightSamples, Theme theme, Set<Setting> given,
-                            int photons, double photonRadius) {
+                            int photons, double photonRadius, Set<Aov> aovs) {
 
     /**
      * The scene-file settings the viewer never takes from a file: its stop-at count is an
@@ -51,7 +53,16 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
         Objects.requireNonNull(integrator, "integrator");
         Objects.requireNonNull(theme, "theme");
         given = Set.copyOf(Objects.requireNonNull(given, "given"));
+        aovs = Set.copyOf(Objects.requireNonNull(aovs, "aovs"));
         renderSettings(width, height, maxDepth, hemisphere, threads, seed, integrator, lightSamples, photons, photonRadius);   // validates
+    }
+
+    /** Options without feature buffers. */
+    public ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere, int threads,
+                         long seed, IntegratorKind integrator, int lightSamples, Theme theme, Set<Setting> given, int photons,
+                         double photonRadius) {
+        this(scene, width, height, stopAt, maxDepth, hemisphere, threads, seed, integrator, lightSamples, theme, given, photons,
+                photonRadius, Set.of());
     }
 
     /** Options with the photon mapper's default parameters. */
@@ -71,7 +82,8 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
 
     /** The render settings these options describe, without a scene file (validated by {@link RenderSettings}). */
     RenderSettings renderSettings() {
-        return renderSettings(width, height, maxDepth, hemisphere, threads, seed, integrator, lightSamples, photons, photonRadius);
+        RenderSettings s = renderSettings(width, height, maxDepth, hemisphere, threads, seed, integrator, lightSamples, photons, photonRadius);
+        return s.withAovs(aovs.isEmpty() ? EnumSet.noneOf(Aov.class) : EnumSet.copyOf(aovs));
     }
 
     /**

@@ -4,9 +4,12 @@ import dev.strahl.accel.Bvh;
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.image.Rgb;
+import dev.strahl.light.Emission;
 import dev.strahl.light.Environment;
 import dev.strahl.light.LightSampler;
+import dev.strahl.light.PunctualLight;
 import dev.strahl.material.Bsdf;
+import java.util.List;
 import java.util.Objects;
 import java.util.function.Function;
 
@@ -29,21 +32,33 @@ public final class World {
     private final Bvh bvh;
     private final LightSampler lights;
     private final Bsdf[] bsdfs;
-    private final Rgb[] emission;
+    private final Emission[] emission;
+    private final SurfaceMaps[] maps;
+    private final boolean cutouts;
     private final Environment environment;
+    private final List<PunctualLight> punctualLights;
     private final double bvhBuildSeconds;
 
-    private World(Geometry geometry, Bvh bvh, Bsdf[] bsdfs, Rgb[] emission, Environment environment, double bvhBuildSeconds) {
-        this(geometry, bvh, new LightSampler(geometry, emission, environment), bsdfs, emission, environment, bvhBuildSeconds);
+    private World(Geometry geometry, Bvh bvh, Bsdf[] bsdfs, Emission[] emission, SurfaceMaps[] maps, Environment environment,
+                  List<PunctualLight> punctual, double bvhBuildSeconds) {
+        this(geometry, bvh, new LightSampler(geometry, emission, environment, punctual), bsdfs, emission, maps, environment, punctual,
+                bvhBuildSeconds);
     }
 
-    private World(Geometry geometry, Bvh bvh, LightSampler lights, Bsdf[] bsdfs, Rgb[] emission, Environment environment,
-                  double bvhBuildSeconds) {
+    private World(Geometry geometry, Bvh bvh, LightSampler lights, Bsdf[] bsdfs, Emission[] emission, SurfaceMaps[] maps,
+                  Environment environment, List<PunctualLight> punctual, double bvhBuildSeconds) {
         this.geometry = geometry;
         this.bvh = bvh;
         this.bsdfs = bsdfs;
         this.emission = emission;
+        this.maps = maps;
+        boolean any = false;
+        for (SurfaceMaps m : maps) {
+            any |= m != null && m.alpha() != null;
+        }
+        this.cutouts = any;
         this.environment = environment;
+        this.punctualLights = punctual;
         this.bvhBuildSeconds = bvhBuildSeconds;
         this.lights = lights;
     }
@@ -53,7 +68,7 @@ public final class World {
      * primitive instead of the BVH ({@link Bvh#bruteForce()}); everything else shared.
      */
     public World bruteForce() {
-        return new World(geometry, bvh.bruteForce(), lights, bsdfs, emission, environment, bvhBuildSeconds);
+        return new World(geometry, bvh.bruteForce(), lights, bsdfs, emission, maps, environment, punctualLights, bvhBuildSeconds);
     }
 
     /**
@@ -65,14 +80,51 @@ public final class World {
      * @param environment the light of rays that leave the scene
      */
     public static World build(Geometry geometry, Bsdf[] bsdfs, Rgb[] emission, Environment environment) {
-        if (bsdfs.length != emission.length) {
-            throw new IllegalArgumentException(bsdfs.length + " BSDFs for " + emission.length + " emissions");
+        return build(geometry, bsdfs, emission, environment, List.of());
+    }
+
+    /**
+     * As {@link #build(Geometry, Bsdf[], Rgb[], Environment)}, with punctual lights.
+     *
+     * @param punctual point, spot and directional lights
+     */
+    public static World build(Geometry geometry, Bsdf[] bsdfs, Rgb[] emission, Environment environment, List<PunctualLight> punctual) {
+        Emission[] e = new Emission[emission.length];
+        for (int m = 0; m < e.length; m++) {
+            e[m] = Emission.of(emission[m]);
+        }
+        return build(geometry, bsdfs, e, new SurfaceMaps[bsdfs.length], environment, punctual);
+    }
+
+    /**
+     * Builds the BVH over {@code geometry} and the light sampler over its emissive primitives.
+     *
+     * @param geometry    every primitive, material indices into the tables
+     * @param bsdfs       the BSDF of each material index
+     * @param emission    the emission of each material index ({@link Emission#BLACK}: not a light)
+     * @param maps        the normal map and alpha cut-out of each material index (null: none)
+     * @param environment the light of rays that leave the scene
+     */
+    public static World build(Geometry geometry, Bsdf[] bsdfs, Emission[] emission, SurfaceMaps[] maps, Environment environment) {
+        return build(geometry, bsdfs, emission, maps, environment, List.of());
+    }
+
+    /**
+     * As {@link #build(Geometry, Bsdf[], Emission[], SurfaceMaps[], Environment)}, with punctual lights.
+     *
+     * @param punctual point, spot and directional lights
+     */
+    public static World build(Geometry geometry, Bsdf[] bsdfs, Emission[] emission, SurfaceMaps[] maps, Environment environment,
+                              List<PunctualLight> punctual) {
+        if (bsdfs.length != emission.length || bsdfs.length != maps.length) {
+            throw new IllegalArgumentException(bsdfs.length + " BSDFs for " + emission.length + " emissions and " + maps.length + " maps");
         }
         long start = System.nanoTime();
         Bvh bvh = Bvh.build(geometry);
         double seconds = (System.nanoTime() - start) * 1e-9;
         // The BVH hands back the same primitives reordered into its leaves: hits refer to those.
-        return new World(bvh.geometry(), bvh, bsdfs.clone(), emission.clone(), Objects.requireNonNull(environment), seconds);
+        return new World(bvh.geometry(), bvh, bsdfs.clone(), emission.clone(), maps.clone(), Objects.requireNonNull(environment),
+                List.copyOf(punctual), seconds);
     }
 
     /** The world behind an API {@code Scene}. */
@@ -108,7 +160,12 @@ public final class World {
 
     /** The same world under another environment: geometry, BVH and material tables are shared, the light sampler is new. */
     public World withEnvironment(Environment newEnvironment) {
-        return new World(geometry, bvh, bsdfs, emission, Objects.requireNonNull(newEnvironment), bvhBuildSeconds);
+        return new World(geometry, bvh, bsdfs, emission, maps, Objects.requireNonNull(newEnvironment), punctualLights, bvhBuildSeconds);
+    }
+
+    /** The point, spot and directional lights (sampled by {@link #lights()} too). */
+    public List<PunctualLight> punctualLights() {
+        return punctualLights;
     }
 
     public int materialCount() {
@@ -119,8 +176,19 @@ public final class World {
         return bsdfs[material];
     }
 
-    public Rgb emission(int material) {
+    /** The emission of a material: {@link Emission#BLACK} for a non-emitter. */
+    public Emission emission(int material) {
         return emission[material];
+    }
+
+    /** The normal map and alpha cut-out of a material, null if it has neither. */
+    public SurfaceMaps maps(int material) {
+        return maps[material];
+    }
+
+    /** Whether any material has an alpha cut-out (else tracing never looks for one). */
+    public boolean hasCutouts() {
+        return cutouts;
     }
 
     /** The bounds of every primitive. */

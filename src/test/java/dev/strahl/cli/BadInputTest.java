@@ -3,6 +3,7 @@ package dev.strahl.cli;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import dev.strahl.io.gltf.GltfWriter;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.io.SceneLoader;
@@ -112,6 +113,21 @@ class BadInputTest {
 
     static Map<String, byte[]> obj(String text) {
         return files("t.obj", text, "lit.mtl", LIT_MTL);
+    }
+
+    /** A one-triangle GLB as t.glb: its positions accessor counting one vertex too many, or the file cut short. */
+    static Map<String, byte[]> glb(boolean accessorTooLong, boolean truncated) {
+        GltfWriter w = new GltfWriter();
+        w.rootNode(GltfWriter.map("mesh", w.mesh(new float[] {0, 0, 0, 1, 0, 0, 0, 1, 0}, null, null)));
+        if (accessorTooLong) {
+            @SuppressWarnings("unchecked")
+            Map<String, Object> positions = (Map<String, Object>) w.list("accessors").get(0);
+            positions.put("count", 4);
+        }
+        byte[] bytes = w.glb();
+        Map<String, byte[]> m = new LinkedHashMap<>();
+        m.put("t.glb", truncated ? Arrays.copyOf(bytes, bytes.length - 7) : bytes);
+        return m;
     }
 
     /** A render of $IN/t.obj (or the given scene) to $OUT/a.png, small and quick, with extra options. */
@@ -230,6 +246,12 @@ class BadInputTest {
                     + " \"shapes\": [ { \"type\": \"triangles\", \"positions\": [0,0,0, 1,0,0, 0,1,0], \"indices\": [0,1,2], \"material\": \"m\",\n"
                     + "  \"transform\": [ { \"scale\": 1e200 }, { \"scale\": 1e200 } ] } ] }\n"), scene("$IN/s.json"), "$IN/s.json:3: ",
                     "bad 'shapes[].transform[].scale': the steps multiply to a matrix beyond the range of numbers"),
+            // ---- glTF ----
+            refused("glTF truncated GLB", glb(false, true), scene("$IN/t.glb"), "$IN/t.glb: ", "truncated GLB: the header says"),
+            refused("glTF accessor past its buffer view", glb(true, false), scene("$IN/t.glb"),
+                    "$IN/t.glb: accessors[0]: byteOffset + count × stride past the end of bufferView 0"),
+            refused("glTF required extension", files("t.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"extensionsRequired\": [\"KHR_draco_mesh_compression\"]}"),
+                    scene("$IN/t.gltf"), "$IN/t.gltf: extensionsRequired[0]: required extension KHR_draco_mesh_compression is not supported"),
             refused("unknown scene format", files("t.txt", SQUARE), scene("$IN/t.txt"), "$IN/t.txt: ", "unknown scene format"),
             // ---- options ----
             refused("unknown option", files(), scene(CORNELL, "--frobnicate"), "Unknown option: '--frobnicate'"),

@@ -57,6 +57,21 @@ class RenderSceneSettingsTest {
                 .isEqualTo(render(plain, "f", "--photons", "2000", "--photon-radius", "0.2")).isNotEqualTo(fromFile);
     }
 
+    /** film.aovs writes the feature buffers beside the image, as --aov does; --aov on the command line replaces the file's list. */
+    @Test
+    void theFilesAovsAreWrittenAndTheOptionReplacesThem() throws Exception {
+        scene("plain.json", "{ \"spp\": 1 }");
+        Path file = Files.writeString(dir.resolve("aovs.json"), Files.readString(dir.resolve("plain.json"))
+                .replace("\"height\": 10 }", "\"height\": 10, \"aovs\": [\"depth\", \"albedo\"] }"));
+        render(file, "a");
+        assertThat(dir.resolve("a.depth.pfm")).exists();
+        assertThat(dir.resolve("a.albedo.pfm")).exists();
+        assertThat(dir.resolve("a.normal.pfm")).doesNotExist();
+        render(file, "b", "--aov", "normal");
+        assertThat(dir.resolve("b.normal.pfm")).exists();
+        assertThat(dir.resolve("b.depth.pfm")).as("the option wins over the file's list").doesNotExist();
+    }
+
     @Test
     void theFilesSettingsAreUsedAndOptionsOverrideThem() throws Exception {
         Path s = scene("{ \"type\": \"direct\", \"spp\": 2, \"seed\": 5 }");

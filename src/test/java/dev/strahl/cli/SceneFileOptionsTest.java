@@ -1,8 +1,10 @@
 package dev.strahl.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import dev.strahl.io.json.SceneSettings.Setting;
+import dev.strahl.render.Aov;
 import java.util.EnumSet;
 import java.util.HashSet;
 import org.junit.jupiter.api.Test;
@@ -22,6 +24,19 @@ class SceneFileOptionsTest {
                 assertThat(spec.findOption(option)).as("%s %s", command, option).isNotNull();
             }
         }
+    }
+
+    /** view's --aov becomes the viewer's feature buffers, given (so it wins over a file's film.aovs), and a bad name is refused naming the option. */
+    @Test
+    void viewTakesAovsAsRenderDoes() {
+        CommandLine cl = Main.commandLine();
+        cl.parseArgs("view", "s.json", "--aov", "albedo,normal");
+        ViewCommand view = cl.getSubcommands().get("view").getCommand();
+        assertThat(view.options().aovs()).containsExactlyInAnyOrder(Aov.ALBEDO, Aov.NORMAL);
+        assertThat(view.options().given()).contains(Setting.AOVS);
+        cl.parseArgs("view", "s.json", "--aov", "albedo,variance");
+        ViewCommand bad = cl.getSubcommands().get("view").getCommand();
+        assertThatThrownBy(bad::options).hasMessage("--aov: unknown feature buffer 'variance': use albedo, normal or depth");
     }
 
     @Test

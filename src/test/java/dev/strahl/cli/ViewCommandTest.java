@@ -45,13 +45,15 @@ class ViewCommandTest {
         assertThat(some.stopAt()).isEqualTo(16);
 
         ViewerOptions all = parse("view", "--width", "300", "--height", "200", "--max-depth", "4", "--hemisphere", "uniform",
-                "--seed", "3", "--integrator", "direct", "--light-samples", "2", "--photons", "7000", "--photon-radius", "0.5");
+                "--seed", "3", "--integrator", "direct", "--light-samples", "2", "--photons", "7000", "--photon-radius", "0.5",
+                "--aov", "depth");
         assertThat(all.given()).as("every scene-file setting but spp: view's --spp is the stop-at count, not the file's spp")
                 .isEqualTo(EnumSet.complementOf(EnumSet.of(Setting.SAMPLES_PER_PIXEL)));
         assertThat(all.hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
         assertThat(all.lightSamples()).isEqualTo(2);
         assertThat(all.photons()).isEqualTo(7000);
         assertThat(all.photonRadius()).isEqualTo(0.5);
+        assertThat(all.aovs()).containsExactly(dev.strahl.render.Aov.DEPTH);
         assertThat(all.scene()).isNull();
 
         assertThat(parse("view", "--max-depth", "-1").given()).as("given at its default value is still given")

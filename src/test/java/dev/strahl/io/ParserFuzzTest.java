@@ -3,6 +3,7 @@ package dev.strahl.io;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import dev.strahl.io.exr.ExrReader;
+import dev.strahl.io.gltf.GltfFuzzSeeds;
 import dev.strahl.io.image.HdrReader;
 import dev.strahl.io.image.ImageFormatException;
 import dev.strahl.io.image.TextureImages;
@@ -24,7 +25,7 @@ import net.jqwik.api.lifecycle.AfterContainer;
 import net.jqwik.api.lifecycle.BeforeContainer;
 
 /**
- * Fuzzing of the OBJ, MTL, PLY and scene-file readers and of the image readers (EXR, Radiance HDR,
+ * Fuzzing of the OBJ, MTL, PLY, glTF (GLB and JSON) and scene-file readers and of the image readers (EXR, Radiance HDR,
  * PNG/JPEG textures): random and mutated files may be accepted or rejected with the reader's own
  * error (a {@link SceneException}; an {@link ImageFormatException} for images), never end in
  * another exception, a hang or running out of memory. Each parser gets a bounded budget ({@link Fuzzer#budget()}); every input that once
@@ -116,6 +117,16 @@ class ParserFuzzTest {
     @Example
     void plyReaderOnlyEverThrowsSceneException() throws IOException {
         fuzz("ply", plyTarget(), "fuzz.ply", mix(FuzzInputs.randomPly(), FuzzInputs.mutated(FuzzInputs.plySeeds(), FuzzInputs.PLY_WORDS)));
+    }
+
+    @Example
+    void glbReaderOnlyEverThrowsSceneException() throws Exception {
+        fuzz("glb", SceneLoader::load, "fuzz.glb", FuzzInputs.mutated(GltfFuzzSeeds.glb(), GltfFuzzSeeds.WORDS));
+    }
+
+    @Example
+    void gltfReaderOnlyEverThrowsSceneException() throws Exception {
+        fuzz("gltf", SceneLoader::load, "fuzz.gltf", mix(FuzzInputs.randomJson(), FuzzInputs.mutated(GltfFuzzSeeds.gltf(), GltfFuzzSeeds.WORDS)));
     }
 
     @Example

@@ -221,7 +221,7 @@ class SceneLoaderTest {
         assertThat(error(folder)).isEqualTo(folder + ": is a directory, not a scene file");
         Path text = dir.resolve("scene.txt");
         Files.writeString(text, SQUARE);
-        assertThat(error(text)).isEqualTo(text + ": unknown scene format (expected .json, .obj or .ply)");
+        assertThat(error(text)).isEqualTo(text + ": unknown scene format (expected .json, .obj, .ply, .gltf or .glb)");
         Path noExtension = dir.resolve("scene");
         Files.writeString(noExtension, SQUARE);
         assertThat(error(noExtension)).startsWith(noExtension + ": unknown scene format");

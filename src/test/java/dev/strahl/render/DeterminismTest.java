@@ -40,6 +40,18 @@ class DeterminismTest {
         }
     }
 
+    /** Point, spot and directional lights (chosen by power next to each other), every integrator, the photon mapper's photons from them too. */
+    @Test
+    void punctualLightsGiveIdenticalBitsOnOneTwoAndThreeThreads() throws Exception {
+        Scene scene = SceneLoader.load(Path.of("src/test/resources/golden/punctual.json"));
+        for (IntegratorKind kind : IntegratorKind.values()) {
+            RenderSettings s = SETTINGS.withIntegrator(kind).withPhotons(new PhotonParameters(5000, 0));
+            Image one = Renders.render(scene, s.withThreads(1));
+            assertThat(Renders.render(scene, s.withThreads(2)).rgb()).as("%s", kind).isEqualTo(one.rgb());
+            assertThat(Renders.render(scene, s.withThreads(3).withSamplesPerPass(1)).rgb()).as("%s", kind).isEqualTo(one.rgb());
+        }
+    }
+
     @Test
     void passSizeDoesNotChangeTheImage() throws Exception {
         Scene scene = cornell();

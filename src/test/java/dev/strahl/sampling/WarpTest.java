@@ -11,8 +11,8 @@ import org.junit.jupiter.api.Test;
 
 /** Every warp against its density: chi-square of the samples, and the density integrates to one. */
 class WarpTest {
-    /** Five chi-square tests in this class; together they keep a 1 % false-alarm level. */
-    private static final double ALPHA = ChiSquare.sidak(0.01, 5);
+    /** Six chi-square tests in this class; together they keep a 1 % false-alarm level. */
+    private static final double ALPHA = ChiSquare.sidak(0.01, 6);
     private static final int N = 1_000_000;
 
     @FunctionalInterface
@@ -52,11 +52,36 @@ class WarpTest {
                 w -> Warp.uniformSpherePdf(), N, 3).assertAccepted(ALPHA);
     }
 
+    /** A cone of 53° half-angle: its edge cosθ = 0.6 falls on an edge of the 10 cosθ bins, so the cells see no partial coverage. */
+    @Test
+    void uniformConeIsUniformInsideTheConeAndEmptyOutside() {
+        ChiSquare.test(never((u1, u2, d) -> Warp.uniformCone(u1, u2, 0.6, d)),
+                w -> Warp.uniformConePdf(w.z(), 0.6), N, 6).assertAccepted(ALPHA);
+    }
+
+    @Test
+    void uniformConeStaysInsideItsConeAtTheEdgesOfTheSquare() {
+        Vector3d w = new Vector3d();
+        for (double cosMax : new double[] {-1, 0, 0.5, Math.cos(1e-3), 1 - 1e-12}) {
+            for (double u1 : edgeCases()) {
+                for (double u2 : edgeCases()) {
+                    Warp.uniformCone(u1, u2, cosMax, w);
+                    assertThat(w.length()).isCloseTo(1, within(1e-12));
+                    assertThat(w.z).isGreaterThanOrEqualTo(cosMax - 1e-12);
+                }
+            }
+        }
+        assertThat(Warp.uniformConePdf(0.49, 0.5)).isZero();
+        assertThat(Warp.uniformConePdf(1, 1)).as("a degenerate cone has no density").isZero();
+        assertThat(Warp.uniformConePdf(0.7, -1)).isCloseTo(Warp.uniformSpherePdf(), within(1e-15));
+    }
+
     @Test
     void directionPdfsIntegrateToOne() {
         assertThat(ChiSquare.integrateOverSphere(w -> Warp.cosineHemispherePdf(w.z()))).isCloseTo(1, within(1e-9));
         assertThat(ChiSquare.integrateOverSphere(w -> Warp.uniformHemispherePdf(w.z()))).isCloseTo(1, within(1e-9));
         assertThat(ChiSquare.integrateOverSphere(w -> Warp.uniformSpherePdf())).isCloseTo(1, within(1e-9));
+        assertThat(ChiSquare.integrateOverSphere(w -> Warp.uniformConePdf(w.z(), 0.5))).isCloseTo(1, within(1e-9));
     }
 
     @Test

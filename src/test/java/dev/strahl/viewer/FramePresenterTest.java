@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import dev.strahl.image.Image;
+import dev.strahl.image.ToneMapping;
 import dev.strahl.film.Tonemap;
 import java.awt.image.BufferedImage;
 import java.util.concurrent.Semaphore;
@@ -47,6 +48,22 @@ class FramePresenterTest {
         assertThat(red(s.image(), 0)).isEqualTo(Tonemap.toSrgb8(0.2f));
         assertThat(red(s.image(), 1)).isZero();
         assertThat(s.image().getType()).isEqualTo(BufferedImage.TYPE_INT_RGB);
+    }
+
+    /** The tone-mapping menu's curves: each re-converts the last frame as the PNG writer would, without a new frame. */
+    @Test
+    void aToneCurveReconvertsTheLastFrameAsThePngWriterWould() throws Exception {
+        presenter.accept(frame(2.5f, 1));
+        assertThat(red(awaitShown().image(), 0)).as("clamped").isEqualTo(255);
+        for (ToneMapping curve : new ToneMapping[] {ToneMapping.ACES, ToneMapping.AGX}) {
+            presenter.setToneMapping(curve);
+            FramePresenter.Shown s = awaitShown();
+            assertThat(s.curve()).isEqualTo(curve);
+            BufferedImage expected = Tonemap.toBufferedImage(new Image(2, 1, new float[] {2.5f, 2.5f, 2.5f, 0, 0, 0}), 0, curve);
+            assertThat(s.image().getRGB(0, 0)).as("%s", curve).isEqualTo(expected.getRGB(0, 0));
+            assertThat(red(s.image(), 0)).as("%s keeps 2.5 below white", curve).isLessThan(255);
+        }
+        assertThat(ToneMenu.menu(presenter).getItemCount()).isEqualTo(ToneMapping.values().length);
     }
 
     @Test

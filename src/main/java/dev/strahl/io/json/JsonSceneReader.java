@@ -52,13 +52,13 @@ public final class JsonSceneReader {
     /** The shape types and the keys each accepts. */
     static final Map<String, Set<String>> SHAPE_KEYS = Map.of(
             "sphere", Set.of("type", "center", "radius", "material", "transform"),
-            "mesh", Set.of("type", "file", "material", "transform"),
+            "mesh", Set.of("type", "file", "material", "transform"), "gltf", Set.of("type", "file", "transform"),
             "triangles", Set.of("type", "positions", "indices", "normals", "uvs", "material", "transform"));
-    static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment");
+    static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment", "lights");
     static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov", "aperture", "focusDistance");
     /** The environment types (the object form; an array is a constant radiance) and their keys. */
     static final Map<String, Set<String>> ENVIRONMENT_KEYS = Map.of("envmap", Set.of("type", "file", "scale", "rotate"));
-    static final Set<String> FILM_KEYS = Set.of("width", "height");
+    static final Set<String> FILM_KEYS = Set.of("width", "height", "aovs");
     static final Set<String> INTEGRATOR_KEYS = Set.of("type", "spp", "maxDepth", "seed", "lightSamples", "hemisphere", "photons",
             "photonRadius");
 
@@ -122,7 +122,7 @@ public final class JsonSceneReader {
         Camera camera = top.containsKey("camera") ? camera(top.get("camera")) : null;
         EnvironmentSpec environment = top.containsKey("environment") ? environment(top.get("environment")) : null;
         SceneSettings settings = settings(top.get("film"), top.get("integrator"));
-        return new SceneDescription(camera, settings, materials, shapes, environment);
+        return new SceneDescription(camera, settings, materials, shapes, environment, SceneLights.parse(top.get("lights"), v));
     }
 
     // ---- materials -----------------------------------------------------------------------------
@@ -281,7 +281,7 @@ public final class JsonSceneReader {
         v.allowOnly(s, "shapes[] of type " + type, keys);
         Transform transform = s.containsKey("transform") ? TransformReader.read(v, s.get("transform")) : Transform.IDENTITY;
         switch (type) {
-            case "mesh": {
+            case "mesh", "gltf": {
                 JsonNode fileNode = v.require(s, "file", node);
                 String name = v.string(fileNode, "shapes[].file");
                 Path mesh;
@@ -291,8 +291,8 @@ public final class JsonSceneReader {
                     throw new SceneException(file, fileNode.line, "'shapes[].file' is not a valid path: " + name);
                 }
                 String lower = name.toLowerCase(Locale.ROOT);
-                if (!lower.endsWith(".obj") && !lower.endsWith(".ply")) {
-                    throw new SceneException(file, fileNode.line, "'shapes[].file' must name an .obj or .ply file, got '" + name + "'");
+                if (type.equals("gltf") ? !lower.endsWith(".gltf") && !lower.endsWith(".glb") : !lower.endsWith(".obj") && !lower.endsWith(".ply")) {
+                    throw new SceneException(file, fileNode.line, "'shapes[].file' must name " + (type.equals("gltf") ? "a .gltf or .glb" : "an .obj or .ply") + " file, got '" + name + "'");
                 }
                 if (!Files.isRegularFile(mesh)) {
                     throw new SceneException(file, fileNode.line, "mesh file not found: " + mesh);
@@ -492,6 +492,6 @@ public final class JsonSceneReader {
                 }
             }
         }
-        return new SceneSettings(width, height, spp, maxDepth, seed, type, lightSamples, hemisphere, photons, photonRadius);
+        return new SceneSettings(width, height, spp, maxDepth, seed, type, lightSamples, hemisphere, photons, photonRadius, SceneSettings.readAovs(film, v));
     }
 }

@@ -1,6 +1,7 @@
 package dev.strahl.io.json;
 
 import dev.strahl.image.Rgb;
+import dev.strahl.io.gltf.GltfReader;
 import dev.strahl.io.mesh.MeshFiles;
 import dev.strahl.scene.Camera;
 import dev.strahl.scene.Material;
@@ -29,14 +30,21 @@ import org.joml.Vector3dc;
  * @param materials   the named materials, in file order
  * @param shapes      the shapes, in file order
  * @param environment the environment, or null for the default
+ * @param lights      the punctual lights ({@link SceneLights}), in file order
  */
 record SceneDescription(Camera camera, SceneSettings settings, Map<String, MaterialSpec> materials, List<ShapeSpec> shapes,
-                        EnvironmentSpec environment) {
+                        EnvironmentSpec environment, List<SceneLights.Light> lights) {
 
     SceneDescription {
         Objects.requireNonNull(settings, "settings");
         materials = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(materials));
         shapes = List.copyOf(shapes);
+        lights = List.copyOf(lights);
+    }
+
+    SceneDescription(Camera camera, SceneSettings settings, Map<String, MaterialSpec> materials, List<ShapeSpec> shapes,
+                     EnvironmentSpec environment) {
+        this(camera, settings, materials, shapes, environment, List.of());
     }
 
     /**
@@ -162,7 +170,7 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
     }
 
     /**
-     * An OBJ or PLY file, as written (relative to the scene file's folder unless absolute); with
+     * An OBJ, PLY or glTF file ({@code "type": "gltf"}, never with a material), as written (relative to the scene file's folder unless absolute); with
      * a material name, every triangle is of that material, without one an OBJ uses its MTL
      * materials and a PLY the grey default.
      */
@@ -214,9 +222,20 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
         }
         Scene.Builder builder = Scene.builder();
         notes.forEach(builder::note);
+        boolean gltfCamera = false;
         for (ShapeSpec shape : shapes) {
             if (shape instanceof SphereShape s) {
                 builder.addSphere(s.center(), s.radius(), byName.get(s.material()), s.transform());
+            } else if (shape instanceof MeshShape m && GltfReader.isGltfFile(Path.of(m.file()))) {
+                // a glTF asset's camera and lights are used only where the scene has none of its own
+                GltfReader.Asset asset = GltfReader.add(folder.resolve(m.file()), m.transform(), builder);
+                if (camera == null && asset.camera() != null && !gltfCamera) {
+                    builder.camera(asset.camera());
+                    gltfCamera = true;
+                }
+                if (environment == null && lights.isEmpty() && byName.values().stream().noneMatch(Material::isEmissive)) {
+                    GltfReader.addLights(asset, builder);
+                }
             } else if (shape instanceof MeshShape m) {
                 Material material = m.material() == null ? null : byName.get(m.material());
                 MeshFiles.add(folder.resolve(m.file()), material, m.transform(), builder);
@@ -225,6 +244,7 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
                 builder.addMesh(t.mesh(), byName.get(t.material()), t.transform());
             }
         }
+        SceneLights.addTo(lights, builder);
         if (camera != null) {
             builder.camera(camera);
         }

@@ -1,6 +1,8 @@
 package dev.strahl.io.json;
 
+import dev.strahl.io.gltf.GltfReader;
 import dev.strahl.io.mesh.MeshFiles;
+import dev.strahl.render.RenderSettings;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
 import dev.strahl.scene.Transform;
@@ -9,8 +11,9 @@ import java.nio.file.Path;
 
 /**
  * A scene loaded from a file, with what the file says about rendering: a strahl scene file
- * ({@code .json}), or a mesh file (OBJ with its MTL materials, PLY), which says nothing about
- * rendering and has no camera (the scene is framed).
+ * ({@code .json}), a mesh file (OBJ with its MTL materials, PLY), which says nothing about
+ * rendering and has no camera (the scene is framed), or a glTF asset ({@code .gltf}, {@code .glb}),
+ * whose camera is used when it has one, its {@code aspectRatio} setting the film's shape.
  *
  * @param scene    the scene
  * @param settings the file's film and integrator keys; {@link SceneSettings#NONE} for a mesh file
@@ -38,6 +41,21 @@ public record SceneFile(Scene scene, SceneSettings settings) {
             MeshFiles.add(file, null, Transform.IDENTITY, builder);
             return new SceneFile(builder.build(), SceneSettings.NONE);
         }
-        throw new SceneException(file, "unknown scene format (expected .json, .obj or .ply)");
+        if (GltfReader.isGltfFile(file)) {
+            Scene.Builder builder = Scene.builder();
+            GltfReader.Asset asset = GltfReader.add(file, Transform.IDENTITY, builder);
+            if (asset.camera() != null) {
+                builder.camera(asset.camera());
+            }
+            GltfReader.addLights(asset, builder);
+            SceneSettings settings = SceneSettings.NONE;
+            if (asset.aspectRatio() > 0) {
+                int width = RenderSettings.defaults().width();
+                int height = Math.max(1, Math.min(RenderSettings.MAX_SIZE, (int) Math.round(width / asset.aspectRatio())));
+                settings = new SceneSettings(width, height, null, null, null, null, null, null, null, null);
+            }
+            return new SceneFile(builder.build(), settings);
+        }
+        throw new SceneException(file, "unknown scene format (expected .json, .obj, .ply, .gltf or .glb)");
     }
 }

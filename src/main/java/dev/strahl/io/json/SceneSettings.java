@@ -1,9 +1,13 @@
 package dev.strahl.io.json;
 
+import dev.strahl.render.Aov;
 import dev.strahl.render.HemisphereSampling;
 import dev.strahl.render.IntegratorKind;
 import dev.strahl.render.PhotonParameters;
 import dev.strahl.render.RenderSettings;
+import dev.strahl.scene.SceneException;
+import java.util.EnumSet;
+import java.util.List;
 import java.util.Set;
 
 /**
@@ -22,21 +26,32 @@ import java.util.Set;
  * @param hemisphere      how diffuse bounces are sampled, or null
  * @param photons         photons per iteration for the photon mapper, or null
  * @param photonRadius    the photon mapper's initial gather radius in scene units (0 = automatic), or null
+ * @param aovs            the feature buffers to keep ({@code film.aovs}), or null
  */
 public record SceneSettings(Integer width, Integer height, Integer samplesPerPixel, Integer maxDepth, Long seed,
                             IntegratorKind integrator, Integer lightSamples, HemisphereSampling hemisphere,
-                            Integer photons, Double photonRadius) {
+                            Integer photons, Double photonRadius, Set<Aov> aovs) {
+
+    public SceneSettings {
+        aovs = aovs == null ? null : Set.copyOf(aovs);
+    }
+
+    /** Settings without {@code film.aovs}. */
+    public SceneSettings(Integer width, Integer height, Integer samplesPerPixel, Integer maxDepth, Long seed, IntegratorKind integrator,
+                         Integer lightSamples, HemisphereSampling hemisphere, Integer photons, Double photonRadius) {
+        this(width, height, samplesPerPixel, maxDepth, seed, integrator, lightSamples, hemisphere, photons, photonRadius, null);
+    }
 
     /**
      * The settings a scene file can give, one per field. A command line names the ones it gives
      * itself, so that the file's value of those is not used.
      */
     public enum Setting {
-        WIDTH, HEIGHT, SAMPLES_PER_PIXEL, MAX_DEPTH, SEED, INTEGRATOR, LIGHT_SAMPLES, HEMISPHERE, PHOTONS, PHOTON_RADIUS
+        WIDTH, HEIGHT, SAMPLES_PER_PIXEL, MAX_DEPTH, SEED, INTEGRATOR, LIGHT_SAMPLES, HEMISPHERE, PHOTONS, PHOTON_RADIUS, AOVS
     }
 
     /** A file that says nothing about rendering (and every OBJ or PLY). */
-    public static final SceneSettings NONE = new SceneSettings(null, null, null, null, null, null, null, null, null, null);
+    public static final SceneSettings NONE = new SceneSettings(null, null, null, null, null, null, null, null, null, null, null);
 
     public boolean isEmpty() {
         return equals(NONE);
@@ -85,6 +100,33 @@ public record SceneSettings(Integer width, Integer height, Integer samplesPerPix
         if (photonRadius != null && !given.contains(Setting.PHOTON_RADIUS)) {
             p = new PhotonParameters(p.photonsPerIteration(), photonRadius);
         }
+        if (aovs != null && !given.contains(Setting.AOVS)) {
+            s = s.withAovs(aovs.isEmpty() ? EnumSet.noneOf(Aov.class) : EnumSet.copyOf(aovs));
+        }
         return s.withPhotons(p);
+    }
+
+    /**
+     * The {@code film.aovs} key of a film object the reader has checked ({@code null}: no film):
+     * an array of "albedo", "normal", "depth", each at most once; null where the key is absent.
+     */
+    static Set<Aov> readAovs(JsonNode film, JsonValues v) throws SceneException {
+        JsonNode node = film == null ? null : film.object().get("aovs");
+        if (node == null) {
+            return null;
+        }
+        Set<Aov> aovs = EnumSet.noneOf(Aov.class);
+        List<JsonNode> list = v.array(node, "film.aovs");
+        for (JsonNode item : list) {
+            String id = v.string(item, "film.aovs[]");
+            try {
+                if (!aovs.add(Aov.of(id))) {
+                    throw v.error(item, "'film.aovs' names '" + id + "' twice");
+                }
+            } catch (IllegalArgumentException e) {
+                throw v.error(item, "'film.aovs': " + e.getMessage());
+            }
+        }
+        return aovs;
     }
 }

@@ -386,9 +386,9 @@ class JsonSceneReaderTest {
                 {
                   %s
                   "shapes": [ %s ],
-                  "lights": []
+                  "lamps": []
                 }
-                """.formatted(MATERIALS, SPHERE), "unknown key 'lights' in scene", "camera, environment, film, integrator, materials, shapes"),
+                """.formatted(MATERIALS, SPHERE), "unknown key 'lamps' in scene", "camera, environment, film, integrator, lights, materials, shapes"),
             bad("unknown key in camera", 6, """
                 {
                   %s
@@ -607,7 +607,7 @@ class JsonSceneReaderTest {
                     { "type": "cube", "size": 1 }
                   ]
                 }
-                """.formatted(MATERIALS), "unknown shape type 'cube'", "known: mesh, sphere, triangles"),
+                """.formatted(MATERIALS), "unknown shape type 'cube'", "known: gltf, mesh, sphere, triangles"),
             bad("albedo above 1", 3, """
                 {
                   "materials": {

@@ -16,6 +16,7 @@ import dev.strahl.render.IntegratorKind;
 import dev.strahl.material.Dielectric;
 import dev.strahl.scene.Material;
 import dev.strahl.image.Rgb;
+import dev.strahl.light.PunctualLight;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.HemisphereSampling;
 import java.io.IOException;
@@ -23,6 +24,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Stream;
+import org.joml.Vector3d;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -36,7 +38,7 @@ class SceneFileFormatTest {
     static final String EVERY_KEY = """
             {
               "camera": { "lookFrom": [0, 1, 5], "lookAt": [0, 1, 0], "up": [0, 1, 0], "fov": 35, "aperture": 0.05, "focusDistance": 4.5 },
-              "film": { "width": 320, "height": 200 },
+              "film": { "width": 320, "height": 200, "aovs": ["albedo", "depth"] },
               "integrator": { "type": "direct", "spp": 12, "maxDepth": 3, "seed": 9007199254740993, "lightSamples": 4,
                               "hemisphere": "uniform", "photons": 2500, "photonRadius": 0.05 },
               "materials": {
@@ -59,7 +61,12 @@ class SceneFileFormatTest {
                 { "type": "sphere", "center": [1, 0, 0], "radius": 1, "material": "glass" },
                 { "type": "sphere", "center": [-1, 0, 0], "radius": 1, "material": "chrome" }
               ],
-              "environment": [0.1, 0.2, 0.3]
+              "environment": [0.1, 0.2, 0.3],
+              "lights": [
+                { "type": "point", "position": [0, 2, 1], "intensity": [5, 5, 4] },
+                { "type": "spot", "position": [1, 3, 0], "direction": [0, -1, 0.2], "intensity": [9, 8, 7], "innerCone": 10, "outerCone": 30 },
+                { "type": "directional", "direction": [1, -2, 0], "irradiance": [0.5, 0.5, 0.4] }
+              ]
             }
             """;
 
@@ -85,11 +92,16 @@ class SceneFileFormatTest {
         SceneFile file = SceneFile.load(everyKey());
         Scene scene = file.scene();
         assertThat(file.settings()).isEqualTo(new SceneSettings(320, 200, 12, 3, 9007199254740993L, IntegratorKind.DIRECT, 4,
-                HemisphereSampling.UNIFORM, 2500, 0.05));
+                HemisphereSampling.UNIFORM, 2500, 0.05, java.util.Set.of(dev.strahl.render.Aov.ALBEDO, dev.strahl.render.Aov.DEPTH)));
         assertThat(scene.camera().fovDegrees()).isEqualTo(35);
         assertThat(scene.camera().aperture()).isEqualTo(0.05);
         assertThat(scene.camera().focusDistance()).isEqualTo(4.5);
         assertThat(World.of(scene).environment().constantRadiance()).isEqualTo(new Rgb(0.1, 0.2, 0.3));
+        assertThat(World.of(scene).punctualLights()).extracting(Object::toString).containsExactly(
+                PunctualLight.point(new Vector3d(0, 2, 1), new Rgb(5, 5, 4)).toString(),
+                PunctualLight.spot(new Vector3d(1, 3, 0), new Vector3d(0, -1, 0.2), new Rgb(9, 8, 7), Math.toRadians(10),
+                        Math.toRadians(30)).toString(),
+                PunctualLight.directional(new Vector3d(1, -2, 0), new Rgb(0.5, 0.5, 0.4)).toString());
         Geometry g = World.of(scene).geometry();
         assertThat(g.triangleCount()).isEqualTo(1 + 1 + 1 + 2);
         assertThat(g.sphereCount()).isEqualTo(3);
@@ -117,7 +129,8 @@ class SceneFileFormatTest {
         RenderSettings s = file.applyTo(RenderSettings.defaults().withThreads(3));
         assertThat(s).isEqualTo(RenderSettings.defaults().withThreads(3).withSize(320, 200).withSamplesPerPixel(12).withMaxDepth(3)
                 .withSeed(9007199254740993L).withIntegrator(IntegratorKind.DIRECT).withLightSamples(4)
-                .withHemisphere(HemisphereSampling.UNIFORM).withPhotons(new PhotonParameters(2500, 0.05)));
+                .withHemisphere(HemisphereSampling.UNIFORM).withPhotons(new PhotonParameters(2500, 0.05))
+                .withAovs(java.util.EnumSet.of(dev.strahl.render.Aov.ALBEDO, dev.strahl.render.Aov.DEPTH)));
         assertThat(SceneSettings.NONE.applyTo(RenderSettings.defaults())).isEqualTo(RenderSettings.defaults());
         RenderSettings halfGiven = new SceneSettings(100, null, null, null, null, null, null, null, null, null)
                 .applyTo(RenderSettings.defaults());
@@ -160,7 +173,8 @@ class SceneFileFormatTest {
         for (String key : List.of("camera", "lookFrom", "lookAt", "up", "fov", "film", "width", "height", "integrator", "type", "spp",
                 "maxDepth", "seed", "lightSamples", "hemisphere", "photons", "photonRadius", "materials", "albedo", "emission", "reflectance", "ior",
                 "diffuse", "specular", "exponent", "shapes", "file", "material", "transform", "scale", "rotate", "axis", "degrees",
-                "translate", "positions", "indices", "normals", "center", "radius", "environment")) {
+                "translate", "positions", "indices", "normals", "center", "radius", "environment", "lights", "position", "direction",
+                "intensity", "irradiance", "innerCone", "outerCone", "aovs")) {
             assertThat(written).as("key %s", key).contains("\"" + key + "\"");
         }
         assertThat(SceneFileWriter.write(again)).isEqualTo(written);
@@ -196,7 +210,23 @@ class SceneFileFormatTest {
 
     static Stream<Arguments> badScenes() {
         return Stream.of(
-            bad(3, "\"film\": { \"width\": 64, \"depth\": 3 },", "unknown key 'depth' in film (known: height, width)"),
+            bad(3, "\"film\": { \"width\": 64, \"depth\": 3 },", "unknown key 'depth' in film (known: aovs, height, width)"),
+            bad(3, "\"film\": { \"aovs\": [\"albedo\", \"variance\"] },", "'film.aovs': unknown feature buffer 'variance': use albedo, normal or depth"),
+            bad(3, "\"film\": { \"aovs\": [\"depth\", \"depth\"] },", "'film.aovs' names 'depth' twice"),
+            bad(3, "\"film\": { \"aovs\": \"albedo\" },", "'film.aovs' must be an array, got a string"),
+            bad(3, "\"lights\": { \"type\": \"point\" },", "'lights' must be an array, got an object"),
+            bad(3, "\"lights\": [ { \"type\": \"area\" } ],", "unknown light type 'area' (known: directional, point, spot)"),
+            bad(3, "\"lights\": [ { \"type\": \"point\", \"intensity\": [1, 1, 1] } ],", "missing required key 'position'"),
+            bad(3, "\"lights\": [ { \"type\": \"point\", \"position\": [0, 1, 0], \"intensity\": [1, 1, 1], \"direction\": [0, 1, 0] } ],",
+                    "unknown key 'direction' in lights[0] of type point (known: intensity, position, type)"),
+            bad(3, "\"lights\": [ { \"type\": \"point\", \"position\": [0, 1, 0], \"intensity\": [1, -1, 1] } ],",
+                    "'lights[0].intensity' must not be negative"),
+            bad(3, "\"lights\": [ { \"type\": \"directional\", \"direction\": [0, 0, 0], \"irradiance\": [1, 1, 1] } ],",
+                    "'lights[0].direction' must be a non-zero vector of finite length"),
+            bad(3, "\"lights\": [ { \"type\": \"spot\", \"position\": [0, 1, 0], \"direction\": [0, -1, 0], \"intensity\": [1, 1, 1], \"outerCone\": 95 } ],",
+                    "'lights[0].outerCone' must lie in (0, 90] degrees, got 95"),
+            bad(3, "\"lights\": [ { \"type\": \"spot\", \"position\": [0, 1, 0], \"direction\": [0, -1, 0], \"intensity\": [1, 1, 1], \"innerCone\": 50 } ],",
+                    "'lights[0].innerCone' must lie in [0, outerCone] = [0, 45] degrees, got 50"),
             bad(3, "\"film\": [64, 64],", "'film' must be an object, got an array"),
             bad(3, "\"film\": { \"width\": 64.5 },", "'film.width' must be a whole number, got 64.5"),
             bad(3, "\"film\": { \"height\": 0 },", "'film.height' must be in [1, 32768], got 0"),
@@ -234,7 +264,7 @@ class SceneFileFormatTest {
                     "unknown material 'n' (define it under 'materials')"),
             shape("{ \"type\": \"mesh\", \"file\": \"tri.stl\" }", "'shapes[].file' must name an .obj or .ply file, got 'tri.stl'"),
             shape("{ \"type\": \"mesh\", \"file\": \"none.ply\" }", "mesh file not found: "),
-            shape("{ \"type\": \"cube\" }", "unknown shape type 'cube' (known: mesh, sphere, triangles)"),
+            shape("{ \"type\": \"cube\" }", "unknown shape type 'cube' (known: gltf, mesh, sphere, triangles)"),
             transform("{ \"translate\": [1, 2, 3] }", "'shapes[].transform' must be an array, got an object"),
             transform("[ { \"translate\": [1, 2, 3], \"scale\": 2 } ]",
                     "each step of 'shapes[].transform' must have exactly one key of rotate, scale, translate, got scale, translate"),

@@ -64,6 +64,33 @@ final class SceneFileWriter {
             g.writeNumberField("rotate", d.environment().rotate());
             g.writeEndObject();
         }
+        if (!d.lights().isEmpty()) {
+            g.writeArrayFieldStart("lights");
+            for (SceneLights.Light l : d.lights()) {
+                light(l);
+            }
+            g.writeEndArray();
+        }
+        g.writeEndObject();
+    }
+
+    private void light(SceneLights.Light l) throws IOException {
+        g.writeStartObject();
+        g.writeStringField("type", l.type());
+        if (l.position() != null) {
+            g.writeFieldName("position");
+            vector(l.position());
+        }
+        if (l.direction() != null) {
+            g.writeFieldName("direction");
+            vector(l.direction());
+        }
+        g.writeFieldName(l.type().equals("directional") ? "irradiance" : "intensity");
+        rgb(l.intensity());
+        if (l.type().equals("spot")) {
+            g.writeNumberField("innerCone", l.innerCone());
+            g.writeNumberField("outerCone", l.outerCone());
+        }
         g.writeEndObject();
     }
 
@@ -82,13 +109,20 @@ final class SceneFileWriter {
     }
 
     private void settings(SceneSettings s) throws IOException {
-        if (s.width() != null || s.height() != null) {
+        if (s.width() != null || s.height() != null || s.aovs() != null) {
             g.writeObjectFieldStart("film");
             if (s.width() != null) {
                 g.writeNumberField("width", s.width());
             }
             if (s.height() != null) {
                 g.writeNumberField("height", s.height());
+            }
+            if (s.aovs() != null) {
+                g.writeArrayFieldStart("aovs");
+                for (var aov : new java.util.TreeSet<>(s.aovs())) {
+                    g.writeString(aov.id());
+                }
+                g.writeEndArray();
             }
             g.writeEndObject();
         }

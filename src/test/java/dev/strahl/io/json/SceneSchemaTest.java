@@ -86,13 +86,18 @@ class SceneSchemaTest {
         assertThat(keys(get(defs, "integrator"))).isEqualTo(new TreeSet<>(JsonSceneReader.INTEGRATOR_KEYS));
         assertThat(byType(get(defs, "material"))).isEqualTo(sorted(JsonSceneReader.MATERIAL_KEYS));
         assertThat(byType(get(defs, "shape"))).isEqualTo(sorted(JsonSceneReader.SHAPE_KEYS));
+        assertThat(byType(get(defs, "light"))).isEqualTo(sorted(SceneLights.KEYS));
     }
 
     @ParameterizedTest
     @ValueSource(strings = {
         "{ \"shapes\": [] }",
         "{ \"camera\": { \"lookAt\": [0, 0, 0] }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
-        "{ \"lights\": [], \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"lights\": [ { \"type\": \"area\" } ], \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"lights\": [ { \"type\": \"point\", \"position\": [0, 1, 0] } ], \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"lights\": [ { \"type\": \"point\", \"position\": [0, 1, 0], \"intensity\": [1, -1, 1] } ], \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"lights\": [ { \"type\": \"spot\", \"position\": [0, 1, 0], \"direction\": [0, -1, 0], \"intensity\": [1, 1, 1], \"outerCone\": 120 } ], \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"lights\": [ { \"type\": \"directional\", \"direction\": [0, -1, 0], \"intensity\": [1, 1, 1] } ], \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
         "{ \"film\": { \"width\": 1.5 }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
         "{ \"integrator\": { \"maxDepth\": 0 }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
         "{ \"integrator\": { \"hemisphere\": \"stratified\" }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",

@@ -5,6 +5,7 @@ import dev.strahl.io.json.SceneSettings.Setting;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.catchThrowableOfType;
 
+import dev.strahl.render.Aov;
 import dev.strahl.render.PhotonParameters;
 import dev.strahl.render.HemisphereSampling;
 import dev.strahl.render.IntegratorKind;
@@ -26,25 +27,27 @@ import org.junit.jupiter.api.Test;
  */
 class SceneSettingsTest {
     /** A file that sets every key, each to a value unlike the command line's below. */
-    static final SceneSettings EVERY_KEY = new SceneSettings(320, 160, 8, 3, 42L, IntegratorKind.DIRECT, 4, HemisphereSampling.UNIFORM, 2000, 0.1);
+    static final SceneSettings EVERY_KEY = new SceneSettings(320, 160, 8, 3, 42L, IntegratorKind.DIRECT, 4, HemisphereSampling.UNIFORM, 2000, 0.1,
+            Set.of(Aov.ALBEDO, Aov.DEPTH));
     /** A command line with a value for every setting and for settings a file cannot give (threads, culling, pass size, time limit). */
     static final RenderSettings COMMAND_LINE = RenderSettings.defaults().withSize(200, 100).withSamplesPerPixel(256).withMaxDepth(5)
             .withSeed(9).withIntegrator(IntegratorKind.WHITTED).withLightSamples(2).withHemisphere(HemisphereSampling.COSINE)
             .withThreads(3).withCullBackFaces(true).withSamplesPerPass(2).withTimeLimit(Duration.ofSeconds(7))
-            .withPhotons(new PhotonParameters(5000, 0.25));
+            .withPhotons(new PhotonParameters(5000, 0.25)).withAovs(EnumSet.of(Aov.NORMAL));
 
     /** Each setting's value in a RenderSettings. */
-    static final Map<Setting, Function<RenderSettings, Object>> VALUE = new EnumMap<>(Map.of(
-            Setting.WIDTH, RenderSettings::width,
-            Setting.HEIGHT, RenderSettings::height,
-            Setting.SAMPLES_PER_PIXEL, RenderSettings::samplesPerPixel,
-            Setting.MAX_DEPTH, RenderSettings::maxDepth,
-            Setting.SEED, RenderSettings::seed,
-            Setting.INTEGRATOR, RenderSettings::integrator,
-            Setting.LIGHT_SAMPLES, RenderSettings::lightSamples,
-            Setting.HEMISPHERE, RenderSettings::hemisphere,
-            Setting.PHOTONS, r -> r.photons().photonsPerIteration(),
-            Setting.PHOTON_RADIUS, r -> r.photons().initialRadius()));
+    static final Map<Setting, Function<RenderSettings, Object>> VALUE = new EnumMap<>(Map.ofEntries(
+            Map.entry(Setting.AOVS, RenderSettings::aovs),
+            Map.entry(Setting.WIDTH, RenderSettings::width),
+            Map.entry(Setting.HEIGHT, RenderSettings::height),
+            Map.entry(Setting.SAMPLES_PER_PIXEL, RenderSettings::samplesPerPixel),
+            Map.entry(Setting.MAX_DEPTH, RenderSettings::maxDepth),
+            Map.entry(Setting.SEED, RenderSettings::seed),
+            Map.entry(Setting.INTEGRATOR, RenderSettings::integrator),
+            Map.entry(Setting.LIGHT_SAMPLES, RenderSettings::lightSamples),
+            Map.entry(Setting.HEMISPHERE, RenderSettings::hemisphere),
+            Map.entry(Setting.PHOTONS, r -> r.photons().photonsPerIteration()),
+            Map.entry(Setting.PHOTON_RADIUS, r -> r.photons().initialRadius())));
 
     @Test
     void withNothingGivenTheFileReplacesEverySettingItHas() throws Exception {
@@ -52,7 +55,7 @@ class SceneSettingsTest {
         assertThat(s).isEqualTo(EVERY_KEY.applyTo(COMMAND_LINE));
         assertThat(s).isEqualTo(COMMAND_LINE.withSize(320, 160).withSamplesPerPixel(8).withMaxDepth(3).withSeed(42)
                 .withIntegrator(IntegratorKind.DIRECT).withLightSamples(4).withHemisphere(HemisphereSampling.UNIFORM)
-                .withPhotons(new PhotonParameters(2000, 0.1)));
+                .withPhotons(new PhotonParameters(2000, 0.1)).withAovs(EnumSet.of(Aov.ALBEDO, Aov.DEPTH)));
         assertThat(SceneSettings.NONE.applyTo(COMMAND_LINE, Set.of())).as("a file that says nothing").isEqualTo(COMMAND_LINE);
     }
 

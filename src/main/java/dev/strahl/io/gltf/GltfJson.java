@@ -1,0 +1,235 @@
+package dev.strahl.io.gltf;
+
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonParser;
+import com.fasterxml.jackson.core.JsonToken;
+import com.fasterxml.jackson.core.StreamReadFeature;
+import com.fasterxml.jackson.core.exc.StreamConstraintsException;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import dev.strahl.scene.SceneException;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * A value of a glTF document that knows its JSON path ({@code meshes[0].primitives[1].indices}),
+ * so that every error names the element at fault: a GLB's JSON is one line, where a line number
+ * says nothing. (io.json's tree keeps lines and sits above this package.) Parsed with Jackson's
+ * streaming parser; typed getters throw {@link SceneException} naming the file and the path.
+ */
+final class GltfJson {
+    private final Path file;
+    private final Object value;          // Map<String, GltfJson>, List<GltfJson>, Double, String, Boolean or null
+    final String path;
+
+    private GltfJson(Path file, Object value, String path) {
+        this.file = file;
+        this.value = value;
+        this.path = path;
+    }
+
+    /** Parses a whole document; malformed JSON is an error naming the line and column. */
+    static GltfJson parse(Path file, byte[] bytes, int offset, int length) throws SceneException {
+        JsonFactory factory = JsonFactory.builder().enable(StreamReadFeature.STRICT_DUPLICATE_DETECTION)
+                .disable(StreamReadFeature.INCLUDE_SOURCE_IN_LOCATION).build();
+        try (JsonParser p = factory.createParser(bytes, offset, length)) {
+            if (p.nextToken() == null) {
+                throw new SceneException(file, "empty glTF JSON");
+            }
+            GltfJson root = read(p, file, "");
+            if (p.nextToken() != null) {
+                throw new SceneException(file, "malformed JSON: content after the end of the root object");
+            }
+            return root;
+        } catch (StreamConstraintsException e) {
+            throw new SceneException(file, "malformed JSON: " + firstLine(e.getOriginalMessage()));
+        } catch (JsonProcessingException e) {
+            int line = e.getLocation() == null ? 0 : e.getLocation().getLineNr();
+            String where = line > 0 ? "line " + line + ", column " + e.getLocation().getColumnNr() + ": " : "";
+            throw new SceneException(file, "malformed JSON: " + where + firstLine(e.getOriginalMessage()));
+        } catch (IOException e) {
+            throw new SceneException(file, "cannot parse: " + e.getMessage(), e);
+        }
+    }
+
+    private static String firstLine(String msg) {
+        int nl = msg.indexOf('\n');
+        return nl >= 0 ? msg.substring(0, nl) : msg;
+    }
+
+    private static GltfJson read(JsonParser p, Path file, String path) throws IOException {
+        JsonToken t = p.currentToken();
+        switch (t) {
+            case START_OBJECT: {
+                Map<String, GltfJson> map = new LinkedHashMap<>();
+                while (p.nextToken() == JsonToken.FIELD_NAME) {
+                    String key = p.currentName();
+                    p.nextToken();
+                    map.put(key, read(p, file, path.isEmpty() ? key : path + "." + key));
+                }
+                return new GltfJson(file, map, path);
+            }
+            case START_ARRAY: {
+                List<GltfJson> list = new ArrayList<>();
+                while (p.nextToken() != JsonToken.END_ARRAY) {
+                    list.add(read(p, file, path + "[" + list.size() + "]"));
+                }
+                return new GltfJson(file, list, path);
+            }
+            case VALUE_NUMBER_INT:
+            case VALUE_NUMBER_FLOAT:
+                return new GltfJson(file, p.getDoubleValue(), path);
+            case VALUE_STRING:
+                return new GltfJson(file, p.getText(), path);
+            case VALUE_TRUE:
+            case VALUE_FALSE:
+                return new GltfJson(file, p.getBooleanValue(), path);
+            default:
+                return new GltfJson(file, null, path);
+        }
+    }
+
+    /** An error about this element: {@code file: path: message}. */
+    SceneException error(String message) {
+        return new SceneException(file, (path.isEmpty() ? "" : path + ": ") + message);
+    }
+
+    /** The member {@code key}, or null when absent (or JSON null). */
+    GltfJson get(String key) throws SceneException {
+        GltfJson v = object().get(key);
+        return v == null || v.value == null ? null : v;
+    }
+
+    boolean has(String key) throws SceneException {
+        return get(key) != null;
+    }
+
+    /** The member {@code key}, which must be present. */
+    GltfJson require(String key) throws SceneException {
+        GltfJson v = get(key);
+        if (v == null) {
+            throw error("missing required property '" + key + "'");
+        }
+        return v;
+    }
+
+    @SuppressWarnings("unchecked")
+    Map<String, GltfJson> object() throws SceneException {
+        if (!(value instanceof Map)) {
+            throw error("must be an object, got " + typeName());
+        }
+        return (Map<String, GltfJson>) value;
+    }
+
+    @SuppressWarnings("unchecked")
+    List<GltfJson> array() throws SceneException {
+        if (!(value instanceof List)) {
+            throw error("must be an array, got " + typeName());
+        }
+        return (List<GltfJson>) value;
+    }
+
+    /** The array {@code key}, empty when absent. */
+    List<GltfJson> array(String key) throws SceneException {
+        GltfJson v = get(key);
+        return v == null ? List.of() : v.array();
+    }
+
+    String string() throws SceneException {
+        if (!(value instanceof String s)) {
+            throw error("must be a string, got " + typeName());
+        }
+        return s;
+    }
+
+    String string(String key, String otherwise) throws SceneException {
+        GltfJson v = get(key);
+        return v == null ? otherwise : v.string();
+    }
+
+    double number() throws SceneException {
+        if (!(value instanceof Double d)) {
+            throw error("must be a number, got " + typeName());
+        }
+        return d;
+    }
+
+    double number(String key, double otherwise) throws SceneException {
+        GltfJson v = get(key);
+        return v == null ? otherwise : v.number();
+    }
+
+    /** A whole number in [min, max]. */
+    int integer(long min, long max) throws SceneException {
+        double d = number();
+        if (d != Math.rint(d) || d < min || d > max) {
+            throw error("must be a whole number in [" + min + ", " + max + "], got " + format(d));
+        }
+        return (int) d;
+    }
+
+    int integer(String key, int otherwise, long min, long max) throws SceneException {
+        GltfJson v = get(key);
+        return v == null ? otherwise : v.integer(min, max);
+    }
+
+    /** An index into a top-level array of {@code size} elements. */
+    int index(int size) throws SceneException {
+        double d = number();
+        if (d != Math.rint(d) || d < 0 || d >= size) {
+            throw error("index " + format(d) + " out of range (" + size + " element" + (size == 1 ? "" : "s") + ")");
+        }
+        return (int) d;
+    }
+
+    boolean bool(String key, boolean otherwise) throws SceneException {
+        GltfJson v = get(key);
+        if (v == null) {
+            return otherwise;
+        }
+        if (!(v.value instanceof Boolean b)) {
+            throw v.error("must be true or false, got " + v.typeName());
+        }
+        return b;
+    }
+
+    /** The array {@code key} of exactly {@code n} numbers, or {@code otherwise} when absent. */
+    double[] numbers(String key, int n, double[] otherwise) throws SceneException {
+        GltfJson v = get(key);
+        if (v == null) {
+            return otherwise;
+        }
+        List<GltfJson> list = v.array();
+        if (list.size() != n) {
+            throw v.error("must have " + n + " numbers, got " + list.size());
+        }
+        double[] out = new double[n];
+        for (int i = 0; i < n; i++) {
+            out[i] = list.get(i).number();
+        }
+        return out;
+    }
+
+    String typeName() {
+        if (value == null) {
+            return "null";
+        }
+        if (value instanceof Map) {
+            return "an object";
+        }
+        if (value instanceof List) {
+            return "an array";
+        }
+        if (value instanceof Double) {
+            return "a number";
+        }
+        return value instanceof String ? "a string" : "a boolean";
+    }
+
+    static String format(double v) {
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+    }
+}

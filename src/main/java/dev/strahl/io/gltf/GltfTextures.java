@@ -1,0 +1,147 @@
+package dev.strahl.io.gltf;
+
+import dev.strahl.scene.SceneException;
+import dev.strahl.scene.Texture;
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.Map;
+
+/**
+ * glTF texture references ({@code textureInfo}): the image (a file next to the asset, a
+ * {@code data:} URI or a buffer view; PNG or JPEG), the sampler's wrap mode and
+ * KHR_texture_transform's offset and scale. Texture coordinates were turned to strahl's
+ * bottom-left convention when the mesh was read (v' = 1 − v), so a transform (offset o, scale s,
+ * in glTF's top-left coordinates) becomes offset (o_u, 1 − s_v − o_v) and scale s here. An image
+ * that is missing or cannot be decoded is a warning, as in MTL files: the material keeps its
+ * factors. Embedded images are written once to a temporary file, as strahl's textures are files.
+ */
+final class GltfTextures {
+    static final int CLAMP_TO_EDGE = 33071;
+    static final int MIRRORED_REPEAT = 33648;
+    static final int REPEAT = 10497;
+
+    private final GltfDocument doc;
+    private final Map<Integer, Texture> images = new HashMap<>();
+    private final Map<Integer, Boolean> failed = new HashMap<>();
+    private Path tempFolder;
+
+    GltfTextures(GltfDocument doc) {
+        this.doc = doc;
+    }
+
+    /**
+     * The texture a {@code textureInfo} names, with its sampler and transform, or null (with a
+     * warning note) when its image cannot be used.
+     */
+    Texture texture(GltfJson info, String material) throws SceneException {
+        GltfJson textureNode = doc.element("textures", info.require("index"));
+        int texCoord = info.integer("texCoord", 0, 0, Integer.MAX_VALUE);
+        GltfJson transform = extension(info, "KHR_texture_transform");
+        if (transform != null && transform.has("texCoord")) {
+            texCoord = transform.integer("texCoord", 0, 0, Integer.MAX_VALUE);
+        }
+        if (texCoord != 0) {
+            doc.noteOnce("texture coordinate sets other than TEXCOORD_0 are not supported: " + info.path + " reads TEXCOORD_0");
+        }
+        GltfJson source = textureNode.get("source");
+        if (source == null) {
+            GltfJson ext = textureNode.get("extensions");
+            doc.noteOnce("warning: " + textureNode.path + " has no PNG or JPEG source"
+                    + (ext != null ? " (extensions " + String.join(", ", ext.object().keySet()) + ")" : "") + ": ignored");
+            return null;
+        }
+        int imageIndex = source.index(doc.root.array("images").size());
+        Texture t = image(imageIndex, material);
+        if (t == null) {
+            return null;
+        }
+        if (textureNode.has("sampler")) {
+            GltfJson sampler = doc.element("samplers", textureNode.get("sampler"));
+            int s = sampler.integer("wrapS", REPEAT, 0, Integer.MAX_VALUE);
+            int tt = sampler.integer("wrapT", REPEAT, 0, Integer.MAX_VALUE);
+            if (s != tt) {
+                doc.noteOnce(sampler.path + ": wrapS and wrapT differ; strahl wraps both axes alike, by wrapS");
+            }
+            t = t.withWrap(wrap(sampler, s));
+        }
+        if (transform != null) {
+            double[] offset = transform.numbers("offset", 2, new double[] {0, 0});
+            double[] scale = transform.numbers("scale", 2, new double[] {1, 1});
+            if (transform.number("rotation", 0) != 0) {
+                doc.noteOnce("warning: KHR_texture_transform rotation is not supported: " + transform.path + " is read without it");
+            }
+            if (!Double.isFinite(offset[0] + offset[1] + scale[0] + scale[1])) {
+                throw transform.error("offset and scale must be finite");
+            }
+            t = t.withUvScale(scale[0], scale[1]).withUvOffset(offset[0], 1 - scale[1] - offset[1]);
+        }
+        return t;
+    }
+
+    private Texture.Wrap wrap(GltfJson sampler, int mode) throws SceneException {
+        switch (mode) {
+            case CLAMP_TO_EDGE:
+                return Texture.Wrap.CLAMP;
+            case MIRRORED_REPEAT:
+                return Texture.Wrap.MIRRORED_REPEAT;
+            case REPEAT:
+                return Texture.Wrap.REPEAT;
+            default:
+                throw sampler.error("unknown wrap mode " + mode + " (known: 33071 CLAMP_TO_EDGE, 33648 MIRRORED_REPEAT, 10497 REPEAT)");
+        }
+    }
+
+    static GltfJson extension(GltfJson element, String name) throws SceneException {
+        GltfJson ext = element.get("extensions");
+        return ext == null ? null : ext.get(name);
+    }
+
+    private Texture image(int index, String material) throws SceneException {
+        Texture done = images.get(index);
+        if (done != null || failed.containsKey(index)) {
+            return done;
+        }
+        GltfJson image = doc.root.array("images").get(index);
+        Path path;
+        if (image.has("uri")) {
+            GltfJson uri = image.get("uri");
+            path = uri.string().startsWith("data:") ? embedded(index, GltfDocument.decodeDataUri(uri)) : doc.resolve(uri);
+        } else {
+            GltfJson view = image.require("bufferView");
+            ByteBuffer data = doc.bufferView(view.index(doc.root.array("bufferViews").size()));
+            byte[] bytes = new byte[data.remaining()];
+            data.duplicate().get(bytes);
+            path = embedded(index, bytes);
+        }
+        try {
+            Texture t = Texture.image(path);
+            images.put(index, t);
+            return t;
+        } catch (NoSuchFileException e) {
+            doc.notes.add("warning: material '" + material + "': image not found: " + path + " (" + image.path + ", ignored)");
+        } catch (IOException | RuntimeException e) {
+            doc.notes.add("warning: material '" + material + "': " + image.path + " cannot be read (" + e.getMessage() + "), ignored");
+        }
+        failed.put(index, true);
+        return null;
+    }
+
+    private Path embedded(int index, byte[] bytes) throws SceneException {
+        try {
+            if (tempFolder == null) {
+                tempFolder = Files.createTempDirectory("strahl-gltf");
+                tempFolder.toFile().deleteOnExit();
+            }
+            Path f = tempFolder.resolve("image" + index);
+            Files.write(f, bytes);
+            f.toFile().deleteOnExit();
+            return f;
+        } catch (IOException e) {
+            throw new SceneException(doc.file, "cannot store embedded image " + index + " in a temporary file: " + e.getMessage(), e);
+        }
+    }
+}
