@@ -36,6 +36,11 @@ public final class Bvh {
     private final float[] pos;
     private final int[] tri;
     private final byte[] flags;
+    /**
+     * The triangles' vertices in leaf (primitive) order, 9 floats per triangle: a leaf's
+     * triangles are one contiguous run, read without the index lookup (36 bytes per triangle).
+     */
+    private final float[] verts;
     /** Floats per node: 24 box coordinates, 4 children (their int bits). */
     static final int NODE = 28;
     private final float[] nodes;
@@ -46,15 +51,16 @@ public final class Bvh {
     private final boolean bruteForce;
 
     Bvh(Geometry geometry, float[] nodes, int nodeCount) {
-        this(geometry, nodes, nodeCount, SimdNodes.AVAILABLE, false);
+        this(geometry, nodes, nodeCount, SimdNodes.AVAILABLE, false, leafVertices(geometry));
     }
 
-    private Bvh(Geometry geometry, float[] nodes, int nodeCount, boolean simd, boolean bruteForce) {
+    private Bvh(Geometry geometry, float[] nodes, int nodeCount, boolean simd, boolean bruteForce, float[] verts) {
         this.geometry = geometry;
         this.triangleCount = geometry.triangleCount();
         this.pos = geometry.positionArray();
         this.tri = geometry.indexArray();
         this.flags = geometry.flagArray();
+        this.verts = verts;
         this.nodes = nodes;
         this.nodeCount = nodeCount;
         this.simd = simd;
@@ -66,7 +72,7 @@ public final class Bvh {
         if (on && !SimdNodes.AVAILABLE) {
             throw new IllegalStateException("the Vector API path needs --add-modules jdk.incubator.vector");
         }
-        return new Bvh(geometry, nodes, nodeCount, on, bruteForce);
+        return new Bvh(geometry, nodes, nodeCount, on, bruteForce, verts);
     }
 
     /**
@@ -76,7 +82,21 @@ public final class Bvh {
      * it finds the same hits; only the order in which primitives are tried differs.
      */
     public Bvh bruteForce() {
-        return new Bvh(geometry, nodes, nodeCount, simd, true);
+        return new Bvh(geometry, nodes, nodeCount, simd, true, verts);
+    }
+
+    /** The triangles' vertices copied out in primitive order, 9 floats each (see {@link #verts}). */
+    private static float[] leafVertices(Geometry g) {
+        float[] pos = g.positionArray();
+        int[] tri = g.indexArray();
+        float[] v = new float[9 * g.triangleCount()];
+        for (int i = 0, k = 0; i < 3 * g.triangleCount(); i++, k += 3) {
+            int p = 3 * tri[i];
+            v[k] = pos[p];
+            v[k + 1] = pos[p + 1];
+            v[k + 2] = pos[p + 2];
+        }
+        return v;
     }
 
     /** Whether this is the brute-force loop of {@link #bruteForce()}. */
@@ -107,9 +127,9 @@ public final class Bvh {
         return nodeCount;
     }
 
-    /** Bytes held by the node arrays. */
+    /** Bytes held by the node arrays and the leaf-ordered triangle vertices. */
     public long byteSize() {
-        return 4L * nodes.length;
+        return 4L * nodes.length + 4L * verts.length;
     }
 
     /** A leaf child reference: {@code count} primitives from {@code first} on. */
@@ -238,8 +258,7 @@ public final class Bvh {
         final int nx = stack.nx, ny = stack.ny, nz = stack.nz;
         final float onx = stack.onx, ony = stack.ony, onz = stack.onz, ofx = stack.ofx, ofy = stack.ofy, ofz = stack.ofz;
         final RayTriangle tr = stack.triangle;
-        final float[] pos = this.pos;
-        final int[] tri = this.tri;
+        final float[] verts = this.verts;
         final float[] box = nodes;
         final int[] refs = stack.refs;
         final int[] dist = stack.dist;
@@ -276,8 +295,8 @@ public final class Bvh {
                 int first = leafFirst(ref), end = first + leafCount(ref);
                 if (first < triangleCount) {
                     boolean closer = false;
-                    for (int prim = first; prim < end; prim++) {
-                        if (tr.hit(pos, tri, flags, prim, tHit, cullBackFaces)) {
+                    for (int prim = first, a = 9 * first; prim < end; prim++, a += 9) {
+                        if (tr.hit(verts, a, a + 3, a + 6, flags, prim, tHit, cullBackFaces)) {
                             tHit = tr.t;
                             found = prim;
                             closer = true;
@@ -341,8 +360,7 @@ public final class Bvh {
         final RayTriangle tr = stack.triangle;
         final double tHit = ray.tMax;
         final int tMax = bits(BvhBuilder.roundUp(tHit));
-        final float[] pos = this.pos;
-        final int[] tri = this.tri;
+        final float[] verts = this.verts;
         final float[] box = nodes;
         final int[] refs = stack.refs;
         final int[] lanes = stack.lanes;
@@ -364,8 +382,8 @@ public final class Bvh {
                         return true;
                     }
                 } else {
-                    for (int prim = first; prim < end; prim++) {
-                        if (tr.hit(pos, tri, flags, prim, tHit, false)) {
+                    for (int prim = first, a = 9 * first; prim < end; prim++, a += 9) {
+                        if (tr.hit(verts, a, a + 3, a + 6, flags, prim, tHit, false)) {
                             return true;
                         }
                     }
