@@ -19,7 +19,7 @@ import dev.strahl.geometry.RayTriangle;
  * the children at {@code nodes[28i + 24 + c]}: an interior node's index (≥ 0), a leaf as
  * {@link #leaf(int, int)} (sign bit set, first primitive, count), or {@link #EMPTY} (with an
  * empty box, which no ray enters). That is 112 bytes per node and about a third as many nodes
- * as leaves.
+ * as leaves; the leaves' triangles are a copy of their vertices in leaf order (36 bytes each).
  */
 public final class Bvh {
     /** Depth limit of the four-wide tree; the builder's median fallback keeps real trees far below. */
@@ -33,13 +33,8 @@ public final class Bvh {
 
     private final Geometry geometry;
     private final int triangleCount;
-    private final float[] pos;
-    private final int[] tri;
     private final byte[] flags;
-    /**
-     * The triangles' vertices in leaf (primitive) order, 9 floats per triangle: a leaf's
-     * triangles are one contiguous run, read without the index lookup (36 bytes per triangle).
-     */
+    /** The triangles' vertices in primitive (leaf) order, 9 floats each: no index lookup, a leaf's in one run. */
     private final float[] verts;
     /** Floats per node: 24 box coordinates, 4 children (their int bits). */
     static final int NODE = 28;
@@ -51,14 +46,12 @@ public final class Bvh {
     private final boolean bruteForce;
 
     Bvh(Geometry geometry, float[] nodes, int nodeCount) {
-        this(geometry, nodes, nodeCount, SimdNodes.AVAILABLE, false, leafVertices(geometry));
+        this(geometry, nodes, nodeCount, SimdNodes.AVAILABLE, false, BvhWriter.leafVertices(geometry));
     }
 
     private Bvh(Geometry geometry, float[] nodes, int nodeCount, boolean simd, boolean bruteForce, float[] verts) {
         this.geometry = geometry;
         this.triangleCount = geometry.triangleCount();
-        this.pos = geometry.positionArray();
-        this.tri = geometry.indexArray();
         this.flags = geometry.flagArray();
         this.verts = verts;
         this.nodes = nodes;
@@ -83,20 +76,6 @@ public final class Bvh {
      */
     public Bvh bruteForce() {
         return new Bvh(geometry, nodes, nodeCount, simd, true, verts);
-    }
-
-    /** The triangles' vertices copied out in primitive order, 9 floats each (see {@link #verts}). */
-    private static float[] leafVertices(Geometry g) {
-        float[] pos = g.positionArray();
-        int[] tri = g.indexArray();
-        float[] v = new float[9 * g.triangleCount()];
-        for (int i = 0, k = 0; i < 3 * g.triangleCount(); i++, k += 3) {
-            int p = 3 * tri[i];
-            v[k] = pos[p];
-            v[k + 1] = pos[p + 1];
-            v[k + 2] = pos[p + 2];
-        }
-        return v;
     }
 
     /** Whether this is the brute-force loop of {@link #bruteForce()}. */
@@ -218,7 +197,7 @@ public final class Bvh {
         double tHit = ray.tMax;
         int found = -1;
         for (int prim = 0; prim < triangleCount; prim++) {
-            if (tr.hit(pos, tri, flags, prim, tHit, cullBackFaces)) {
+            if (tr.hit(verts, 9 * prim, 9 * prim + 3, 9 * prim + 6, flags, prim, tHit, cullBackFaces)) {
                 tHit = tr.t;
                 found = prim;
             }
@@ -239,7 +218,7 @@ public final class Bvh {
         stack.prepare(ray);
         final RayTriangle tr = stack.triangle;
         for (int prim = 0; prim < triangleCount; prim++) {
-            if (tr.hit(pos, tri, flags, prim, ray.tMax, false)) {
+            if (tr.hit(verts, 9 * prim, 9 * prim + 3, 9 * prim + 6, flags, prim, ray.tMax, false)) {
                 return true;
             }
         }
