@@ -19,7 +19,7 @@ import dev.strahl.geometry.RayTriangle;
  * the children at {@code nodes[28i + 24 + c]}: an interior node's index (≥ 0), a leaf as
  * {@link #leaf(int, int)} (sign bit set, first primitive, count), or {@link #EMPTY} (with an
  * empty box, which no ray enters). That is 112 bytes per node and about a third as many nodes
- * as leaves.
+ * as leaves; the leaves' triangles are a copy of their vertices in leaf order (36 bytes each).
  */
 public final class Bvh {
     /** Depth limit of the four-wide tree; the builder's median fallback keeps real trees far below. */
@@ -33,9 +33,9 @@ public final class Bvh {
 
     private final Geometry geometry;
     private final int triangleCount;
-    private final float[] pos;
-    private final int[] tri;
     private final byte[] flags;
+    /** The triangles' vertices in primitive (leaf) order, 9 floats each: no index lookup, a leaf's in one run. */
+    private final float[] verts;
     /** Floats per node: 24 box coordinates, 4 children (their int bits). */
     static final int NODE = 28;
     private final float[] nodes;
@@ -46,15 +46,14 @@ public final class Bvh {
     private final boolean bruteForce;
 
     Bvh(Geometry geometry, float[] nodes, int nodeCount) {
-        this(geometry, nodes, nodeCount, SimdNodes.AVAILABLE, false);
+        this(geometry, nodes, nodeCount, SimdNodes.AVAILABLE, false, BvhWriter.leafVertices(geometry));
     }
 
-    private Bvh(Geometry geometry, float[] nodes, int nodeCount, boolean simd, boolean bruteForce) {
+    private Bvh(Geometry geometry, float[] nodes, int nodeCount, boolean simd, boolean bruteForce, float[] verts) {
         this.geometry = geometry;
         this.triangleCount = geometry.triangleCount();
-        this.pos = geometry.positionArray();
-        this.tri = geometry.indexArray();
         this.flags = geometry.flagArray();
+        this.verts = verts;
         this.nodes = nodes;
         this.nodeCount = nodeCount;
         this.simd = simd;
@@ -66,7 +65,7 @@ public final class Bvh {
         if (on && !SimdNodes.AVAILABLE) {
             throw new IllegalStateException("the Vector API path needs --add-modules jdk.incubator.vector");
         }
-        return new Bvh(geometry, nodes, nodeCount, on, bruteForce);
+        return new Bvh(geometry, nodes, nodeCount, on, bruteForce, verts);
     }
 
     /**
@@ -76,7 +75,7 @@ public final class Bvh {
      * it finds the same hits; only the order in which primitives are tried differs.
      */
     public Bvh bruteForce() {
-        return new Bvh(geometry, nodes, nodeCount, simd, true);
+        return new Bvh(geometry, nodes, nodeCount, simd, true, verts);
     }
 
     /** Whether this is the brute-force loop of {@link #bruteForce()}. */
@@ -107,9 +106,9 @@ public final class Bvh {
         return nodeCount;
     }
 
-    /** Bytes held by the node arrays. */
+    /** Bytes held by the node arrays and the leaf-ordered triangle vertices. */
     public long byteSize() {
-        return 4L * nodes.length;
+        return 4L * nodes.length + 4L * verts.length;
     }
 
     /** A leaf child reference: {@code count} primitives from {@code first} on. */
@@ -198,7 +197,7 @@ public final class Bvh {
         double tHit = ray.tMax;
         int found = -1;
         for (int prim = 0; prim < triangleCount; prim++) {
-            if (tr.hit(pos, tri, flags, prim, tHit, cullBackFaces)) {
+            if (tr.hit(verts, 9 * prim, 9 * prim + 3, 9 * prim + 6, flags, prim, tHit, cullBackFaces)) {
                 tHit = tr.t;
                 found = prim;
             }
@@ -219,7 +218,7 @@ public final class Bvh {
         stack.prepare(ray);
         final RayTriangle tr = stack.triangle;
         for (int prim = 0; prim < triangleCount; prim++) {
-            if (tr.hit(pos, tri, flags, prim, ray.tMax, false)) {
+            if (tr.hit(verts, 9 * prim, 9 * prim + 3, 9 * prim + 6, flags, prim, ray.tMax, false)) {
                 return true;
             }
         }
@@ -238,8 +237,7 @@ public final class Bvh {
         final int nx = stack.nx, ny = stack.ny, nz = stack.nz;
         final float onx = stack.onx, ony = stack.ony, onz = stack.onz, ofx = stack.ofx, ofy = stack.ofy, ofz = stack.ofz;
         final RayTriangle tr = stack.triangle;
-        final float[] pos = this.pos;
-        final int[] tri = this.tri;
+        final float[] verts = this.verts;
         final float[] box = nodes;
         final int[] refs = stack.refs;
         final int[] dist = stack.dist;
@@ -276,8 +274,8 @@ public final class Bvh {
                 int first = leafFirst(ref), end = first + leafCount(ref);
                 if (first < triangleCount) {
                     boolean closer = false;
-                    for (int prim = first; prim < end; prim++) {
-                        if (tr.hit(pos, tri, flags, prim, tHit, cullBackFaces)) {
+                    for (int prim = first, a = 9 * first; prim < end; prim++, a += 9) {
+                        if (tr.hit(verts, a, a + 3, a + 6, flags, prim, tHit, cullBackFaces)) {
                             tHit = tr.t;
                             found = prim;
                             closer = true;
@@ -341,8 +339,7 @@ public final class Bvh {
         final RayTriangle tr = stack.triangle;
         final double tHit = ray.tMax;
         final int tMax = bits(BvhBuilder.roundUp(tHit));
-        final float[] pos = this.pos;
-        final int[] tri = this.tri;
+        final float[] verts = this.verts;
         final float[] box = nodes;
         final int[] refs = stack.refs;
         final int[] lanes = stack.lanes;
@@ -364,8 +361,8 @@ public final class Bvh {
                         return true;
                     }
                 } else {
-                    for (int prim = first; prim < end; prim++) {
-                        if (tr.hit(pos, tri, flags, prim, tHit, false)) {
+                    for (int prim = first, a = 9 * first; prim < end; prim++, a += 9) {
+                        if (tr.hit(verts, a, a + 3, a + 6, flags, prim, tHit, false)) {
                             return true;
                         }
                     }

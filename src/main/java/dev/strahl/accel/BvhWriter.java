@@ -126,4 +126,18 @@ final class BvhWriter {
             nodes[Bvh.NODE * node + 24 + slot] = Bvh.leaf(newId[nodeA[b]], ~nodeB[b]);
         }
     }
+
+    /** The triangles' vertices copied out in primitive order, 9 floats each: {@link Bvh}'s leaf triangles. */
+    static float[] leafVertices(Geometry g) {
+        float[] pos = g.positionArray();
+        int[] tri = g.indexArray();
+        float[] v = new float[9 * g.triangleCount()];
+        for (int i = 0, k = 0; i < 3 * g.triangleCount(); i++, k += 3) {
+            int p = 3 * tri[i];
+            v[k] = pos[p];
+            v[k + 1] = pos[p + 1];
+            v[k + 2] = pos[p + 2];
+        }
+        return v;
+    }
 }

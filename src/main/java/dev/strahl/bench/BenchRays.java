@@ -9,6 +9,12 @@ import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.SurfacePoint;
+import dev.strahl.io.json.JsonFile;
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
@@ -92,6 +98,49 @@ public final class BenchRays {
             k = put(data, k, o, d, dist);
         }
         return new RaySet("shadow", data, n, true);
+    }
+
+    /**
+     * Writes a mesh's triangles and ray sets for the anchors script ({@code docs/bench/anchors.py},
+     * which traces the same rays with Embree): {@code NAME.triangles.f32} (9 little-endian floats
+     * per triangle, the three vertices), {@code NAME.SET.f32} per set (7 floats per ray: origin,
+     * direction, tMax, infinite for closest-hit sets) and {@code NAME.json} describing them.
+     * Spheres are not written (the benchmark meshes have none; the JSON gives their count).
+     */
+    public static void export(Path dir, String name, String file, Geometry g, List<RaySet> sets) throws IOException {
+        float[] pos = g.positionArray();
+        int[] tri = g.indexArray();
+        int n = g.triangleCount();
+        ByteBuffer b = ByteBuffer.allocate(36 * n).order(ByteOrder.LITTLE_ENDIAN);
+        for (int i = 0; i < 3 * n; i++) {
+            int v = 3 * tri[i];
+            b.putFloat(pos[v]).putFloat(pos[v + 1]).putFloat(pos[v + 2]);
+        }
+        Files.write(dir.resolve(name + ".triangles.f32"), b.array());
+        for (RaySet set : sets) {
+            ByteBuffer r = ByteBuffer.allocate(28 * set.count()).order(ByteOrder.LITTLE_ENDIAN);
+            for (double x : set.data()) {
+                r.putFloat((float) x);
+            }
+            Files.write(dir.resolve(name + "." + set.name() + ".f32"), r.array());
+        }
+        JsonFile.write(dir.resolve(name + ".json"), json -> {
+            json.writeStartObject();
+            json.writeStringField("mesh", name);
+            json.writeStringField("file", file);
+            json.writeNumberField("triangles", n);
+            json.writeNumberField("spheres", g.sphereCount());
+            json.writeArrayFieldStart("sets");
+            for (RaySet set : sets) {
+                json.writeStartObject();
+                json.writeStringField("name", set.name());
+                json.writeNumberField("rays", set.count());
+                json.writeBooleanField("any_hit", set.anyHit());
+                json.writeEndObject();
+            }
+            json.writeEndArray();
+            json.writeEndObject();
+        });
     }
 
     private static int put(double[] data, int k, Vector3d o, Vector3d d, double tMax) {

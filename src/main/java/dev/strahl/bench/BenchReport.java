@@ -24,15 +24,7 @@ import java.util.Locale;
 public final class BenchReport {
     private BenchReport() {}
 
-    // Anchors measured on the project's 2-core machine (AMD EPYC Zen 4), see docs/performance.md.
-    static final double MITSUBA_LLVM = 4.0e6;         // path samples/s, 2 threads, Mitsuba 3.9.1 llvm_ad_rgb
-    static final double MITSUBA_SCALAR = 1.26e6;      // path samples/s, 2 threads, Mitsuba 3.9.1 scalar_rgb
-    static final double EMBREE_PRIMARY_1M = 11.5e6;   // closest-hit camera rays/s per core, 1.1 M bunny, Embree 4
-    static final double EMBREE_INCOHERENT_1M = 3.0e6; // incoherent closest-hit rays/s per core, 1.1 M bunny
-    static final double EMBREE_INCOHERENT_69K = 6.0e6;
-    static final double EMBREE_INCOHERENT_CORNELL = 7.5e6;
-    static final double EMBREE_BUILD_1M = 3.7e6;      // triangles/s, 2 threads, 1.1 M bunny
-    static final String BUNNY = "bun_zipper", BUNNY_1M = "bunny_midpoint-sub2_1.1M", CORNELL = "cornell-box";
+    static final String CORNELL = "cornell-box";
 
     /** A result record describing this machine and JVM. */
     public static BenchResults machine(boolean quick, int runs) {
@@ -64,13 +56,21 @@ public final class BenchReport {
         return id != null ? id : System.getProperty("os.arch");
     }
 
-    /** The targets that this run measured, each against its anchor. */
+    /**
+     * The issue's targets that this run measured, each against its anchor ({@code r.anchors}: the
+     * side-by-side file of {@code --anchors}, or the constants); a target whose anchor is not
+     * there is left out.
+     */
     public static void targets(BenchResults r, int oneThread, int allThreads) {
+        BenchAnchors a = r.anchors;
+        String side = a.sideBySide() ? ", side by side" : ", constant";
         Render one = find(r.cornell, oneThread), all = find(r.cornell, allThreads);
         if (all != null) {
             String t = allThreads + " threads";
-            r.targets.add(new Target("Cornell Box samples/s, " + t, all.samplesPerSecond().median(), MITSUBA_LLVM, "Mitsuba 3 LLVM, 2 threads", 1.5, false));
-            r.targets.add(new Target("Cornell Box samples/s, " + t, all.samplesPerSecond().median(), MITSUBA_SCALAR, "Mitsuba 3 scalar, 2 threads", 1.0, false));
+            add(r, new Target("Cornell Box samples/s, " + t, all.samplesPerSecond().median(), a.get(BenchAnchors.MITSUBA_LLVM),
+                    "Mitsuba 3 LLVM, 2 threads" + side, 1.5, false));
+            add(r, new Target("Cornell Box samples/s, " + t, all.samplesPerSecond().median(), a.get(BenchAnchors.MITSUBA_SCALAR),
+                    "Mitsuba 3 scalar, 2 threads" + side, 1.0, false));
         }
         if (one != null && all != null && allThreads > oneThread) {
             r.targets.add(new Target("thread scaling, " + allThreads + " vs " + oneThread, all.samplesPerSecond().median(),
@@ -80,25 +80,25 @@ public final class BenchReport {
             r.targets.add(new Target("viewer preview 128², 1 spp, frames/s", r.previewFps.median(), 30, "30 frames/s", 1.0, false));
         }
         for (Mesh m : r.meshes) {
-            Rays inc = m.find("incoherent", oneThread);
-            double anchor = m.name().equals(BUNNY_1M) ? EMBREE_INCOHERENT_1M : m.name().equals(BUNNY) ? EMBREE_INCOHERENT_69K
-                    : m.name().equals(CORNELL) ? EMBREE_INCOHERENT_CORNELL : 0;
-            if (inc != null && anchor > 0 && oneThread == 1) {
-                r.targets.add(new Target(m.name() + " incoherent closest-hit rays/s, 1 thread", inc.raysPerSecond().median(), anchor,
-                        "Embree 4, per core", 0.75, false));
+            for (String set : new String[] {"incoherent", "primary", "shadow"}) {
+                Rays x = m.find(set, oneThread);
+                if (x != null && oneThread == 1) {
+                    double goal = set.equals("incoherent") ? 1.0 : set.equals("primary") ? 0.75 : Double.NaN;
+                    add(r, new Target(m.name() + " " + set + (set.equals("shadow") ? " any-hit" : " closest-hit") + " rays/s, 1 thread",
+                            x.raysPerSecond().median(), a.get(BenchAnchors.embreeRays(m.name(), set)), "Embree 4, per core" + side, goal, false));
+                }
             }
-            Rays prim = m.find("primary", oneThread);
-            if (prim != null && m.name().equals(BUNNY_1M) && oneThread == 1) {
-                r.targets.add(new Target(m.name() + " primary rays/s, 1 thread", prim.raysPerSecond().median(), EMBREE_PRIMARY_1M,
-                        "Embree 4, per core (anchor only)", Double.NaN, false));
-            }
-            if (m.name().equals(BUNNY_1M)) {
-                r.targets.add(new Target(m.name() + " BVH build triangles/s, " + r.cores + " threads", m.buildRate().median(), EMBREE_BUILD_1M,
-                        "Embree 4, 2 threads", 0.5, false));
-            }
+            add(r, new Target(m.name() + " BVH build triangles/s, " + r.cores + " threads", m.buildRate().median(),
+                    a.get(BenchAnchors.embreeBuild(m.name())), "Embree 4 commit, " + r.cores + " threads" + side, 0.75, false));
             if (!m.name().equals(CORNELL)) {
-                r.targets.add(new Target(m.name() + " BVH + mesh bytes per triangle", m.bytesPerTriangle(), 48, "48 bytes", 1.0, true));
+                r.targets.add(new Target(m.name() + " BVH + mesh bytes per triangle", m.bytesPerTriangle(), 96, "96 bytes", 1.0, true));
             }
+        }
+    }
+
+    private static void add(BenchResults r, Target t) {
+        if (!Double.isNaN(t.anchor())) {
+            r.targets.add(t);
         }
     }
 
@@ -149,9 +149,10 @@ public final class BenchReport {
             out.printf(Locale.ROOT, "%nskipped: %s%n", s);
         }
         if (!r.targets.isEmpty()) {
-            out.printf(Locale.ROOT, "%n%-58s %12s %12s  %-34s %7s %8s %s%n", "Targets", "measured", "anchor", "", "ratio", "goal", "reached");
+            out.printf(Locale.ROOT, "%nAnchors: %s%n", r.anchors.source());
+            out.printf(Locale.ROOT, "%-64s %12s %12s  %-46s %7s %8s %s%n", "Targets", "measured", "anchor", "", "ratio", "goal", "reached");
             for (Target t : r.targets) {
-                out.printf(Locale.ROOT, "  %-56s %12s %12s  %-34s %7.2f %8s %s%n", t.name(), num(t.measured()), num(t.anchor()), t.anchorSource(), t.ratio(),
+                out.printf(Locale.ROOT, "  %-62s %12s %12s  %-46s %7.2f %8s %s%n", t.name(), num(t.measured()), num(t.anchor()), t.anchorSource(), t.ratio(),
                         Double.isNaN(t.goal()) ? "-" : (t.atMost() ? "<= " : ">= ") + String.format(Locale.ROOT, "%.2f", t.goal()),
                         Double.isNaN(t.goal()) ? "-" : t.reached() ? "yes" : "no");
             }
@@ -243,6 +244,7 @@ public final class BenchReport {
                 json.writeString(s);
             }
             json.writeEndArray();
+            json.writeStringField("anchors", r.anchors.source());
             json.writeArrayFieldStart("targets");
             for (Target t : r.targets) {
                 json.writeStartObject();

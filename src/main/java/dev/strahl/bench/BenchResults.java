@@ -76,4 +76,6 @@ public final class BenchResults {
     public final List<String> skipped = new ArrayList<>();
     final List<Target> targets = new ArrayList<>();
     public double seconds;
+    /** What the targets are compared with: {@code --anchors FILE}, or the constants. */
+    public BenchAnchors anchors = BenchAnchors.fallback();
 }

@@ -1,5 +1,6 @@
 package dev.strahl.cli;
 
+import dev.strahl.bench.BenchAnchors;
 import dev.strahl.bench.BenchRays;
 import dev.strahl.bench.BenchProgress;
 import dev.strahl.bench.BenchReport;
@@ -89,6 +90,14 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--rays", paramLabel = "N", description = "Rays per ray set (default: 2^20; --quick: 2^17).")
     Integer raysPerSet;
 
+    @Option(names = "--anchors", paramLabel = "FILE", description = {"Compare with the anchor figures of this JSON file (written by docs/bench/anchors.py,",
+        "measured side by side) instead of the built-in constants of an earlier machine."})
+    Path anchors;
+
+    @Option(names = "--export-rays", paramLabel = "DIR", description = {"Write each mesh's triangles and ray sets to DIR for docs/bench/anchors.py",
+        "(Embree on the same rays) and stop: nothing is timed."})
+    Path exportRays;
+
     private BenchProgress progress;
 
     @Override
@@ -114,6 +123,18 @@ final class BenchCommand implements Callable<Integer> {
             err.println("strahl: --rays must be positive, got " + r.raysPerSet);
             return 2;
         }
+        if (anchors != null) {
+            try {
+                r.anchors = BenchAnchors.read(anchors);
+            } catch (IOException e) {
+                err.println("strahl: --anchors " + e.getMessage());
+                return 2;
+            }
+        }
+        if (exportRays != null && !java.nio.file.Files.isDirectory(exportRays)) {
+            err.println("strahl: --export-rays " + exportRays + ": not a directory");
+            return 2;
+        }
         progress = new BenchProgress(System.err, Terminal.isStderrTerminal());
         ExecutorService pool = Executors.newFixedThreadPool(counts.last(), t -> {
             Thread thread = new Thread(t, "strahl-bench");
@@ -126,7 +147,7 @@ final class BenchCommand implements Callable<Integer> {
             if (!noCornell || meshes == null) {
                 box = SceneLoader.load(cornell);
             }
-            if (!noCornell) {
+            if (!noCornell && exportRays == null) {
                 cornell(box, counts, timedRuns, r, failures);
             }
             List<Object[]> sets = new ArrayList<>();
@@ -150,6 +171,10 @@ final class BenchCommand implements Callable<Integer> {
             progress.done();
             err.println("strahl: " + e.getMessage());
             return 2;
+        } catch (IOException e) {
+            progress.done();
+            err.println("strahl: cannot write to " + exportRays + ": " + e.getMessage());
+            return 1;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             err.println("strahl: interrupted");
@@ -158,6 +183,11 @@ final class BenchCommand implements Callable<Integer> {
             pool.shutdownNow();
         }
         progress.done();
+        if (exportRays != null) {
+            out.printf("wrote the triangles and rays of %d mesh%s to %s%n", r.meshes.size(), r.meshes.size() == 1 ? "" : "es", exportRays);
+            out.flush();
+            return 0;
+        }
         r.seconds = (System.nanoTime() - start) * 1e-9;
         BenchReport.targets(r, counts.first(), counts.last());
         BenchReport.printTable(out, r);
@@ -244,10 +274,24 @@ final class BenchCommand implements Callable<Integer> {
         }
     }
 
+    /** The three ray sets of a mesh; {@code --export-rays} writes exactly these. */
+    private static List<BenchRays.RaySet> raySets(Scene scene, Geometry g, int n) {
+        Camera camera = scene.camera();         // the scene file's, or one framing a mesh from +Z
+        int side = (int) Math.max(1, Math.min(512, Math.sqrt(n / 4.0)));
+        return List.of(BenchRays.primary(camera, side, side, 4, 1), BenchRays.incoherent(g.bounds(), n, 2), BenchRays.shadow(g, n, 3));
+    }
+
     /** One mesh: BVH builds, memory, then each ray set checked against brute force and timed per thread count. */
     private void mesh(String name, Path file, Scene scene, double loadSeconds, TreeSet<Integer> counts, int timedRuns,
-                      ExecutorService pool, BenchResults r, List<String> failures) throws InterruptedException {
+                      ExecutorService pool, BenchResults r, List<String> failures) throws InterruptedException, IOException {
         Geometry g = World.of(scene).geometry();
+        if (exportRays != null) {
+            progress.step(name + ": writing rays");
+            BenchRays.export(exportRays, name, file.toString(), g, raySets(scene, g, r.raysPerSet));
+            r.meshes.add(new BenchResults.Mesh(name, file.toString(), g.triangleCount(), loadSeconds, BenchResults.Stat.of(new double[] {0}), 0,
+                    List.of(), "exported"));
+            return;
+        }
         double[] build = new double[timedRuns];
         Bvh bvh = null;
         progress.step(name + ": BVH build, warm-up");
@@ -261,10 +305,7 @@ final class BenchCommand implements Callable<Integer> {
         double bytes = (double) (bvh.geometry().byteSize() + bvh.byteSize()) / g.primitiveCount();
 
         progress.step(name + ": making rays");
-        Camera camera = scene.camera();         // the scene file's, or one framing a mesh from +Z
-        int side = (int) Math.max(1, Math.min(512, Math.sqrt(r.raysPerSet / 4.0)));
-        List<BenchRays.RaySet> sets = List.of(BenchRays.primary(camera, side, side, 4, 1),
-                BenchRays.incoherent(g.bounds(), r.raysPerSet, 2), BenchRays.shadow(g, r.raysPerSet, 3));
+        List<BenchRays.RaySet> sets = raySets(scene, g, r.raysPerSet);
         String check = "passed";
         int samples = (int) Math.max(16, Math.min(512, (1L << 24) / g.primitiveCount()));
         List<BenchResults.Rays> rays = new ArrayList<>();

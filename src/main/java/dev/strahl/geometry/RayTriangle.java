@@ -92,7 +92,16 @@ public final class RayTriangle {
      * (docs/performance.md, round 4).
      */
     public boolean hit(float[] pos, int[] tri, byte[] flags, int prim, double tMax, boolean cull) {
-        int a = 3 * tri[3 * prim], b = 3 * tri[3 * prim + 1], c = 3 * tri[3 * prim + 2];
+        return hit(pos, 3 * tri[3 * prim], 3 * tri[3 * prim + 1], 3 * tri[3 * prim + 2], flags, prim, tMax, cull);
+    }
+
+    /**
+     * {@link #hit(float[], int[], byte[], int, double, boolean)} with the vertices' offsets given:
+     * vertex a is {@code v[a .. a+2]}, b and c likewise. The BVH passes its leaf-ordered copy of
+     * the triangles ({@code a = 9·prim}, b = a + 3, c = a + 6), which spares the index lookup and
+     * keeps a leaf's vertices in neighbouring cache lines; the same float values give the same bits.
+     */
+    public boolean hit(float[] pos, int a, int b, int c, byte[] flags, int prim, double tMax, boolean cull) {
         // Vertices relative to the origin, sheared so that the ray is the z axis.
         double az0 = pos[a + kz] - okz, bz0 = pos[b + kz] - okz, cz0 = pos[c + kz] - okz;
         double axs = pos[a + kx] - okx - sx * az0, ays = pos[a + ky] - oky - sy * az0;

@@ -107,6 +107,41 @@ class BenchCommandTest {
     }
 
     @Test
+    void benchComparesWithTheAnchorsFileAndExportsItsRays() throws Exception {
+        Path anchors = dir.resolve("anchors.json");
+        Files.writeString(anchors, "{\"date\": \"d1\", \"embree\": {\"meshes\": {\"cornell-box\": "
+                + "{\"incoherent\": {\"rays_per_second\": {\"median\": 1234567.0}}}}}}");
+        Run r = RenderCommandTest.strahl("bench", "--quick", "--no-cornell", "--mesh", "scenes/cornell-box.obj", "--rays", "4096",
+                "--threads", "1", "--anchors", anchors.toString());
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).contains("Anchors: " + anchors + " (d1)").contains("1.23 M").contains("Embree 4, per core, side by side")
+                .doesNotContain("Mitsuba");                                   // not in the file: no target
+
+        Path rays = Files.createDirectory(dir.resolve("rays"));
+        r = RenderCommandTest.strahl("bench", "--mesh", "scenes/cornell-box.obj", "--rays", "1000", "--export-rays", rays.toString());
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(Files.size(rays.resolve("cornell-box.triangles.f32"))).isEqualTo(36 * 36);
+        assertThat(Files.size(rays.resolve("cornell-box.incoherent.f32"))).isEqualTo(1000 * 28);
+        assertThat(Files.size(rays.resolve("cornell-box.shadow.f32"))).isEqualTo(1000 * 28);
+        assertThat(Files.size(rays.resolve("cornell-box.primary.f32"))).isEqualTo(15 * 15 * 4 * 28);
+        assertThat(Files.readString(rays.resolve("cornell-box.json"))).contains("\"any_hit\" : true").contains("\"triangles\" : 36");
+    }
+
+    @Test
+    void aBadAnchorsFileIsOneLineAndExitCode2() throws Exception {
+        Path bad = dir.resolve("bad.json");
+        Files.writeString(bad, "{\"mitsuba\": {\"llvm_ad_rgb\": {\"samples_per_second\": {\"median\": 0}}}}");
+        Run r = RenderCommandTest.strahl("bench", "--quick", "--no-cornell", "--mesh", "scenes/cornell-box.obj", "--anchors", bad.toString());
+        assertThat(r.code()).isEqualTo(2);
+        assertThat(r.errLines()).hasSize(1);
+        assertThat(r.err()).contains("--anchors " + bad + ": line 1").contains("must be a positive number, got 0");
+        r = RenderCommandTest.strahl("bench", "--anchors", dir.resolve("missing.json").toString());
+        assertThat(r.code()).isEqualTo(2);
+        assertThat(r.errLines()).containsExactly("strahl: --anchors " + dir.resolve("missing.json") + ": no such file");
+        assertThat(RenderCommandTest.strahl("bench", "--export-rays", dir.resolve("nowhere").toString()).code()).isEqualTo(2);
+    }
+
+    @Test
     void benchRefusesBadOptions() {
         assertThat(RenderCommandTest.strahl("bench", "--runs", "0").code()).isEqualTo(2);
         assertThat(RenderCommandTest.strahl("bench", "--threads", "0").code()).isEqualTo(2);
