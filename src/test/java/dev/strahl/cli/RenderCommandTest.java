@@ -122,7 +122,7 @@ class RenderCommandTest {
     void unknownSceneExtension() throws IOException {
         Path scene = in.resolve("scene.txt");
         Files.writeString(scene, CUBE_OBJ);
-        assertRefused(render(scene.toString(), out.resolve("a.png")), scene.toString(), "unknown scene format", ".json, .obj or .ply");
+        assertRefused(render(scene.toString(), out.resolve("a.png")), scene.toString(), "unknown scene format", ".json, .obj, .ply, .gltf or .glb");
     }
 
     @Test
