@@ -22,7 +22,7 @@ class SourceSizeTest {
 
     /** Known debt: files over the limit, each with the most lines it may have. Split them; never add one. */
     static final Map<String, Integer> OVER_THE_LIMIT = Map.of(
-            "dev/strahl/cli/RenderCommand.java", 570,
+            "dev/strahl/cli/RenderCommand.java", 554,
             "dev/strahl/scene/Material.java", 528,
             "dev/strahl/io/json/JsonSceneReader.java", 497,
             "dev/strahl/cluster/HazelcastMember.java", 454,

@@ -52,6 +52,9 @@ final class ViewCommand implements Callable<Integer> {
     @Option(names = "--seed", defaultValue = "0", description = "Random seed (default: ${DEFAULT-VALUE}).")
     long seed;
 
+    @Mixin
+    EnvironmentLensOptions lens;
+
     @Option(names = "--theme", defaultValue = "system", paramLabel = "system|light|dark",
             description = "Light or dark look; system follows the desktop where it can (default: ${DEFAULT-VALUE}).")
     String theme;
@@ -62,7 +65,8 @@ final class ViewCommand implements Callable<Integer> {
     /** What the options say; those given on the command line win over the scene file's settings. */
     ViewerOptions options() {
         return new ViewerOptions(scene, width, height, spp, transport.maxDepth, transport.hemisphere, threads, seed,
-                transport.integrator, transport.lightSamples, Theme.parse(theme), given(), transport.photons, transport.photonRadius);
+                transport.integrator, transport.lightSamples, Theme.parse(theme), given(), transport.photons, transport.photonRadius,
+                lens.overrides());
     }
 
     /**

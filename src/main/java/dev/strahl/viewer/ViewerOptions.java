@@ -32,10 +32,11 @@ import java.util.Set;
  * @param given      the settings given explicitly (on the command line): a scene file does not override them
  * @param photons      photons per iteration for the photon mapper
  * @param photonRadius the photon mapper's initial gather radius; 0 = automatic
+ * @param overrides  the environment map and lens that replace every opened scene's own (command-line options)
  */
 public record ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere,
                             int threads, long seed, IntegratorKind integrator, int lightSamples, Theme theme, Set<Setting> given,
-                            int photons, double photonRadius) {
+                            int photons, double photonRadius, SceneOverrides overrides) {
 
     /**
      * The scene-file settings the viewer never takes from a file: its stop-at count is an
@@ -51,7 +52,16 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
         Objects.requireNonNull(integrator, "integrator");
         Objects.requireNonNull(theme, "theme");
         given = Set.copyOf(Objects.requireNonNull(given, "given"));
+        Objects.requireNonNull(overrides, "overrides");
         renderSettings(width, height, maxDepth, hemisphere, threads, seed, integrator, lightSamples, photons, photonRadius);   // validates
+    }
+
+    /** Options that change nothing in the scenes opened. */
+    public ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere,
+                         int threads, long seed, IntegratorKind integrator, int lightSamples, Theme theme, Set<Setting> given,
+                         int photons, double photonRadius) {
+        this(scene, width, height, stopAt, maxDepth, hemisphere, threads, seed, integrator, lightSamples, theme, given,
+                photons, photonRadius, SceneOverrides.NONE);
     }
 
     /** Options with the photon mapper's default parameters. */
