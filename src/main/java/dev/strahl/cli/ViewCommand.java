@@ -24,6 +24,7 @@ import picocli.CommandLine.Spec;
         versionProvider = Main.Version.class,
         description = {"Opens a window that renders a scene progressively, one sample per pixel at a time.",
             "Drag to orbit (left) or pan (right/middle), wheel to dolly; F1 in the window lists all controls.",
+            "Drop a scene file onto the window to open it; File > Open Recent lists the last 8.",
             "Without SCENE, shows the Cornell Box (scenes/cornell-box.json)."},
         sortOptions = false)
 final class ViewCommand implements Callable<Integer> {
