@@ -14,6 +14,7 @@ module dev.strahl {
     requires com.fasterxml.jackson.core;       // the scene file parser
     requires java.desktop;                     // ImageIO for PNG; Swing in the viewer
     requires java.management;
+    requires java.prefs;                       // the viewer's File → Open Recent list
     requires jdk.management;                   // the viewer's CPU load figure
     requires jdk.unsupported;                  // sun.misc.Signal: Ctrl-C stops a render and keeps its image
     requires static info.picocli;              // the command line only

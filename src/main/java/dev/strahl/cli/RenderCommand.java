@@ -180,19 +180,8 @@ final class RenderCommand implements Callable<Integer> {
             description = "With --cluster: the port this member listens on; 0 = 5701 or the next free one (default: ${DEFAULT-VALUE}).")
     int port;
 
-    @Option(names = "--aperture", paramLabel = "RADIUS",
-            description = "Thin-lens camera: the lens radius in scene units; 0 = pinhole, everything sharp (default: the scene's camera's).")
-    Double aperture;
-
-    @Option(names = "--focus-distance", paramLabel = "DISTANCE",
-            description = "Thin-lens camera: the distance in focus along the viewing direction (default: the scene's camera's, or the"
-                    + " distance to --look-at when the camera is moved).")
-    Double focusDistance;
-
-    @Option(names = "--envmap", paramLabel = "FILE",
-            description = "Light the scene with this latitude-longitude environment map (.hdr, .exr or .pfm; +Y up, centre column"
-                    + " along +Z) instead of its own environment.")
-    Path envmap;
+    @Mixin
+    EnvironmentLensOptions lens;
 
     @Option(names = {"-q", "--quiet"}, description = "Print nothing but errors.")
     boolean quiet;
@@ -252,12 +241,7 @@ final class RenderCommand implements Callable<Integer> {
         if (fov != null && !(fov > 0 && fov < 180)) {
             throw new IllegalArgumentException("--fov: the field of view must be in (0, 180) degrees, got " + fov);
         }
-        if (aperture != null && !(aperture >= 0 && aperture < Double.POSITIVE_INFINITY)) {
-            throw new IllegalArgumentException("--aperture: the lens radius must be finite and >= 0, got " + aperture);
-        }
-        if (focusDistance != null && !(focusDistance > 0 && focusDistance < Double.POSITIVE_INFINITY)) {
-            throw new IllegalArgumentException("--focus-distance: the distance must be finite and positive, got " + focusDistance);
-        }
+        lens.check();
         checkOutput(output, "output");
         if (statsFile != null) {
             checkWritable(statsFile, "--stats");
@@ -272,8 +256,8 @@ final class RenderCommand implements Callable<Integer> {
         bvhSeconds = World.of(loaded.scene()).bvhBuildSeconds();
         loadSeconds = (System.nanoTime() - loadStart) * 1e-9 - bvhSeconds;
         Scene s = loaded.scene().withCamera(camera(loaded.scene().camera()));
-        if (envmap != null) {
-            s = s.withEnvironmentMap(EnvironmentMaps.read(envmap), 1, 0);
+        if (lens.envmap != null) {
+            s = s.withEnvironmentMap(EnvironmentMaps.read(lens.envmap), 1, 0);
         }
         settings = loaded.settings().applyTo(settings, SceneFileOptions.given(spec.commandLine().getParseResult()));
         written = settings.aovs();
@@ -397,8 +381,8 @@ final class RenderCommand implements Callable<Integer> {
         Camera c = new Camera(lookFrom != null ? lookFrom : base.lookFrom(), lookAt != null ? lookAt : base.lookAt(),
                 up != null ? up : base.up(), fov != null ? fov : base.fovDegrees());
         boolean moved = lookFrom != null || lookAt != null;
-        return c.withLens(aperture != null ? aperture : base.aperture(),
-                focusDistance != null ? focusDistance : moved ? c.focusDistance() : base.focusDistance());
+        return c.withLens(lens.aperture != null ? lens.aperture : base.aperture(),
+                lens.focusDistance != null ? lens.focusDistance : moved ? c.focusDistance() : base.focusDistance());
     }
 
     /** Checks the cluster options before anything is loaded: they need --cluster, and a port in range. */

@@ -25,6 +25,7 @@ import picocli.CommandLine.Spec;
         versionProvider = Main.Version.class,
         description = {"Opens a window that renders a scene progressively, one sample per pixel at a time.",
             "Drag to orbit (left) or pan (right/middle), wheel to dolly; F1 in the window lists all controls.",
+            "Drop a scene file onto the window to open it; File > Open Recent lists the last 8.",
             "Without SCENE, shows the Cornell Box (scenes/cornell-box.json)."},
         sortOptions = false)
 final class ViewCommand implements Callable<Integer> {
@@ -53,6 +54,9 @@ final class ViewCommand implements Callable<Integer> {
     @Option(names = "--seed", defaultValue = "0", description = "Random seed (default: ${DEFAULT-VALUE}).")
     long seed;
 
+    @Mixin
+    EnvironmentLensOptions lens;
+
     @Option(names = "--theme", defaultValue = "system", paramLabel = "system|light|dark",
             description = "Light or dark look; system follows the desktop where it can (default: ${DEFAULT-VALUE}).")
     String theme;
@@ -69,7 +73,7 @@ final class ViewCommand implements Callable<Integer> {
     ViewerOptions options() {
         return new ViewerOptions(scene, width, height, spp, transport.maxDepth, transport.hemisphere, threads, seed,
                 transport.integrator, transport.lightSamples, Theme.parse(theme), given(), transport.photons, transport.photonRadius,
-                SceneFileOptions.aovs(aovNames));
+                SceneFileOptions.aovs(aovNames), lens.overrides());
     }
 
     /**

@@ -12,16 +12,21 @@ import java.util.function.Consumer;
 import javax.swing.Action;
 import javax.swing.JFileChooser;
 import javax.swing.JFrame;
+import javax.swing.JMenu;
+import javax.swing.JMenuItem;
 import javax.swing.JOptionPane;
 import javax.swing.KeyStroke;
 import javax.swing.SwingWorker;
+import javax.swing.event.MenuEvent;
+import javax.swing.event.MenuListener;
 import javax.swing.filechooser.FileNameExtensionFilter;
 
 /**
- * Opening a scene and saving the image. Files are read and written on background threads
- * ({@link SwingWorker}); errors become a dialog with the one-line message, and a scene that fails
- * to load (or asks for settings that cannot be applied, or for a film the heap cannot hold) leaves
- * the current one on screen.
+ * Opening a scene (from the file chooser, File → Open Recent or a file dropped onto the window)
+ * and saving the image. Files are read and written on background threads ({@link SwingWorker});
+ * errors become a dialog with the one-line message, and a scene that fails to load (or asks for
+ * settings that cannot be applied, or for a film the heap cannot hold) leaves the current one on
+ * screen. Every scene opened goes to the front of the {@link RecentFiles}.
  */
 final class FileActions {
     /** Loads a scene file with the settings it is to be shown with ({@link SceneFiles#open}). */
@@ -34,14 +39,16 @@ final class FileActions {
     private final Consumer<String> status;
     private final Opener opener;
     private final Consumer<SceneFiles.Opened> onSceneOpened;
+    final RecentFiles recent;
     private Path sceneFile;
 
     final Action open;
     final Action save;
 
     FileActions(JFrame frame, FramePresenter presenter, Consumer<String> status, Path sceneFile, Opener opener,
-                Consumer<SceneFiles.Opened> onSceneOpened) {
+                Consumer<SceneFiles.Opened> onSceneOpened, RecentFiles recent) {
         this.frame = frame;
+        this.recent = recent;
         this.presenter = presenter;
         this.status = status;
         this.sceneFile = sceneFile;
@@ -80,6 +87,7 @@ final class FileActions {
                 try {
                     SceneFiles.Opened opened = get();
                     sceneFile = file;
+                    recent.add(file);
                     onSceneOpened.accept(opened);
                     status.accept("Opened " + file.getFileName());
                 } catch (ExecutionException e) {
@@ -88,12 +96,65 @@ final class FileActions {
                             : cause instanceof IllegalArgumentException ? file + ": " + cause.getMessage()   // e.g. a film too large for the heap
                             : file + ": " + cause;
                     status.accept("Could not open " + file.getFileName());
+                    if (!Files.exists(file)) {
+                        recent.remove(file);
+                    }
                     JOptionPane.showMessageDialog(frame, text, "Cannot open scene", JOptionPane.ERROR_MESSAGE);
                 } catch (InterruptedException e) {
                     Thread.currentThread().interrupt();
                 }
             }
         }.execute();
+    }
+
+    /**
+     * File → Open Recent: the {@link RecentFiles}, newest first, read again each time the menu
+     * opens (another window may have added some), and Clear.
+     */
+    JMenu recentMenu() {
+        JMenu menu = new JMenu("Open Recent");
+        menu.setMnemonic(KeyEvent.VK_R);
+        menu.addMenuListener(new MenuListener() {
+            @Override
+            public void menuSelected(MenuEvent e) {
+                fillRecent(menu);
+            }
+
+            @Override
+            public void menuDeselected(MenuEvent e) {
+            }
+
+            @Override
+            public void menuCanceled(MenuEvent e) {
+            }
+        });
+        fillRecent(menu);
+        return menu;
+    }
+
+    void fillRecent(JMenu menu) {
+        menu.removeAll();
+        int n = 0;
+        for (Path file : recent.list()) {
+            n++;
+            JMenuItem item = new JMenuItem(n + "  " + file.getFileName());
+            if (n <= 9) {
+                item.setMnemonic(KeyEvent.VK_0 + n);
+            }
+            item.setToolTipText(file.toString());
+            item.addActionListener(e -> openScene(file));
+            menu.add(item);
+        }
+        if (n == 0) {
+            JMenuItem none = new JMenuItem("No recent scenes");
+            none.setEnabled(false);
+            menu.add(none);
+        }
+        menu.addSeparator();
+        JMenuItem clear = new JMenuItem("Clear Recent");
+        clear.setEnabled(n > 0);
+        clear.addActionListener(e -> recent.clear());
+        menu.add(clear);
     }
 
     private void chooseImageFile() {

@@ -32,8 +32,10 @@ final class SceneFiles {
     record Opened(Path file, Scene scene, RenderSettings settings) {}
 
     /**
-     * Loads {@code file} (the default scene when it is null), combines its settings with
-     * {@code options} and checks the film size they ask for with {@code filmCheck}.
+     * Loads {@code file} (the default scene when it is null) through the scene loader (the format
+     * follows the extension), applies the command line's environment map and lens
+     * ({@link ViewerOptions#overrides}), combines its settings with {@code options} and checks the
+     * film size they ask for with {@code filmCheck}.
      *
      * @throws IllegalArgumentException if the film size fails {@code filmCheck}
      */
@@ -42,7 +44,7 @@ final class SceneFiles {
         SceneFile loaded = SceneFile.load(f);
         RenderSettings settings = options.settingsFor(loaded.settings());
         filmCheck.check(settings.width(), settings.height());
-        return new Opened(f, loaded.scene(), settings);
+        return new Opened(f, options.overrides().applyTo(loaded.scene()), settings);
     }
 
     /** The file of the default scene. */

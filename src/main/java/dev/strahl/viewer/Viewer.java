@@ -122,7 +122,12 @@ public final class Viewer {
         mark("building the window");
         options.theme().install();
         mark("look and feel installed");
-        ViewerFrame frame = new ViewerFrame(controller, presenter, opened, file -> SceneFiles.open(file, options, filmCheck), this::close);
+        RecentFiles recent = RecentFiles.user();
+        if (options.scene() != null) {
+            recent.add(options.scene());
+        }
+        ViewerFrame frame = new ViewerFrame(controller, presenter, opened, file -> SceneFiles.open(file, options, filmCheck), recent,
+                this::close);
         if (TRACE) {
             AtomicBoolean first = new AtomicBoolean(true);
             frame.image.onPainted(shown -> {

@@ -161,6 +161,7 @@ final class ViewerActions {
         JMenu file = new JMenu("File");
         file.setMnemonic(KeyEvent.VK_F);
         file.add(item(files.open));
+        file.add(files.recentMenu());
         file.add(item(files.save));
         file.addSeparator();
         file.add(item(quit));

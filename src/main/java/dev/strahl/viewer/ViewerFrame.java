@@ -33,10 +33,10 @@ final class ViewerFrame {
 
     /**
      * The window for {@code opened}, which {@code controller} renders; {@code opener} loads the
-     * scenes opened from the window.
+     * scenes opened from the window (with the file chooser, from {@code recent} or dropped onto it).
      */
     ViewerFrame(RenderController controller, FramePresenter presenter, SceneFiles.Opened opened, FileActions.Opener opener,
-                Runnable onClose) {
+                RecentFiles recent, Runnable onClose) {
         assert SwingUtilities.isEventDispatchThread();
         this.controller = controller;
         askedWidth = opened.settings().width();
@@ -51,7 +51,10 @@ final class ViewerFrame {
         });
         image = new ImagePanel(presenter, askedWidth, askedHeight);
         status = new StatusBar();
-        files = new FileActions(frame, presenter, image::showMessage, opened.file(), opener, this::showScene);
+        files = new FileActions(frame, presenter, image::showMessage, opened.file(), opener, this::showScene, recent);
+        SceneDrop drop = new SceneDrop(files::openScene);
+        frame.setTransferHandler(drop);
+        image.setTransferHandler(drop);
         actions = new ViewerActions(controller, presenter, files, frame.getRootPane(), onClose);
         CameraMouse.attach(image, controller);
 

@@ -34,10 +34,11 @@ import java.util.Set;
  * @param photons      photons per iteration for the photon mapper
  * @param photonRadius the photon mapper's initial gather radius; 0 = automatic
  * @param aovs         the feature buffers the render keeps ({@code --aov}, a scene file's {@code film.aovs})
+ * @param overrides    the environment map and lens that replace every opened scene's own (command-line options)
  */
 public record ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere,
                             int threads, long seed, IntegratorKind integrator, int lightSamples, Theme theme, Set<Setting> given,
-                            int photons, double photonRadius, Set<Aov> aovs) {
+                            int photons, double photonRadius, Set<Aov> aovs, SceneOverrides overrides) {
 
     /**
      * The scene-file settings the viewer never takes from a file: its stop-at count is an
@@ -54,15 +55,16 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
         Objects.requireNonNull(theme, "theme");
         given = Set.copyOf(Objects.requireNonNull(given, "given"));
         aovs = Set.copyOf(Objects.requireNonNull(aovs, "aovs"));
+        Objects.requireNonNull(overrides, "overrides");
         renderSettings(width, height, maxDepth, hemisphere, threads, seed, integrator, lightSamples, photons, photonRadius);   // validates
     }
 
-    /** Options without feature buffers. */
+    /** Options without feature buffers that change nothing in the scenes opened. */
     public ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere, int threads,
                          long seed, IntegratorKind integrator, int lightSamples, Theme theme, Set<Setting> given, int photons,
                          double photonRadius) {
         this(scene, width, height, stopAt, maxDepth, hemisphere, threads, seed, integrator, lightSamples, theme, given, photons,
-                photonRadius, Set.of());
+                photonRadius, Set.of(), SceneOverrides.NONE);
     }
 
     /** Options with the photon mapper's default parameters. */

@@ -39,6 +39,20 @@ class SceneFileOptionsTest {
         assertThatThrownBy(bad::options).hasMessage("--aov: unknown feature buffer 'variance': use albedo, normal or depth");
     }
 
+    /** --envmap, --aperture and --focus-distance: on both commands, from the one shared definition. */
+    @Test
+    void environmentAndLensOptionsAreOneDefinitionOnBothCommands() {
+        CommandLine main = Main.commandLine();
+        for (String command : new String[] {"render", "view"}) {
+            CommandLine.Model.CommandSpec spec = main.getSubcommands().get(command).getCommandSpec();
+            for (String option : new String[] {"--envmap", "--aperture", "--focus-distance"}) {
+                assertThat(spec.findOption(option)).as("%s %s", command, option).isNotNull();
+                assertThat(spec.mixins().values()).as("%s %s comes from the shared mixin", command, option)
+                        .anyMatch(m -> m.userObject() instanceof EnvironmentLensOptions && m.findOption(option) != null);
+            }
+        }
+    }
+
     @Test
     void exactlyTheOptionsOnTheCommandLineAreGiven() {
         CommandLine cl = Main.commandLine();

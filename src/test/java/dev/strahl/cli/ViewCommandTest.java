@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import dev.strahl.render.IntegratorKind;
 import dev.strahl.render.HemisphereSampling;
 import dev.strahl.io.json.SceneSettings.Setting;
+import dev.strahl.viewer.SceneOverrides;
 import dev.strahl.viewer.ViewerOptions;
 import java.awt.GraphicsEnvironment;
 import java.nio.file.Files;
@@ -58,6 +59,27 @@ class ViewCommandTest {
 
         assertThat(parse("view", "--max-depth", "-1").given()).as("given at its default value is still given")
                 .containsExactly(Setting.MAX_DEPTH);
+    }
+
+    @Test
+    void environmentMapAndLensReachTheViewer() {
+        assertThat(parse("view", "s.json").overrides()).isEqualTo(SceneOverrides.NONE);
+        SceneOverrides o = parse("view", "s.json", "--envmap", "sky.hdr", "--aperture", "0.1", "--focus-distance", "4").overrides();
+        assertThat(o).isEqualTo(new SceneOverrides(Path.of("sky.hdr"), 0.1, 4.0));
+        assertThat(parse("view", "--aperture", "0").overrides()).isEqualTo(new SceneOverrides(null, 0.0, null));
+    }
+
+    @Test
+    void anImpossibleLensIsOneLineAndExitCode2() {
+        assertRefusedHeadless(RenderCommandTest.strahl("view", "--aperture", "-1"), "--aperture: the lens radius must be finite and >= 0");
+        assertRefusedHeadless(RenderCommandTest.strahl("view", "--focus-distance", "0"), "--focus-distance: the distance must be");
+    }
+
+    /** Refused before any window opens, so also without a display. */
+    private static void assertRefusedHeadless(RenderCommandTest.Run run, String message) {
+        assertThat(run.code()).as(run.err()).isEqualTo(2);
+        assertThat(run.errLines()).hasSize(1);
+        assertThat(run.err()).startsWith("strahl: " + message);
     }
 
     /**

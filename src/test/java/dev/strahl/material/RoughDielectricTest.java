@@ -32,21 +32,25 @@ class RoughDielectricTest {
     private static final double ALPHA = ChiSquare.sidak(0.01, ALPHAS.length * THETA_O.length);
 
     /**
-     * wo inside at every α, outside where the test accepts. Outside at near-normal (10°) and grazing
-     * (80°) incidence, and at α = 0.7 also at 45°, the 2-D chi-square test rejects (p between 1e-80 and
-     * 4e-6 with 2 million samples) although the sampled pdf equals pdf() at every sample, the
-     * transmitted and reflected masses agree with the pdf's integrals to 1e-4, and a 1-D test
-     * over cosθi with a finer quadrature shows a single excess bin just below the horizon
-     * (α = 0.7, θo = 80°). Not resolved: listed as open in docs/materials.md.
+     * Simpson intervals per cell and axis for the expected counts. The default 8 is not enough
+     * here, and it was the test, not the sampling, that failed at 10° and 80° from outside (and at
+     * α = 0.7, 45°): the transmission pdf jumps along the curve wi.z = −wo.z/η' where the
+     * generalised half vector m = wo + η' wi crosses the horizon (GGX's D(m) is α²/π there, not 0,
+     * and m below the horizon is no microfacet), a curve no cell edge follows; and at 10° both
+     * lobes peak within a cell or two of the poles. Simpson's rule assumes a smooth integrand, so
+     * the expected counts of the cells the jump crosses were off by more than the noise (at α 0.3,
+     * 80°: 452 expected against 684 drawn in the cell at cosθ = −0.125, which holds
+     * wi.z = −cos 80°/1.5 = −0.116). The sampled pdf equals pdf() at every sample
+     * ({@link #sampleEvalAndPdfAgree}), and eval and pdf equal Mitsuba 3's roughdielectric to 1e-6
+     * (docs/materials.md). With 16 intervals all cases accept.
      */
+    static final int QUADRATURE = 16;
+
     static Stream<Arguments> alphasAndAngles() {
         List<Arguments> all = new ArrayList<>();
         for (double a : ALPHAS) {
             for (double t : THETA_O) {
-                boolean openCase = t == 10 || t == 80 || (a == 0.7 && t == 45);
-                if (!openCase) {
-                    all.add(Arguments.of(a, t));
-                }
+                all.add(Arguments.of(a, t));
             }
         }
         return all.stream();
@@ -60,8 +64,8 @@ class RoughDielectricTest {
     @MethodSource("alphasAndAngles")
     void samplingMatchesPdf(double alpha, double thetaO) {
         int bins = alpha < 0.2 ? 160 : 80;
-        BsdfAssert.chiSquare(glass(alpha), BsdfAssert.direction(thetaO, 20), 2_000_000, 21 + (long) (alpha * 100 + thetaO), bins, 2 * bins)
-                .assertAccepted(ALPHA);
+        BsdfAssert.chiSquare(glass(alpha), BsdfAssert.direction(thetaO, 20), 2_000_000, 21 + (long) (alpha * 100 + thetaO), bins, 2 * bins,
+                QUADRATURE).assertAccepted(ALPHA);
     }
 
     @ParameterizedTest(name = "α = {0}")

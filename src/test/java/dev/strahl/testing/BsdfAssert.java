@@ -70,6 +70,12 @@ public final class BsdfAssert {
     }
 
     public static ChiSquare.Result chiSquare(Bsdf bsdf, Vector3dc wo, int sampleCount, long seed, int cosThetaBins, int phiBins) {
+        return chiSquare(bsdf, wo, sampleCount, seed, cosThetaBins, phiBins, ChiSquare.SIMPSON_INTERVALS);
+    }
+
+    /** As above with {@code intervals} Simpson intervals per cell and axis ({@link ChiSquare#test(ChiSquare.DirectionSampler, ChiSquare.DirectionPdf, int, long, int, int, int)}). */
+    public static ChiSquare.Result chiSquare(Bsdf bsdf, Vector3dc wo, int sampleCount, long seed, int cosThetaBins, int phiBins,
+                                             int intervals) {
         if (bsdf.isDelta()) {
             throw new IllegalArgumentException(bsdf + " has only delta lobes: there is no density to test, check its sample in closed form");
         }
@@ -82,7 +88,7 @@ public final class BsdfAssert {
             dest.set(s.wi);
             return true;
         };
-        return ChiSquare.test(sampler, w -> bsdf.pdf(wo, w), sampleCount, seed, cosThetaBins, phiBins);
+        return ChiSquare.test(sampler, w -> bsdf.pdf(wo, w), sampleCount, seed, cosThetaBins, phiBins, intervals);
     }
 
     public static void assertSamplingMatchesPdf(Bsdf bsdf, Vector3dc wo, int sampleCount, long seed, double alpha) {

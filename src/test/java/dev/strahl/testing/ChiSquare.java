@@ -185,8 +185,19 @@ public final class ChiSquare {
      */
     public static Result test(DirectionSampler sampler, DirectionPdf pdf, int sampleCount, long seed,
                               int cosThetaBins, int phiBins) {
+        return test(sampler, pdf, sampleCount, seed, cosThetaBins, phiBins, SIMPSON_INTERVALS);
+    }
+
+    /**
+     * As {@link #test(DirectionSampler, DirectionPdf, int, long, int, int)} with {@code intervals}
+     * × {@code intervals} Simpson intervals per cell (even) instead of {@value #SIMPSON_INTERVALS}:
+     * for a density that jumps inside cells (along a curve that no cell edge follows) or peaks
+     * within a cell, where the default rule's error exceeds the sampling noise.
+     */
+    public static Result test(DirectionSampler sampler, DirectionPdf pdf, int sampleCount, long seed,
+                              int cosThetaBins, int phiBins, int intervals) {
         Vector3d w = new Vector3d();
-        double[] expected = expectedCounts(cosThetaBins, phiBins, sampleCount,
+        double[] expected = expectedCounts(cosThetaBins, phiBins, sampleCount, intervals,
                 (s, t) -> pdf.pdf(sphereFromChart(s, t, w)) * 4 * Math.PI);
         long[] observed = new long[cosThetaBins * phiBins + 1];
         SplittableRandom random = new SplittableRandom(seed);
@@ -448,10 +459,16 @@ public final class ChiSquare {
 
     /** scale × ∫ f over each cell of an sBins × tBins grid of the unit square, composite Simpson per cell. */
     private static double[] expectedCounts(int sBins, int tBins, double scale, ChartDensity f) {
+        return expectedCounts(sBins, tBins, scale, SIMPSON_INTERVALS, f);
+    }
+
+    private static double[] expectedCounts(int sBins, int tBins, double scale, int m, ChartDensity f) {
         if (sBins < 1 || tBins < 1) {
             throw new IllegalArgumentException("need at least one bin per axis, got " + sBins + " x " + tBins);
         }
-        int m = SIMPSON_INTERVALS;
+        if (m < 2 || m % 2 != 0) {
+            throw new IllegalArgumentException("Simpson's rule needs an even number of intervals, got " + m);
+        }
         double[] weight = new double[m + 1];
         for (int k = 0; k <= m; k++) {
             weight[k] = k == 0 || k == m ? 1 : (k % 2 == 1 ? 4 : 2);

@@ -51,6 +51,19 @@ public final class Golden {
 
     /** The face regions of the scene as seen by its camera at the given size. */
     public static List<Region> faceRegions(Scene scene, int width, int height) {
+        return regions(scene, width, height, true);
+    }
+
+    /**
+     * One region per material as the scene's camera sees it at the given size: a pixel belongs to
+     * a material when every one of its 4×4 sub-pixel rays hits a surface of that material (a sphere
+     * of its own material is one region, whatever its normals).
+     */
+    public static List<Region> materialRegions(Scene scene, int width, int height) {
+        return regions(scene, width, height, false);
+    }
+
+    private static List<Region> regions(Scene scene, int width, int height, boolean faces) {
         int sub = 4;
         CameraRays rays = Meshes.rays(scene.camera(), width * sub, height * sub);
         Bvh bvh = World.of(scene).bvh();
@@ -69,7 +82,7 @@ public final class Golden {
                     String f = "background";
                     if (bvh.intersect(ray, hit, stack, false)) {
                         World.of(scene).geometry().surface(ray, hit, sp);
-                        f = faceName(scene, sp);
+                        f = faces ? faceName(scene, sp) : scene.materials().get(sp.material).name();
                     }
                     if (face == null) {
                         face = f;
@@ -161,7 +174,78 @@ public final class Golden {
         return worst;
     }
 
-    private static void writeFailure(Image img, Image ref, String name) {
+    /**
+     * Σ_c |Σ img − Σ ref| / Σ_c Σ ref over the pixels of block (bx, by) of size {@code block}, only
+     * those in {@code region} if it is not null: the block's mean colour error relative to its
+     * luminance (summed over r, g, b). NaN if the block holds fewer than block²/2 region pixels.
+     */
+    public static double blockError(Image img, Image ref, int block, int bx, int by, Region region) {
+        boolean[] in = region == null ? null : mask(img, region);
+        return blockError(img, ref, block, bx, by, in);
+    }
+
+    private static double blockError(Image img, Image ref, int block, int bx, int by, boolean[] in) {
+        double diff = 0, sum = 0;
+        int n = 0;
+        double[] a = new double[3], b = new double[3];
+        for (int y = by * block; y < (by + 1) * block; y++) {
+            for (int x = bx * block; x < (bx + 1) * block; x++) {
+                if (in != null && !in[y * img.width() + x]) {
+                    continue;
+                }
+                n++;
+                for (int c = 0; c < 3; c++) {
+                    a[c] += img.get(x, y, c);
+                    b[c] += ref.get(x, y, c);
+                }
+            }
+        }
+        if (2 * n < block * block) {
+            return Double.NaN;
+        }
+        for (int c = 0; c < 3; c++) {
+            diff += Math.abs(a[c] - b[c]);
+            sum += b[c];
+        }
+        return diff / sum;
+    }
+
+    private static boolean[] mask(Image img, Region region) {
+        boolean[] in = new boolean[img.width() * img.height()];
+        for (int p : region.pixels()) {
+            in[p] = true;
+        }
+        return in;
+    }
+
+    /** A block of a region and its error ({@link #blockError}). */
+    public record BlockError(int bx, int by, double error) {
+        @Override
+        public String toString() {
+            return String.format(Locale.ROOT, "block (%d, %d): %.2f %%", bx, by, 100 * error);
+        }
+    }
+
+    /**
+     * The worst {@link #blockError} over the image's blocks (all pixels if {@code region} is null,
+     * else the blocks at least half inside it); (−1, −1, 0) if there is none.
+     */
+    public static BlockError worstBlock(Image img, Image ref, int block, Region region) {
+        boolean[] in = region == null ? null : mask(img, region);
+        BlockError worst = new BlockError(-1, -1, 0);
+        for (int by = 0; by < img.height() / block; by++) {
+            for (int bx = 0; bx < img.width() / block; bx++) {
+                double e = blockError(img, ref, block, bx, by, in);
+                if (e > worst.error()) {
+                    worst = new BlockError(bx, by, e);
+                }
+            }
+        }
+        return worst;
+    }
+
+    /** Writes the render, the reference and their difference ×10 to target/golden-failures/NAME-*. */
+    public static void writeFailure(Image img, Image ref, String name) {
         try {
             Path dir = Files.createDirectories(Path.of("target", "golden-failures"));
             ImageWriters.write(img, dir.resolve(name + "-render.pfm"));
