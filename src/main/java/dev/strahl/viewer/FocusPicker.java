@@ -1,16 +1,17 @@
 package dev.strahl.viewer;
 
-import dev.strahl.accel.Bvh;
 import dev.strahl.camera.CameraRays;
-import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
+import dev.strahl.integrator.Shading;
+import dev.strahl.integrator.Tracer;
 import dev.strahl.scene.Camera;
 import dev.strahl.scene.Scene;
 import dev.strahl.world.World;
 
 /**
  * What Ctrl+click focuses on: the first surface the pinhole ray through the clicked point hits,
- * found with the scene's BVH, and its distance along the camera's viewing direction (the thin
+ * found as the renderer finds it (the tracer, so an alpha cut-out's cut-away parts are passed
+ * through, as the camera sees them), and its distance along the camera's viewing direction (the thin
  * lens's focus distance that makes that point sharp).
  */
 final class FocusPicker {
@@ -29,17 +30,16 @@ final class FocusPicker {
         CameraRays rays = new CameraRays(camera.lookFrom(), camera.lookAt(), camera.up(), camera.fovDegrees(), width, height);
         Ray ray = new Ray();
         rays.generate(fx * width, fy * height, ray);
-        Hit hit = new Hit();
-        hit.reset();
-        Bvh bvh = World.of(scene).bvh();
-        if (!bvh.intersect(ray, hit, Bvh.newStack(), false)) {
+        World world = World.of(scene);
+        Shading s = new Shading();
+        if (new Tracer(world, Shading.bsdfs(world, false), false).trace(ray, s) < 0) {
             return Double.NaN;
         }
         double fxDir = camera.lookAt().x() - camera.lookFrom().x();
         double fyDir = camera.lookAt().y() - camera.lookFrom().y();
         double fzDir = camera.lookAt().z() - camera.lookFrom().z();
         double len = Math.sqrt(fxDir * fxDir + fyDir * fyDir + fzDir * fzDir);
-        double along = hit.t * (ray.d.x * fxDir + ray.d.y * fyDir + ray.d.z * fzDir) / len;
+        double along = ((s.sp.p.x - ray.o.x) * fxDir + (s.sp.p.y - ray.o.y) * fyDir + (s.sp.p.z - ray.o.z) * fzDir) / len;
         return along > 0 ? along : Double.NaN;
     }
 }

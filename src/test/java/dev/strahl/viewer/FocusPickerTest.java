@@ -3,9 +3,12 @@ package dev.strahl.viewer;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
+import dev.strahl.image.Rgb;
 import dev.strahl.io.SceneLoader;
 import dev.strahl.scene.Camera;
+import dev.strahl.scene.Material;
 import dev.strahl.scene.Scene;
+import dev.strahl.scene.Texture;
 import java.nio.file.Path;
 import org.joml.Vector3d;
 import org.junit.jupiter.api.Test;
@@ -30,5 +33,22 @@ class FocusPickerTest {
         // the near red sphere, left of the centre: its distance along the view is less than along the ray
         double d = FocusPicker.focusDistance(scene, c, 0.12, 0.62, 1);
         assertThat(d).isBetween(2.5, 3.6);
+    }
+
+    /** A cut-away surface is not there for the camera, so Ctrl+click focuses on what is seen behind it. */
+    @Test
+    void aCutAwaySurfaceIsPassedThroughAsTheCameraDoes() {
+        Material grey = Material.diffuse("grey", new Rgb(0.5, 0.5, 0.5));
+        Camera c = new Camera(new Vector3d(0, 0, 5), new Vector3d(0, 0, 0), new Vector3d(0, 1, 0), 30);
+        Scene solid = Scene.builder().camera(c).environment(new Rgb(1, 1, 1)).addSphere(new Vector3d(0, 0, 0), 1, grey).build();
+        Scene cut = Scene.builder().camera(c).environment(new Rgb(1, 1, 1))
+                .addSphere(new Vector3d(0, 0, 0), 1, grey)
+                .addSphere(new Vector3d(0, 0, 2.5), 0.5, grey.withAlphaCutout(Texture.constant(0), 0.5)).build();
+        Scene kept = Scene.builder().camera(c).environment(new Rgb(1, 1, 1))
+                .addSphere(new Vector3d(0, 0, 0), 1, grey)
+                .addSphere(new Vector3d(0, 0, 2.5), 0.5, grey.withAlphaCutout(Texture.constant(1), 0.5)).build();
+        assertThat(FocusPicker.focusDistance(solid, c, 0.5, 0.5, 1)).isCloseTo(4, within(1e-9));
+        assertThat(FocusPicker.focusDistance(cut, c, 0.5, 0.5, 1)).as("the cut-away sphere in front").isCloseTo(4, within(1e-9));
+        assertThat(FocusPicker.focusDistance(kept, c, 0.5, 0.5, 1)).as("the same sphere kept").isCloseTo(2, within(1e-9));
     }
 }
