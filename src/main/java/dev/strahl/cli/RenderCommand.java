@@ -493,7 +493,7 @@ final class RenderCommand implements Callable<Integer> {
         }
         if (statsFile != null) {
             try {
-                StatsFile.write(statsFile, stats, settings, loadSeconds, bvhSeconds, s.textureBytes(), members != null ? members.memberFigures() : List.of());
+                StatsFile.write(statsFile, stats, settings, loadSeconds, bvhSeconds, s.textureBytes(), StatsFile.figures(members));
             } catch (IOException e) {
                 throw new RenderFailure("cannot write " + statsFile + ": " + e.getMessage(), e);
             }

@@ -1,8 +1,10 @@
 package dev.strahl.cli;
 
 import dev.strahl.io.json.JsonFile;
+import dev.strahl.render.RenderCluster;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
+import dev.strahl.units.MemberFigures;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -16,9 +18,17 @@ import java.util.List;
 final class StatsFile {
     private StatsFile() {}
 
-    /** With {@code members}: a cluster render's figures per member ({@code RenderCluster.memberFigures()}), as a list of lines. */
+    /** The figures per member of a cluster render; none without a cluster ({@code cluster} null). */
+    static List<MemberFigures> figures(RenderCluster cluster) {
+        return cluster == null ? List.of() : MemberFigures.of(cluster);
+    }
+
+    /**
+     * With {@code members}: a cluster render's figures per member ({@code MemberFigures.of(cluster)}),
+     * an object each with numbers (docs/cluster.md); none for a local render.
+     */
     static void write(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhBuildSeconds, long textureBytes,
-                      List<String> members) throws IOException {
+                      List<MemberFigures> members) throws IOException {
         JsonFile.write(file, json -> {
             json.writeStartObject();
             json.writeNumberField("seconds", stats.seconds());
@@ -34,8 +44,19 @@ final class StatsFile {
             json.writeNumberField("load_seconds", loadSeconds);
             if (!members.isEmpty()) {
                 json.writeArrayFieldStart("members");
-                for (String m : members) {
-                    json.writeString(m);
+                for (MemberFigures m : members) {
+                    json.writeStartObject();
+                    json.writeStringField("member", m.member());
+                    json.writeBooleanField("coordinator", m.coordinator());
+                    json.writeNumberField("threads", m.threads());
+                    json.writeNumberField("units", m.units());
+                    json.writeNumberField("samples", m.samples());
+                    json.writeNumberField("bytes_sent", m.bytesSent());
+                    json.writeNumberField("bytes_received", m.bytesReceived());
+                    json.writeNumberField("unit_seconds", m.unitSeconds());
+                    json.writeNumberField("mean_unit_seconds", m.meanUnitSeconds());
+                    json.writeNumberField("lost_units", m.lost());
+                    json.writeEndObject();
                 }
                 json.writeEndArray();
             }

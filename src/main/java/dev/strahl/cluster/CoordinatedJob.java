@@ -221,7 +221,7 @@ final class CoordinatedJob implements JobChannel {
     public synchronized List<MemberFigures> figures() {
         List<MemberFigures> list = new ArrayList<>();
         for (Slot s : slots.values()) {
-            list.add(new MemberFigures(HazelcastMember.name(s.member) + (s.member.localMember() ? " (coordinator)" : ""), s.threads,
+            list.add(new MemberFigures(HazelcastMember.name(s.member), s.member.localMember(), s.threads,
                     s.units, s.samples, s.sent, s.received, s.seconds, s.lost));
         }
         return list;

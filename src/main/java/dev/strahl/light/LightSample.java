@@ -2,6 +2,7 @@ package dev.strahl.light;
 
 import dev.strahl.math.MutableRgb;
 import org.joml.Vector3d;
+import org.joml.Vector3dc;
 
 /** A point sampled on a light, seen from a reference point; mutable, reused per thread. */
 public final class LightSample {
@@ -26,4 +27,23 @@ public final class LightSample {
     public final MutableRgb radiance = new MutableRgb();
     /** Scratch for the environment's (u, v). */
     final double[] uv = new double[2];
+
+    /**
+     * Aims this sample from {@code ref} at the point (px, py, pz) of a light: {@link #wi} the unit
+     * direction towards it, {@link #distance} the distance d. Returns d², or 0 (leaving both as
+     * they were) where the two points coincide (or a coordinate is NaN) and there is no direction.
+     * The one place where area and punctual lights turn a light point into (wi, d).
+     */
+    double aim(Vector3dc ref, double px, double py, double pz) {
+        double dx = px - ref.x(), dy = py - ref.y(), dz = pz - ref.z();
+        double dist2 = dx * dx + dy * dy + dz * dz;
+        double dist = Math.sqrt(dist2);
+        if (!(dist > 0)) {
+            return 0;
+        }
+        double inv = 1 / dist;
+        wi.set(dx * inv, dy * inv, dz * inv);
+        distance = dist;
+        return dist2;
+    }
 }

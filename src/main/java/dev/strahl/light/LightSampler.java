@@ -290,19 +290,14 @@ public final class LightSampler {
         int m = scratch.material;
         out.p.set(scratch.p);
         out.ng.set(scratch.ng);
-        double dx = out.p.x - ref.x(), dy = out.p.y - ref.y(), dz = out.p.z - ref.z();
-        double dist2 = dx * dx + dy * dy + dz * dz;
-        double dist = Math.sqrt(dist2);
-        if (!(dist > 0)) {
+        if (out.aim(ref, out.p.x, out.p.y, out.p.z) == 0) {
             return false;
         }
-        double inv = 1 / dist;
-        out.wi.set(dx * inv, dy * inv, dz * inv);
         double cosLight = -out.ng.dot(out.wi);
         if (cosLight <= 0) {
             return false;
         }
-        out.distance = dist;
+        double dist = out.distance;
         out.pdf = (withConstant ? pAreaLightsAlone : pAreaLights) * density[m] * dist * dist / cosLight;
         emission[m].eval(scratch.uv, out.radiance);
         return out.pdf > 0 && Double.isFinite(out.pdf);

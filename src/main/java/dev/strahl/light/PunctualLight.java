@@ -146,21 +146,16 @@ public final class PunctualLight {
             return true;
         }
         out.infinite = false;
-        double dx = position.x - ref.x(), dy = position.y - ref.y(), dz = position.z - ref.z();
-        double dist2 = dx * dx + dy * dy + dz * dz;
-        double dist = Math.sqrt(dist2);
-        if (!(dist > 0)) {
+        double dist2 = out.aim(ref, position.x, position.y, position.z);
+        if (dist2 == 0) {
             return false;
         }
-        double inv = 1 / dist;
-        out.wi.set(dx * inv, dy * inv, dz * inv);
         double a = falloff(-out.wi.dot(direction));
         if (a <= 0) {
             return false;
         }
         out.p.set(position);
         out.ng.set(out.wi).negate();
-        out.distance = dist;
         double scale = a / dist2;
         out.radiance.set(intensity.r() * scale, intensity.g() * scale, intensity.b() * scale);
         return true;

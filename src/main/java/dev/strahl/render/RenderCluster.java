@@ -13,7 +13,6 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.Objects;
 import java.util.function.Consumer;
 
@@ -37,6 +36,10 @@ import java.util.function.Consumer;
  */
 public final class RenderCluster implements AutoCloseable {
     private static final String BACKEND = "dev.strahl.cluster.HazelcastMember";
+
+    static {
+        MemberFigures.installClusterAccess(cluster -> ((RenderCluster) cluster).figures());
+    }
 
     private final ClusterBackend backend;
     private final List<JobChannel> channels = new ArrayList<>();
@@ -128,23 +131,26 @@ public final class RenderCluster implements AutoCloseable {
 
     /**
      * What each member has done for the renders this one coordinated, one line per member of
-     * each render: its address, threads, units, samples, bytes sent and received, the mean time
-     * from sending a unit to merging it, and units it handed back by leaving.
+     * each render: its address (and "(coordinator)" for this one), threads, units, samples, bytes
+     * sent and received, the mean time from sending a unit to merging it, and units it handed
+     * back by leaving, as {@code name=value}. ({@code render --stats} writes the same figures as
+     * JSON numbers, docs/cluster.md.)
      *
      * @return the lines, for a report
      */
     public List<String> memberFigures() {
-        List<String> lines = new ArrayList<>();
+        return figures().stream().map(MemberFigures::line).toList();
+    }
+
+    /** The figures behind {@link #memberFigures()}, for strahl's own packages (through {@code MemberFigures.of}). */
+    private List<MemberFigures> figures() {
+        List<MemberFigures> all = new ArrayList<>();
         synchronized (channels) {
             for (JobChannel c : channels) {
-                for (MemberFigures f : c.figures()) {
-                    lines.add(String.format(Locale.ROOT, "%s threads=%d units=%d samples=%d sent=%d received=%d meanUnitSeconds=%.4f lost=%d",
-                            f.member(), f.threads(), f.units(), f.samples(), f.bytesSent(), f.bytesReceived(),
-                            f.units() > 0 ? f.seconds() / f.units() : 0, f.lost()));
-                }
+                all.addAll(c.figures());
             }
         }
-        return lines;
+        return all;
     }
 
     /** Leaves the cluster: the renders it coordinates end, the members drop them. */

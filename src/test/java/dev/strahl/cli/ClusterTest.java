@@ -9,6 +9,7 @@ import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.scene.Scene;
+import dev.strahl.units.MemberFigures;
 import java.awt.image.BufferedImage;
 import java.io.File;
 import java.io.IOException;
@@ -22,6 +23,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Map;
 import java.util.UUID;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -113,9 +115,21 @@ class ClusterTest {
         w2.await("joined cluster .*\\((2|3) members", 60);
         w3.await("joined cluster .*\\((2|3) members", 60);
         first.await("member .* joined.*\\n(.*\\n)*.*member .* joined", 30);
-        Run r3 = onCluster(SCENE, "c3.pfm", "--spp", "12");
+        Run r3 = onCluster(SCENE, "c3.pfm", "--spp", "12", "--stats", dir.resolve("c3.json").toString());
         assertThat(r3.code()).as(r3.err()).isZero();
         assertThat(Files.readAllBytes(dir.resolve("c3.pfm"))).as("3 workers").isEqualTo(local);
+        List<Map<String, Object>> members = StatsFileTest.members(dir.resolve("c3.json"));
+        assertThat(members).as("this JVM and three workers").hasSize(4);
+        assertThat(members.get(0).get("coordinator")).as("the coordinator first").isEqualTo(true);
+        assertThat(members).filteredOn(m -> m.get("coordinator").equals(true)).hasSize(1);
+        assertThat(sum(members, "units")).as("3 x 2 tiles, passes of 1, 4 and 7 spp").isEqualTo(UNITS_12_SPP);
+        assertThat(sum(members, "samples")).isEqualTo(96 * 64 * 12);
+        assertThat(sum(members, "lost_units")).isZero();
+        for (Map<String, Object> m : members) {
+            assertThat(((Number) m.get("bytes_sent")).longValue()).as("%s", m).isPositive();
+            assertThat(((Number) m.get("bytes_received")).longValue()).as("%s", m).isPositive();
+            assertThat(((Number) m.get("mean_unit_seconds")).doubleValue()).as("%s", m).isPositive();
+        }
         for (Worker w : List.of(first, w2, w3)) {
             w.await("finished: \\d+ units", 30);
             assertThat(w.text()).as("every worker took part").containsPattern("finished: [1-9]\\d* units rendered here");
@@ -145,7 +159,11 @@ class ClusterTest {
                 reference = localJob.awaitCompletion();
             }
             assertThat(image.rgb()).as("2 workers, library").isEqualTo(reference.rgb());
-            assertThat(cluster.memberFigures()).hasSize(3);
+            List<MemberFigures> figures = MemberFigures.of(cluster);
+            assertThat(figures).hasSize(3);
+            assertThat(figures.stream().mapToLong(MemberFigures::units).sum()).isEqualTo(UNITS_12_SPP);
+            assertThat(figures.stream().mapToLong(MemberFigures::samples).sum()).isEqualTo(96 * 64 * 12);
+            assertThat(cluster.memberFigures()).containsExactlyElementsOf(figures.stream().map(MemberFigures::line).toList());
         }
     }
 
@@ -170,6 +188,10 @@ class ClusterTest {
             job.resume();
             image = job.awaitCompletion();
             assertThat(job.completedSamplesPerPixel()).isEqualTo(128);
+            // a unit lost with the killed worker counts where it was rendered in the end
+            List<MemberFigures> figures = MemberFigures.of(cluster);
+            assertThat(figures.stream().mapToLong(MemberFigures::units).sum()).as("%s", figures).isEqualTo(6 * 5);  // 1, 4, 16, 64, 43 spp
+            assertThat(figures.stream().mapToLong(MemberFigures::samples).sum()).as("%s", figures).isEqualTo(96 * 64 * 128);
         }
         Image reference;
         try (RenderJob localJob = RenderJob.start(scene, settings)) {
@@ -356,6 +378,13 @@ class ClusterTest {
     }
 
     // ---- helpers -------------------------------------------------------------------------------
+
+    /** Units of a 96 × 64 render at 12 spp: 3 × 2 tiles, passes of 1, 4 and 7 spp. */
+    private static final long UNITS_12_SPP = 6 * 3;
+
+    private static long sum(List<Map<String, Object>> members, String field) {
+        return members.stream().mapToLong(m -> ((Number) m.get(field)).longValue()).sum();
+    }
 
     record Run(int code, String err) {
     }

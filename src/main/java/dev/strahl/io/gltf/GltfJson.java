@@ -6,6 +6,7 @@ import com.fasterxml.jackson.core.JsonToken;
 import com.fasterxml.jackson.core.StreamReadFeature;
 import com.fasterxml.jackson.core.exc.StreamConstraintsException;
 import com.fasterxml.jackson.core.JsonProcessingException;
+import dev.strahl.io.text.JsonTypes;
 import dev.strahl.scene.SceneException;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -214,19 +215,7 @@ final class GltfJson {
     }
 
     String typeName() {
-        if (value == null) {
-            return "null";
-        }
-        if (value instanceof Map) {
-            return "an object";
-        }
-        if (value instanceof List) {
-            return "an array";
-        }
-        if (value instanceof Double) {
-            return "a number";
-        }
-        return value instanceof String ? "a string" : "a boolean";
+        return JsonTypes.name(value);
     }
 
     static String format(double v) {

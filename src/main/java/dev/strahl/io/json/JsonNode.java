@@ -6,6 +6,7 @@ import com.fasterxml.jackson.core.JsonParseException;
 import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonToken;
 import com.fasterxml.jackson.core.StreamReadFeature;
+import dev.strahl.io.text.JsonTypes;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -105,21 +106,6 @@ final class JsonNode {
     }
 
     String typeName() {
-        if (value == null) {
-            return "null";
-        }
-        if (value instanceof Map) {
-            return "an object";
-        }
-        if (value instanceof List) {
-            return "an array";
-        }
-        if (value instanceof Double || value instanceof Long) {
-            return "a number";
-        }
-        if (value instanceof String) {
-            return "a string";
-        }
-        return "a boolean";
+        return JsonTypes.name(value);
     }
 }
