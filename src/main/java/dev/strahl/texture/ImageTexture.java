@@ -9,6 +9,8 @@ import java.util.Objects;
  * default: the coordinates go through the {@link UvTransform}, then p = (u·w − ½, v·h − ½) in texel
  * units; the four texels around p (indices through the {@link Wrap} mode) are weighted by
  * (1 − fx)(1 − fy), fx(1 − fy), (1 − fx)fy and fx·fy, with fx, fy the fractional parts of p.
+ * With {@link Channel#LUMINANCE} {@link #rgb} gives the texels' colour; a texture of one channel
+ * (R, G, B or A) is grey wherever a colour is asked for.
  *
  * @param bitmap    the texels (already sRGB-decoded for a colour texture)
  * @param wrap      the wrap mode
@@ -27,13 +29,13 @@ public record ImageTexture(Bitmap bitmap, Wrap wrap, UvTransform transform, Chan
 
     @Override
     public void rgb(double u, double v, MutableRgb dest) {
-        if (channel == Channel.A) {
-            double a = value(u, v);                // an alpha texture is grey wherever a colour is asked for
+        if (channel != Channel.LUMINANCE) {
+            double a = value(u, v);                // a one-channel texture is grey wherever a colour is asked for
             dest.set(a, a, a);
             return;
         }
         Bitmap b = bitmap;
-        double su = mapU(u, v) * b.width() - 0.5, sv = mapV(u, v) * b.height() - 0.5;
+        double su = transform.mapU(u, v) * b.width() - 0.5, sv = transform.mapV(u, v) * b.height() - 0.5;
         if (!Double.isFinite(su) || !Double.isFinite(sv)) {
             dest.setZero();
             return;
@@ -62,7 +64,7 @@ public record ImageTexture(Bitmap bitmap, Wrap wrap, UvTransform transform, Chan
     @Override
     public double value(double u, double v) {
         Bitmap b = bitmap;
-        double su = mapU(u, v) * b.width() - 0.5, sv = mapV(u, v) * b.height() - 0.5;
+        double su = transform.mapU(u, v) * b.width() - 0.5, sv = transform.mapV(u, v) * b.height() - 0.5;
         if (!Double.isFinite(su) || !Double.isFinite(sv)) {
             return 0;
         }
@@ -76,24 +78,6 @@ public record ImageTexture(Bitmap bitmap, Wrap wrap, UvTransform transform, Chan
                 + (1 - fx) * fy * b.value(x0, y1, channel) + fx * fy * b.value(x1, y1, channel);
     }
 
-    private double mapU(double u, double v) {
-        UvTransform t = transform;
-        if (t.rotation() == 0) {
-            return t.scaleU() * u + t.offsetU();
-        }
-        double c = Math.cos(t.rotation()), s = Math.sin(t.rotation());
-        return t.scaleU() * (u * c - v * s) + t.offsetU();
-    }
-
-    private double mapV(double u, double v) {
-        UvTransform t = transform;
-        if (t.rotation() == 0) {
-            return t.scaleV() * v + t.offsetV();
-        }
-        double c = Math.cos(t.rotation()), s = Math.sin(t.rotation());
-        return t.scaleV() * (u * s + v * c) + t.offsetV();
-    }
-
     @Override
     public boolean isConstant() {
         return false;
@@ -103,10 +87,10 @@ public record ImageTexture(Bitmap bitmap, Wrap wrap, UvTransform transform, Chan
     public Rgb mean() {
         double r = 0, g = 0, bl = 0;
         Bitmap b = bitmap;
-        if (channel == Channel.A) {
+        if (channel != Channel.LUMINANCE) {
             for (int y = 0; y < b.height(); y++) {
                 for (int x = 0; x < b.width(); x++) {
-                    r += b.value(x, y, Channel.A);
+                    r += b.value(x, y, channel);
                 }
             }
             return Rgb.gray(r / ((double) b.width() * b.height()));

@@ -5,9 +5,10 @@ import dev.strahl.math.MutableRgb;
 
 /**
  * A BSDF parameter over the surface: a colour ({@link #rgb}) or a number ({@link #value}) at texture
- * coordinates (u, v). Immutable and shared between threads; lookups allocate nothing.
+ * coordinates (u, v): a constant, an image, or one of them times a factor ({@link ScaledTexture}).
+ * Immutable and shared between threads; lookups allocate nothing.
  */
-public sealed interface Texture permits ConstantTexture, ImageTexture {
+public sealed interface Texture permits ConstantTexture, ImageTexture, ScaledTexture {
 
     /** The linear RGB value at (u, v), into {@code dest}. */
     void rgb(double u, double v, MutableRgb dest);

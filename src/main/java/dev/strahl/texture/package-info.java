@@ -10,7 +10,8 @@
  *
  * <p><b>Values.</b> A colour texture gives linear RGB (8- and 16-bit images decoded from sRGB by
  * table when they are loaded, unless they are stored linearly); a scalar texture gives one
- * {@link Channel} of a linear image.
+ * {@link Channel} of a linear image. A {@link ScaledTexture} multiplies either by a factor (glTF's
+ * factor × texture).
  *
  * <p>This package sits below {@code material} (BSDFs hold textures) and {@code geometry} (alpha
  * cut-outs are decided during traversal); it reads no files: {@code dev.strahl.scene} loads them

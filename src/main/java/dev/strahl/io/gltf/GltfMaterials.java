@@ -6,22 +6,33 @@ import dev.strahl.scene.SceneException;
 import dev.strahl.scene.Texture;
 import java.util.HashMap;
 import java.util.Map;
+import java.util.TreeSet;
+import java.util.stream.Collectors;
 
 /**
- * glTF materials as strahl's {@code principled} material (glTF's own BRDF): pbrMetallicRoughness
- * (factors or textures), emission (emissiveFactor × KHR_materials_emissive_strength),
- * KHR_materials_specular, _transmission and _ior; normalTexture as a normal map, alphaMode MASK
- * (and BLEND, as MASK) as an alpha cut-out. Where a texture and a factor other than 1 are
- * both given, the texture is used and the factor ignored with a note (strahl's parameters are a
- * value or a texture). Everything is two-sided ({@code doubleSided} makes no difference).
+ * glTF materials as strahl's {@code principled} material (glTF's own BRDF): pbrMetallicRoughness,
+ * emission (emissiveFactor × KHR_materials_emissive_strength), KHR_materials_specular,
+ * _transmission and _ior; normalTexture as a normal map, alphaMode MASK (and BLEND, as MASK) as an
+ * alpha cut-out. Every texture is multiplied by its factor, as the specification says
+ * (baseColorFactor × baseColorTexture, roughnessFactor × G and metallicFactor × B of the
+ * metallicRoughnessTexture, emissiveFactor × emissiveTexture, transmissionFactor × R of the
+ * transmissionTexture, specularFactor × A of the specularTexture, specularColorFactor ×
+ * specularColorTexture): {@code Texture.scaled}. Everything is two-sided ({@code doubleSided} makes
+ * no difference).
  */
 final class GltfMaterials {
     /** glTF's default material (§3.9.6): white, metallic 1, roughness 1. */
     static final Material DEFAULT = Material.principled("glTF default").build();
 
+    /** The textures strahl reads, as (the object holding it: the material, pbrMetallicRoughness or an extension; its key). */
+    private static final String[][] SLOTS = {{"pbrMetallicRoughness", "baseColorTexture"}, {"pbrMetallicRoughness", "metallicRoughnessTexture"},
+        {null, "normalTexture"}, {null, "emissiveTexture"}, {"KHR_materials_specular", "specularTexture"},
+        {"KHR_materials_specular", "specularColorTexture"}, {"KHR_materials_transmission", "transmissionTexture"}};
+
     private final GltfDocument doc;
     private final GltfTextures textures;
     private final Map<Integer, Material> built = new HashMap<>();
+    private final Map<Integer, Integer> uvSets = new HashMap<>();
 
     GltfMaterials(GltfDocument doc) {
         this.doc = doc;
@@ -53,20 +64,19 @@ final class GltfMaterials {
         if (pbr != null) {
             double[] base = pbr.numbers("baseColorFactor", 4, new double[] {1, 1, 1, 1});
             baseAlpha = base[3];
+            Rgb baseFactor = new Rgb(unit(pbr, "baseColorFactor", base[0]), unit(pbr, "baseColorFactor", base[1]),
+                    unit(pbr, "baseColorFactor", base[2]));
             Texture baseTexture = texture(pbr, "baseColorTexture", name);
             if (baseTexture != null) {
-                b.baseColor(baseTexture);
-                ignoredFactor(pbr, "baseColorFactor", base[0] != 1 || base[1] != 1 || base[2] != 1);
+                b.baseColor(baseTexture.scaled(baseFactor));
             } else {
-                b.baseColor(new Rgb(unit(pbr, "baseColorFactor", base[0]), unit(pbr, "baseColorFactor", base[1]),
-                        unit(pbr, "baseColorFactor", base[2])));
+                b.baseColor(baseFactor);
             }
             double metallic = unit(pbr, "metallicFactor", pbr.number("metallicFactor", 1));
             double roughness = unit(pbr, "roughnessFactor", pbr.number("roughnessFactor", 1));
             Texture mr = texture(pbr, "metallicRoughnessTexture", name);
             if (mr != null) {
-                b.metallicRoughness(mr.linear());
-                ignoredFactor(pbr, "metallicFactor/roughnessFactor", metallic != 1 || roughness != 1);
+                b.metallicRoughness(mr.linear().scaled(new Rgb(1, roughness, metallic)));      // G × roughness, B × metallic
             } else {
                 b.metallic(metallic).roughness(roughness);
             }
@@ -83,25 +93,22 @@ final class GltfMaterials {
                 throw es.error("emissiveStrength must be >= 0, got " + strength);
             }
         }
+        Rgb emissiveFactor = new Rgb(emissive[0], emissive[1], emissive[2]);
         Texture emissiveTexture = texture(m, "emissiveTexture", name);
-        if (emissiveTexture != null) {
-            // strahl's textured emission is colour(u, v) × strength: a grey factor folds into the strength
-            double factor = Math.max(emissive[0], Math.max(emissive[1], emissive[2]));
-            if (emissive[0] != emissive[1] || emissive[1] != emissive[2]) {
-                doc.noteOnce(m.path + ": the colour of emissiveFactor with an emissiveTexture is not supported: its largest channel is used");
-            }
-            b.emission(emissiveTexture, strength * factor);
+        if (emissiveTexture != null && !emissiveFactor.isBlack()) {
+            b.emission(emissiveTexture.scaled(emissiveFactor), strength);
         } else {
-            b.emission(new Rgb(emissive[0], emissive[1], emissive[2]), strength);
+            b.emission(emissiveFactor, strength);                   // a black factor (the default) emits nothing, textured or not
         }
         specular(m, b, name);
         GltfJson tr = GltfTextures.extension(m, "KHR_materials_transmission");
         if (tr != null) {
+            double factor = unit(tr, "transmissionFactor", tr.number("transmissionFactor", 0));
             Texture t = texture(tr, "transmissionTexture", name);
-            if (t != null) {
-                b.transmission(t.linear());
+            if (t != null && factor > 0) {
+                b.transmission(t.channel(0).times(factor));            // R × transmissionFactor
             } else {
-                b.transmission(unit(tr, "transmissionFactor", tr.number("transmissionFactor", 0)));
+                b.transmission(factor);
             }
         }
         GltfJson ior = GltfTextures.extension(m, "KHR_materials_ior");
@@ -166,33 +173,68 @@ final class GltfMaterials {
         }
         Texture t = texture(sp, "specularTexture", name);
         double factor = unit(sp, "specularFactor", sp.number("specularFactor", 1));
-        if (t != null) {
-            doc.noteOnce("specularTexture is read from its luminance, not its alpha channel");
-            b.specular(t.linear());
+        if (t != null && factor > 0) {
+            b.specular(t.alpha().times(factor));                      // A × specularFactor
         } else {
             b.specular(factor);
         }
         double[] colour = sp.numbers("specularColorFactor", 3, new double[] {1, 1, 1});
+        if (!(colour[0] >= 0 && colour[1] >= 0 && colour[2] >= 0) || !Double.isFinite(colour[0] + colour[1] + colour[2])) {
+            throw sp.get("specularColorFactor").error("must be finite and not negative");
+        }
+        Rgb colourFactor = new Rgb(colour[0], colour[1], colour[2]);
         Texture ct = texture(sp, "specularColorTexture", name);
         if (ct != null) {
-            b.specularColor(ct);
+            b.specularColor(ct.scaled(colourFactor));
         } else {
-            if (!(colour[0] >= 0 && colour[1] >= 0 && colour[2] >= 0)) {
-                throw sp.get("specularColorFactor").error("must not be negative");
-            }
-            b.specularColor(new Rgb(colour[0], colour[1], colour[2]));
+            b.specularColor(colourFactor);
         }
+    }
+
+    /**
+     * The coordinate set (n of TEXCOORD_n) that the primitives of material {@code index} are read
+     * with: strahl keeps one set per mesh, and every texture of a material is looked up at it. It is
+     * the set the material's textures read (TEXCOORD_0 for the default material and for a material
+     * without textures); a material whose textures read different sets gets the first one's (in the
+     * order of {@link #SLOTS}: the base colour's if it has one), with a note. occlusionTexture is not
+     * read by strahl and does not count.
+     */
+    int uvSet(int index) throws SceneException {
+        if (index < 0) {
+            return 0;
+        }
+        Integer known = uvSets.get(index);
+        if (known != null) {
+            return known;
+        }
+        GltfJson m = doc.root.array("materials").get(index);
+        TreeSet<Integer> sets = new TreeSet<>();
+        int chosen = -1;
+        String chosenKey = null;
+        for (String[] slot : SLOTS) {
+            GltfJson parent = slot[0] == null ? m : slot[0].startsWith("KHR_") ? GltfTextures.extension(m, slot[0]) : m.get(slot[0]);
+            GltfJson info = parent == null ? null : parent.get(slot[1]);
+            if (info != null) {
+                int set = GltfTextures.texCoord(info);
+                sets.add(set);
+                if (chosen < 0) {
+                    chosen = set;
+                    chosenKey = slot[1];
+                }
+            }
+        }
+        if (sets.size() > 1) {
+            doc.noteOnce(m.path + ": its textures read " + sets.stream().map(s -> "TEXCOORD_" + s).collect(Collectors.joining(" and "))
+                    + "; strahl keeps one coordinate set per mesh, so all read TEXCOORD_" + chosen + " (the " + chosenKey + "'s)");
+        }
+        int set = Math.max(chosen, 0);
+        uvSets.put(index, set);
+        return set;
     }
 
     private Texture texture(GltfJson parent, String key, String material) throws SceneException {
         GltfJson info = parent.get(key);
         return info == null ? null : textures.texture(info, material);
-    }
-
-    private void ignoredFactor(GltfJson parent, String key, boolean notOne) {
-        if (notOne) {
-            doc.noteOnce(parent.path + ": " + key + " with a texture: the texture is used, the factor ignored");
-        }
     }
 
     private static double unit(GltfJson parent, String key, double v) throws SceneException {

@@ -10,7 +10,9 @@ import java.util.Map;
  * are, TRIANGLE_STRIP and TRIANGLE_FAN converted (the specification's §3.7.2.1 vertex orders),
  * non-indexed primitives indexed 0, 1, 2…; POINTS and LINES are skipped with one note. Texture
  * coordinates are turned to strahl's convention (v' = 1 − v: glTF's (0, 0) is an image's top-left
- * corner, strahl's its bottom-left). Each mesh is read once, however many nodes use it.
+ * corner, strahl's its bottom-left). A primitive keeps one coordinate set, the one its material's
+ * textures read ({@link GltfMaterials#uvSet}: TEXCOORD_0 unless they all read another).
+ * Each mesh is read once, however many nodes use it.
  */
 final class GltfMeshes {
     /**
@@ -26,11 +28,18 @@ final class GltfMeshes {
 
     private final GltfDocument doc;
     private final Accessors accessors;
+    private final GltfMaterials materials;
     private final Map<Integer, List<Primitive>> read = new java.util.HashMap<>();
 
     GltfMeshes(GltfDocument doc) {
+        this(doc, new GltfMaterials(doc));
+    }
+
+    /** Meshes whose primitives read the coordinate set that {@code materials} picks for their material. */
+    GltfMeshes(GltfDocument doc, GltfMaterials materials) {
         this.doc = doc;
         this.accessors = new Accessors(doc);
+        this.materials = materials;
     }
 
     /** The primitives of mesh {@code index} (read on first use). */
@@ -78,13 +87,17 @@ final class GltfMeshes {
             normals = accessors.floats(attributes.get("NORMAL"), 3, "NORMAL");
             requireCount(attributes.get("NORMAL"), normals.length / 3, vertices);
         }
+        int material = p.has("material") ? p.get("material").index(doc.root.array("materials").size()) : -1;
+        String uvKey = "TEXCOORD_" + materials.uvSet(material);
         float[] uvs = null;
-        if (attributes.has("TEXCOORD_0")) {
-            uvs = accessors.floats(attributes.get("TEXCOORD_0"), 2, "TEXCOORD_0");
-            requireCount(attributes.get("TEXCOORD_0"), uvs.length / 2, vertices);
+        if (attributes.has(uvKey)) {
+            uvs = accessors.floats(attributes.get(uvKey), 2, uvKey);
+            requireCount(attributes.get(uvKey), uvs.length / 2, vertices);
             for (int i = 1; i < uvs.length; i += 2) {
                 uvs[i] = 1 - uvs[i];
             }
+        } else if (!uvKey.equals("TEXCOORD_0")) {
+            doc.noteOnce("warning: " + p.path + " has no " + uvKey + ", which its material's textures read: it has no texture coordinates");
         }
         int[] order;
         if (p.has("indices")) {
@@ -96,7 +109,6 @@ final class GltfMeshes {
             }
         }
         int[] triangles = triangles(order, mode);
-        int material = p.has("material") ? p.get("material").index(doc.root.array("materials").size()) : -1;
         return new Primitive(positions, normals, uvs, triangles, material);
     }
 

@@ -49,8 +49,8 @@ public final class GltfReader {
     public static Asset add(Path file, Transform placement, Scene.Builder builder) throws SceneException {
         GltfDocument doc = GltfDocument.read(file);
         GltfNodes nodes = GltfNodes.walk(doc, placement.matrix());
-        GltfMeshes meshes = new GltfMeshes(doc);
         GltfMaterials materials = new GltfMaterials(doc);
+        GltfMeshes meshes = new GltfMeshes(doc, materials);
         Map<Integer, Integer> uses = new HashMap<>();
         long triangles = 0;
         for (GltfNodes.Placed p : nodes.meshes) {

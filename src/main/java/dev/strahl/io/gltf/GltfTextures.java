@@ -13,9 +13,11 @@ import java.util.Map;
 /**
  * glTF texture references ({@code textureInfo}): the image (a file next to the asset, a
  * {@code data:} URI or a buffer view; PNG or JPEG), the sampler's wrap mode and
- * KHR_texture_transform's offset and scale. Texture coordinates were turned to strahl's
- * bottom-left convention when the mesh was read (v' = 1 − v), so a transform (offset o, scale s,
- * in glTF's top-left coordinates) becomes offset (o_u, 1 − s_v − o_v) and scale s here. An image
+ * KHR_texture_transform's offset, rotation and scale. Texture coordinates were turned to strahl's
+ * bottom-left convention when the mesh was read (v' = 1 − v), so a transform (offset o, rotation
+ * r, scale s, in glTF's top-left coordinates) becomes scale s, rotation r and offset
+ * (o_u + s_v sin r, 1 − s_v cos r − o_v) here (see {@link #transformed}). Which coordinate set a
+ * texture reads ({@link #texCoord}) is the mesh's business: {@link GltfMaterials#uvSet}. An image
  * that is missing or cannot be decoded is a warning, as in MTL files: the material keeps its
  * factors. Embedded images are written once to a temporary file, as strahl's textures are files.
  */
@@ -39,14 +41,7 @@ final class GltfTextures {
      */
     Texture texture(GltfJson info, String material) throws SceneException {
         GltfJson textureNode = doc.element("textures", info.require("index"));
-        int texCoord = info.integer("texCoord", 0, 0, Integer.MAX_VALUE);
         GltfJson transform = extension(info, "KHR_texture_transform");
-        if (transform != null && transform.has("texCoord")) {
-            texCoord = transform.integer("texCoord", 0, 0, Integer.MAX_VALUE);
-        }
-        if (texCoord != 0) {
-            doc.noteOnce("texture coordinate sets other than TEXCOORD_0 are not supported: " + info.path + " reads TEXCOORD_0");
-        }
         GltfJson source = textureNode.get("source");
         if (source == null) {
             GltfJson ext = textureNode.get("extensions");
@@ -68,18 +63,44 @@ final class GltfTextures {
             }
             t = t.withWrap(wrap(sampler, s));
         }
-        if (transform != null) {
-            double[] offset = transform.numbers("offset", 2, new double[] {0, 0});
-            double[] scale = transform.numbers("scale", 2, new double[] {1, 1});
-            if (transform.number("rotation", 0) != 0) {
-                doc.noteOnce("warning: KHR_texture_transform rotation is not supported: " + transform.path + " is read without it");
-            }
-            if (!Double.isFinite(offset[0] + offset[1] + scale[0] + scale[1])) {
-                throw transform.error("offset and scale must be finite");
-            }
-            t = t.withUvScale(scale[0], scale[1]).withUvOffset(offset[0], 1 - scale[1] - offset[1]);
+        return transform == null ? t : transformed(t, transform);
+    }
+
+    /**
+     * The texture with KHR_texture_transform applied. The extension's README defines
+     * uv' = T·R·S·uv in glTF's top-left coordinates, with R = [cos r, sin r; −sin r, cos r] as
+     * its GLSL literal reads row by row: u' = cos r · s_u u + sin r · s_v v + o_u,
+     * v' = −sin r · s_u u + cos r · s_v v + o_v. That reading is the one the README's own example
+     * confirms (offset [0, 1], rotation π/2, scale ½ shows the image's lower-left quadrant turned
+     * clockwise), and the one the Khronos glTF-Sample-Viewer and Blender's importer use (a
+     * column-major reading of the literal would turn the other way). With v = 1 − v_glTF on both
+     * sides it is: scale s, rotate counter-clockwise by r, offset (o_u + s_v sin r, 1 − s_v cos r − o_v),
+     * which is strahl's {@code UvTransform} order.
+     */
+    static Texture transformed(Texture t, GltfJson transform) throws SceneException {
+        double[] offset = transform.numbers("offset", 2, new double[] {0, 0});
+        double[] scale = transform.numbers("scale", 2, new double[] {1, 1});
+        double r = transform.number("rotation", 0);
+        if (!Double.isFinite(offset[0]) || !Double.isFinite(offset[1]) || !Double.isFinite(scale[0]) || !Double.isFinite(scale[1])
+                || !Double.isFinite(r)) {
+            throw transform.error("offset, rotation and scale must be finite");
         }
-        return t;
+        double sin = Math.sin(r), cos = Math.cos(r);
+        double ou = offset[0] + scale[1] * sin, ov = 1 - scale[1] * cos - offset[1];
+        if (!Double.isFinite(ou + ov)) {
+            throw transform.error("offset and scale too large (the offset in strahl's coordinates is not finite)");
+        }
+        return t.withUvScale(scale[0], scale[1]).withUvRotation(r).withUvOffset(ou, ov);
+    }
+
+    /** The coordinate set (n of TEXCOORD_n) a {@code textureInfo} reads: its texCoord, or KHR_texture_transform's. */
+    static int texCoord(GltfJson info) throws SceneException {
+        int texCoord = info.integer("texCoord", 0, 0, Integer.MAX_VALUE);
+        GltfJson transform = extension(info, "KHR_texture_transform");
+        if (transform != null && transform.has("texCoord")) {
+            texCoord = transform.integer("texCoord", 0, 0, Integer.MAX_VALUE);
+        }
+        return texCoord;
     }
 
     private Texture.Wrap wrap(GltfJson sampler, int mode) throws SceneException {

@@ -178,7 +178,7 @@ class GltfMaterialsTest {
         Scene scene = SceneLoader.load(w.writeSeparate(dir.resolve("maps.gltf"), "maps.bin"));
         dev.strahl.scene.Texture base = dev.strahl.scene.Texture.image(dir.resolve("base.png"));
         Material expected = Material.principled("leaf").baseColor(base)
-                .emission(dev.strahl.scene.Texture.image(dir.resolve("glow.png")), 2).build()
+                .emission(dev.strahl.scene.Texture.image(dir.resolve("glow.png")).scaled(Rgb.gray(0.5)), 4).build()   // factor × texture
                 .withNormalMap(dev.strahl.scene.Texture.image(dir.resolve("normal.png")).linear(), 0.5)
                 .withAlphaCutout(base.alpha(), 0.5);           // alpha × 0.5 < 0.25 ⇔ alpha < 0.5
         assertThat(scene.materials()).containsExactly(expected);
