@@ -4,7 +4,7 @@
 # class path with the test dependencies (JFreeChart draws the plots; it is a test dependency,
 # never one of the library's). Writes the PNGs and docs/experiments/figures.txt.
 #
-#   docs/experiments/run.sh                    # everything, as on the page (about 20 minutes on 2 shared cores)
+#   docs/experiments/run.sh                    # everything, as on the page (about 25 minutes on 2 shared cores)
 #   docs/experiments/run.sh --quick            # smaller sample counts: a try-out in a few minutes
 #   docs/experiments/run.sh e5 e9              # only some experiments (figures-e5-e9.txt)
 #   STRAHL_DATA=/path/to/data docs/experiments/run.sh   # with the Stanford bunny (meshes/bunny/bun_zipper.ply)

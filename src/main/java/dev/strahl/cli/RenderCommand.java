@@ -313,8 +313,8 @@ final class RenderCommand implements Callable<Integer> {
 
     private RenderSettings settings() {
         return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0,
-                transport.integrator, transport.lightSamples, timeLimit == null ? Duration.ZERO : timeLimit,
-                new PhotonParameters(transport.photons, transport.photonRadius), accel == Accel.NONE, schedule == Schedule.STRIPES, aovs());
+                transport.integrator, transport.lightSamples, timeLimit == null ? Duration.ZERO : timeLimit, new PhotonParameters(
+                transport.photons, transport.photonRadius), accel == Accel.NONE, schedule == Schedule.STRIPES, transport.shadows(), aovs());
     }
 
     /** The feature buffers asked for with --aov (checked), or none. */

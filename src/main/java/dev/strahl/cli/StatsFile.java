@@ -63,6 +63,7 @@ final class StatsFile {
             json.writeNumberField("thread_idle_seconds", stats.threadIdleSeconds());
             json.writeStringField("accel", settings.bruteForce() ? "none" : "bvh");
             json.writeStringField("schedule", settings.stripes() ? "stripes" : "tiles");
+            json.writeStringField("shadows", settings.shadows() ? "on" : "off");
             json.writeNumberField("texture_bytes", textureBytes);
             json.writeEndObject();
         });

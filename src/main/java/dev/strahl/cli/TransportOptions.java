@@ -33,4 +33,17 @@ final class TransportOptions {
             description = "Initial photon gather radius in scene units for photon; it shrinks with the iterations. "
                     + "0 = 1/100 of the scene's bounding-box diagonal (default: ${DEFAULT-VALUE}).")
     double photonRadius;
+
+    @Option(names = "--shadows", defaultValue = "on", paramLabel = "on|off",
+            description = "Teaching option: off traces no shadow rays, so every light shines through everything onto whatever faces it: "
+                    + "the picture without shadows (with path and photon only the direct light loses its shadows) (default: ${DEFAULT-VALUE}).")
+    Shadows shadows;
+
+    /** The values of the teaching option --shadows. */
+    enum Shadows { ON, OFF }
+
+    /** Whether shadow rays are traced ({@code --shadows on}, the default). */
+    boolean shadows() {
+        return shadows != Shadows.OFF;
+    }
 }

@@ -73,7 +73,7 @@ final class ViewCommand implements Callable<Integer> {
     ViewerOptions options() {
         return new ViewerOptions(scene, width, height, spp, transport.maxDepth, transport.hemisphere, threads, seed,
                 transport.integrator, transport.lightSamples, Theme.parse(theme), given(), transport.photons, transport.photonRadius,
-                SceneFileOptions.aovs(aovNames), lens.overrides());
+                SceneFileOptions.aovs(aovNames), lens.overrides(), transport.shadows());
     }
 
     /**

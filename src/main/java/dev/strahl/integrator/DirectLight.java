@@ -36,7 +36,13 @@ public final class DirectLight {
         /** Light sampling alone: weight w = 1. */
         LIGHT_ONLY,
         /** Weighted against one BSDF sample at the same point by the power heuristic. */
-        MIS
+        MIS,
+        /**
+         * Light sampling alone (w = 1) with every shadow ray taken as unblocked and never traced:
+         * the teaching option without shadows, the talk's picture of Lambert × light. Each light
+         * in front of the point lights it as if nothing stood between them.
+         */
+        UNOCCLUDED
     }
 
     private final World world;
@@ -68,18 +74,20 @@ public final class DirectLight {
     /**
      * Draws n light samples and, where the BSDF at {@code s} is not a pure delta, there are lights
      * and {@code use} is not {@link Use#DRAW_ONLY}, adds beta · (1/n) Σ f(wo, wi)·Le·|cosθi|·w / pdf
-     * over them to {@code out}: w = 1 for {@link Use#LIGHT_ONLY}; for {@link Use#MIS} the power
-     * heuristic with sample counts against one BSDF sample (Veach 1997, eq. 9.13),
-     * (n·pl)² / ((n·pl)² + pb²).
+     * over them to {@code out}: w = 1 for {@link Use#LIGHT_ONLY} and {@link Use#UNOCCLUDED}; for
+     * {@link Use#MIS} the power heuristic with sample counts against one BSDF sample (Veach 1997,
+     * eq. 9.13), (n·pl)² / ((n·pl)² + pb²). Only {@link Use#UNOCCLUDED} skips the shadow rays.
      */
     public void add(Shading s, Sampler sampler, int n, Use use, MutableRgb beta, MutableRgb out) {
         Bsdf bsdf = s.bsdf;
         boolean estimate = use != Use.DRAW_ONLY && !bsdf.isDelta() && !lights.isEmpty();
+        boolean lightAlone = use != Use.MIS;
+        boolean shadows = use != Use.UNOCCLUDED;
         double scale = 1.0 / n;
         for (int i = 0; i < n; i++) {
             sampler.get2D(uPoint);                 // the point on the light: one stratified pair
             double uLight = sampler.get1D();
-            if (!estimate || !lights.sample(s.sp.p, uLight, uPoint.u1, uPoint.u2, use == Use.LIGHT_ONLY, lightPoint, ls)) {
+            if (!estimate || !lights.sample(s.sp.p, uLight, uPoint.u1, uPoint.u2, lightAlone, lightPoint, ls)) {
                 continue;
             }
             s.frame.toLocal(ls.wi, wiLocal);
@@ -87,10 +95,10 @@ public final class DirectLight {
                 continue;                          // shading and geometric normal disagree: no leaks
             }
             bsdf.eval(s.sp.uv, s.woLocal, wiLocal, f);
-            if (f.isBlack() || !visible(s.sp)) {
+            if (f.isBlack() || shadows && !visible(s.sp)) {
                 continue;
             }
-            double w = use == Use.LIGHT_ONLY || ls.delta ? 1 : MathUtil.powerHeuristic(n * ls.pdf, bsdf.pdf(s.sp.uv, s.woLocal, wiLocal));
+            double w = lightAlone || ls.delta ? 1 : MathUtil.powerHeuristic(n * ls.pdf, bsdf.pdf(s.sp.uv, s.woLocal, wiLocal));
             f.mul(ls.radiance);
             out.addProduct(beta, f, Math.abs(wiLocal.z) * w * scale / ls.pdf);
         }

@@ -15,14 +15,20 @@ import dev.strahl.world.World;
  * quantity as the path tracer at max depth 2; soft shadows sharpen with more light samples.
  * Random numbers: the light samples' (pair, then light choice, each), then the BSDF sample's (lobe,
  * then direction pair), at every first hit, as at the path tracer's first vertex.
+ *
+ * <p>Without {@code shadows} (a teaching option) the light samples are taken as visible, no shadow
+ * ray is traced, and they are the whole estimate of the light from emitters (weight 1): the BSDF
+ * sample, which would find a light only past any occluder, then adds only what a mirror or glass
+ * shows (a delta sample). It still draws its numbers, so the layout of the dimensions stays.
  */
 public final class DirectLighting implements Integrator {
     private final World world;
     private final Bsdf[] bsdfs;
     private final boolean cullBackFaces;
     private final int lightSamples;
+    private final boolean shadows;
 
-    public DirectLighting(World world, boolean uniformHemisphere, boolean cullBackFaces, int lightSamples) {
+    public DirectLighting(World world, boolean uniformHemisphere, boolean cullBackFaces, int lightSamples, boolean shadows) {
         if (lightSamples < 1) {
             throw new IllegalArgumentException("light samples must be >= 1, got " + lightSamples);
         }
@@ -30,6 +36,7 @@ public final class DirectLighting implements Integrator {
         this.bsdfs = Shading.bsdfs(world, uniformHemisphere);
         this.cullBackFaces = cullBackFaces;
         this.lightSamples = lightSamples;
+        this.shadows = shadows;
     }
 
     @Override
@@ -50,12 +57,15 @@ public final class DirectLighting implements Integrator {
                 Bsdf bsdf = s.bsdf;
                 beta.set(1, 1, 1);
                 boolean lightSampling = !bsdf.isDelta() && !lights.isEmpty();
-                tracer.direct.add(s, sampler, lightSamples, DirectLight.Use.MIS, beta, out);
+                tracer.direct.add(s, sampler, lightSamples, shadows ? DirectLight.Use.MIS : DirectLight.Use.UNOCCLUDED, beta, out);
                 // One BSDF sample: the light it finds, weighted against the light samples.
                 if (!s.sampleBsdf(sampler)) {
                     return;
                 }
                 BsdfSample bs = s.bs;
+                if (!shadows && lightSampling && !bs.delta) {
+                    return;                            // the unoccluded light samples stand alone
+                }
                 double bsdfPdf = bs.pdf;
                 beta.set(bs.weight);
                 s.spawn(ray, s.wi);

@@ -36,7 +36,15 @@ public final class PathTracer implements Integrator {
         /** BSDF sampling only: emitters count only when a path hits them. */
         BSDF,
         /** Light sampling only: a path hitting an emitter counts only after a specular bounce. */
-        LIGHT
+        LIGHT,
+        /**
+         * Light sampling only, as {@link #LIGHT}, with every shadow ray taken as unblocked: the
+         * teaching option without shadows. Only the last segment of each path, the one to the
+         * light, ignores what stands in its way; the bounces before it are traced as always, so
+         * indirect light keeps its occlusion. (With MIS a BSDF sample that hits a light would
+         * count too, and it would have crossed any occluder: so light sampling alone.)
+         */
+        UNOCCLUDED
     }
 
     private final World world;
@@ -55,6 +63,7 @@ public final class PathTracer implements Integrator {
             case MIS -> DirectLight.Use.MIS;
             case BSDF -> DirectLight.Use.DRAW_ONLY;
             case LIGHT -> DirectLight.Use.LIGHT_ONLY;
+            case UNOCCLUDED -> DirectLight.Use.UNOCCLUDED;
         };
         this.bsdfs = Shading.bsdfs(world, uniformHemisphere);
     }
@@ -85,7 +94,7 @@ public final class PathTracer implements Integrator {
                     // The environment reached by the previous BSDF sample, weighted against light sampling.
                     double w = 1;
                     if (!prevDelta && strategy != Strategy.BSDF) {
-                        w = strategy == Strategy.LIGHT ? 0 : MathUtil.powerHeuristic(prevPdf, lights.environmentPdf(ray.d));
+                        w = strategy != Strategy.MIS ? 0 : MathUtil.powerHeuristic(prevPdf, lights.environmentPdf(ray.d));
                     }
                     addEnvironment(ray, beta, w, out);
                     return;
@@ -95,7 +104,7 @@ public final class PathTracer implements Integrator {
                 if (!s.emitted.isBlack()) {
                     double w = 1;
                     if (!prevDelta && strategy != Strategy.BSDF) {
-                        w = strategy == Strategy.LIGHT ? 0
+                        w = strategy != Strategy.MIS ? 0
                                 : MathUtil.powerHeuristic(prevPdf, lights.pdf(s.sp.material, t, s.cosEmitter));
                     }
                     out.addProduct(beta, s.emitted, w);

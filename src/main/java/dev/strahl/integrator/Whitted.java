@@ -20,6 +20,11 @@ import org.joml.Vector3d;
  *
  * <p>{@code maxDepth} limits the recursion in path segments as for the path tracer; -1 means
  * {@value #UNBOUNDED_DEPTH} segments.
+ *
+ * <p>Without {@code shadows} (a teaching option) the shadow rays are not traced and every light
+ * sample counts as visible: a diffuse surface shows Lambert × light from every light in front of
+ * it, the first picture of a ray tracer before it learns shadows. Mirrors and glass still reflect
+ * and refract as always.
  */
 public final class Whitted implements Integrator {
     /** The recursion limit used for max depth -1: deep enough for glass, bounded for mirror pairs. */
@@ -30,8 +35,9 @@ public final class Whitted implements Integrator {
     private final int maxDepth;
     private final boolean cullBackFaces;
     private final int lightSamples;
+    private final DirectLight.Use lightUse;
 
-    public Whitted(World world, int maxDepth, boolean cullBackFaces, int lightSamples) {
+    public Whitted(World world, int maxDepth, boolean cullBackFaces, int lightSamples, boolean shadows) {
         Integrator.checkMaxDepth(maxDepth);
         if (lightSamples < 1) {
             throw new IllegalArgumentException("light samples must be >= 1, got " + lightSamples);
@@ -41,6 +47,7 @@ public final class Whitted implements Integrator {
         this.maxDepth = maxDepth > 0 ? maxDepth : UNBOUNDED_DEPTH;
         this.cullBackFaces = cullBackFaces;
         this.lightSamples = lightSamples;
+        this.lightUse = shadows ? DirectLight.Use.LIGHT_ONLY : DirectLight.Use.UNOCCLUDED;
     }
 
     @Override
@@ -86,7 +93,7 @@ public final class Whitted implements Integrator {
             }
             Bsdf bsdf = s.bsdf;
             if (!bsdf.isDelta()) {
-                tracer.direct.add(s, sampler, lightSamples, DirectLight.Use.LIGHT_ONLY, weight, out);
+                tracer.direct.add(s, sampler, lightSamples, lightUse, weight, out);
                 return;
             }
             int count = deltaLobes(bsdf, s, lobes[depth]);

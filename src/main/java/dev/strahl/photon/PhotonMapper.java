@@ -54,6 +54,10 @@ import org.joml.Vector3d;
  *
  * <p>A scene's environment is a light too: it emits photons, and next-event estimation samples it,
  * so its photons are stored from their second hit on, like those of the area lights.
+ *
+ * <p>Without {@code shadows} (a teaching option) next-event estimation takes every light sample as
+ * visible and traces no shadow ray; the photons still travel through the scene as always, so only
+ * the direct light loses its shadows, as in the path tracer's {@code UNOCCLUDED} strategy.
  */
 public final class PhotonMapper implements Integrator {
     /** Knaus and Zwicker's α: the fraction of the radius reduction kept per iteration. */
@@ -66,6 +70,7 @@ public final class PhotonMapper implements Integrator {
     private final Bsdf[] bsdfs;
     private final int maxDepth;
     private final boolean cullBackFaces;
+    private final DirectLight.Use lightUse;
     private final int photonsPerIteration;
     private final double initialRadius;
     private final int minPhotonSegments;
@@ -78,11 +83,12 @@ public final class PhotonMapper implements Integrator {
     private record Iteration(int sampleIndex, PhotonMap map, double radius, double norm) {}
 
     public PhotonMapper(World world, int maxDepth, boolean uniformHemisphere, boolean cullBackFaces, int photonsPerIteration,
-                        double initialRadius) {
+                        double initialRadius, boolean shadows) {
         this.world = world;
         this.bsdfs = Shading.bsdfs(world, uniformHemisphere);
         this.maxDepth = Integrator.checkMaxDepth(maxDepth);
         this.cullBackFaces = cullBackFaces;
+        this.lightUse = shadows ? DirectLight.Use.LIGHT_ONLY : DirectLight.Use.UNOCCLUDED;
         this.photonsPerIteration = photonsPerIteration;
         this.initialRadius = initialRadius > 0 ? initialRadius : automaticRadius(world);
         boolean emits = !world.lights().isEmpty() || !world.environment().isBlack();
@@ -199,7 +205,7 @@ public final class PhotonMapper implements Integrator {
                 if (maxDepth > 0 && depth >= maxDepth) {
                     return;
                 }
-                tracer.direct.add(s, sampler, 1, DirectLight.Use.LIGHT_ONLY, beta, out);
+                tracer.direct.add(s, sampler, 1, lightUse, beta, out);
                 if (!s.bsdf.isDelta()) {
                     if (maxDepth < 0 || depth + minPhotonSegments <= maxDepth) {
                         gather(it, depth, out);

@@ -53,13 +53,17 @@ import java.util.zip.CheckedOutputStream;
  * be the same bits as one never interrupted.
  * The settings excluded from the fingerprint are those that do not change the bits of the image:
  * the target samples per pixel (a render may be resumed to go further), the thread count, the
- * pass size and the time limit. Every other setting, including any added later, is part of it.
+ * pass size and the time limit. Every other setting, including any added later, is part of it;
+ * a checkpoint written before a setting existed is compared as if it held the value it was
+ * rendered with ({@link #ADDED_LATER}: shadows, true), so it still resumes.
  */
 final class Checkpoint {
     static final int VERSION = 2;
     private static final byte[] MAGIC = "STRAHLCK".getBytes(StandardCharsets.US_ASCII);
     private static final int PIXEL_BYTES = 4 + 3 * 8;
     private static final Set<String> NOT_IN_FINGERPRINT = Set.of("samplesPerPixel", "threads", "samplesPerPass", "timeLimit", "schedule", "aovs");
+    /** Settings added to the fingerprint after version 2 was first written, with the value every older checkpoint was rendered with. */
+    static final Map<String, String> ADDED_LATER = Map.of("shadows", "true");
 
     private final byte[] sceneDigest;
     private final String settingsKey;
@@ -288,7 +292,11 @@ final class Checkpoint {
             return null;
         }
         Map<String, String> then = parse(saved);
+        ADDED_LATER.forEach(then::putIfAbsent);
         Map<String, String> now = parse(settingsKey);
+        if (then.equals(now)) {
+            return null;                           // an older checkpoint, of the settings it could not name
+        }
         StringBuilder sb = new StringBuilder();
         for (var e : now.entrySet()) {
             String old = then.get(e.getKey());

@@ -15,12 +15,14 @@ final class Integrators {
         // the teaching option --accel none: the same world, every ray against every primitive
         World world = s.bruteForce() ? scene.bruteForce() : scene;
         boolean uniform = s.hemisphere() == HemisphereSampling.UNIFORM;
+        // the teaching option without shadows: next-event estimation takes every light sample as visible
+        PathTracer.Strategy path = s.shadows() ? PathTracer.Strategy.MIS : PathTracer.Strategy.UNOCCLUDED;
         return switch (s.integrator()) {
-            case PATH -> new PathTracer(world, s.maxDepth(), uniform, s.cullBackFaces(), PathTracer.Strategy.MIS);
-            case DIRECT -> new DirectLighting(world, uniform, s.cullBackFaces(), s.lightSamples());
-            case WHITTED -> new Whitted(world, s.maxDepth(), s.cullBackFaces(), s.lightSamples());
+            case PATH -> new PathTracer(world, s.maxDepth(), uniform, s.cullBackFaces(), path);
+            case DIRECT -> new DirectLighting(world, uniform, s.cullBackFaces(), s.lightSamples(), s.shadows());
+            case WHITTED -> new Whitted(world, s.maxDepth(), s.cullBackFaces(), s.lightSamples(), s.shadows());
             case PHOTON -> new PhotonMapper(world, s.maxDepth(), uniform, s.cullBackFaces(), s.photons().photonsPerIteration(),
-                    s.photons().initialRadius());
+                    s.photons().initialRadius(), s.shadows());
         };
     }
 }

@@ -30,12 +30,14 @@ import java.util.function.Consumer;
  * @param photons         the photon mapper's photons per iteration and initial gather radius
  * @param bruteForce      teaching option: every ray against every primitive instead of the BVH (same image, slower)
  * @param stripes         teaching option: one horizontal stripe per thread instead of tiles from a shared counter
+ * @param shadows         whether shadow rays are traced; false is a teaching option: every light sample counts as
+ *                        visible, so lights shine through everything onto whatever faces them (no shadows)
  * @param aovs            the feature buffers to keep beside the image (empty: none); see {@link Aov}
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, long seed, int threads,
                              HemisphereSampling hemisphere, boolean cullBackFaces, int samplesPerPass,
                              IntegratorKind integrator, int lightSamples, Duration timeLimit, PhotonParameters photons,
-                             boolean bruteForce, boolean stripes, Set<Aov> aovs) {
+                             boolean bruteForce, boolean stripes, boolean shadows, Set<Aov> aovs) {
 
     /** Largest accepted film edge, to refuse absurd sizes before allocating. */
     public static final int MAX_SIZE = 1 << 15;
@@ -58,6 +60,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * @param photons         the photon mapper's parameters
      * @param bruteForce      teaching option: no BVH, every ray against every primitive (docs/experiments.md)
      * @param stripes         teaching option: one stripe of the image per thread instead of tiles (docs/experiments.md)
+     * @param shadows         false is a teaching option: no shadow rays, every light sample visible (docs/experiments.md)
      * @param aovs            the feature buffers to keep; copied (iterated in the order of {@link Aov})
      */
     public RenderSettings {
@@ -93,15 +96,44 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
     }
 
     /**
+     * Settings with shadows, as before the teaching option {@link #shadows()} existed: the
+     * canonical constructor's other components, checked the same way.
+     *
+     * @param width           film width in pixels, 1 .. {@value #MAX_SIZE}
+     * @param height          film height in pixels, 1 .. {@value #MAX_SIZE}
+     * @param samplesPerPixel camera samples per pixel, positive
+     * @param maxDepth        path segments including the camera segment; -1 for unbounded
+     * @param seed            the render seed
+     * @param threads         worker threads; 0 for one per available processor
+     * @param hemisphere      how diffuse surfaces sample directions
+     * @param cullBackFaces   skip back faces of closed meshes for camera and continuation rays
+     * @param samplesPerPass  samples per pixel in each pass; 0 chooses
+     * @param integrator      which light transport algorithm computes the radiance
+     * @param lightSamples    shadow rays per diffuse or glossy hit, at least 1
+     * @param timeLimit       stop at the end of the pass that crosses this time; zero for no limit
+     * @param photons         the photon mapper's parameters
+     * @param bruteForce      teaching option: no BVH, every ray against every primitive
+     * @param stripes         teaching option: one stripe of the image per thread instead of tiles
+     * @param aovs            the feature buffers to keep
+     */
+    public RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, long seed, int threads,
+                          HemisphereSampling hemisphere, boolean cullBackFaces, int samplesPerPass,
+                          IntegratorKind integrator, int lightSamples, Duration timeLimit, PhotonParameters photons,
+                          boolean bruteForce, boolean stripes, Set<Aov> aovs) {
+        this(width, height, samplesPerPixel, maxDepth, seed, threads, hemisphere, cullBackFaces, samplesPerPass, integrator,
+                lightSamples, timeLimit, photons, bruteForce, stripes, true, aovs);
+    }
+
+    /**
      * 512×512, 64 spp, unbounded depth, seed 0, all processors, cosine sampling, no culling,
      * automatic passes, path tracing with one light sample, no time limit, the photon mapper's
-     * {@linkplain PhotonParameters#defaults() defaults}, the BVH and tiles, and no feature buffers.
+     * {@linkplain PhotonParameters#defaults() defaults}, the BVH and tiles, shadows, and no feature buffers.
      *
      * @return the defaults
      */
     public static RenderSettings defaults() {
         return new RenderSettings(512, 512, 64, -1, 0, 0, HemisphereSampling.COSINE, false, 0, IntegratorKind.PATH, 1, Duration.ZERO,
-                PhotonParameters.defaults(), false, false, Set.of());
+                PhotonParameters.defaults(), false, false, true, Set.of());
     }
 
     /**
@@ -253,6 +285,22 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
     }
 
     /**
+     * These settings with or without shadows. Without is a teaching option, the picture a first
+     * ray tracer makes before it learns shadow rays: no shadow ray is traced and every light
+     * sample counts as visible, so each point shows the light of every light in front of it as if
+     * nothing stood between (for a diffuse surface: Lambert × light). Every integrator honours it
+     * in its next-event estimation; the path tracer then samples lights alone (no MIS) and, like
+     * the photon mapper, still traces its bounces through the scene, so only the direct light
+     * loses its shadows (docs/experiments.md, experiment 3).
+     *
+     * @param s true to trace shadow rays (the default), false for none
+     * @return a new settings object
+     */
+    public RenderSettings withShadows(boolean s) {
+        return edit(e -> e.shadows = s);
+    }
+
+    /**
      * These settings with other feature buffers.
      *
      * @param kept the feature buffers to keep beside the image; none for an empty set
@@ -276,7 +324,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         Fields f = new Fields(this);
         change.accept(f);
         return new RenderSettings(f.width, f.height, f.samplesPerPixel, f.maxDepth, f.seed, f.threads, f.hemisphere, f.cullBackFaces,
-                f.samplesPerPass, f.integrator, f.lightSamples, f.timeLimit, f.photons, f.bruteForce, f.stripes, f.aovs);
+                f.samplesPerPass, f.integrator, f.lightSamples, f.timeLimit, f.photons, f.bruteForce, f.stripes, f.shadows, f.aovs);
     }
 
     /** The components as mutable fields, for {@link #edit}. */
@@ -290,6 +338,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         PhotonParameters photons;
         boolean bruteForce;
         boolean stripes;
+        boolean shadows;
         Set<Aov> aovs;
 
         Fields(RenderSettings s) {
@@ -308,6 +357,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
             photons = s.photons;
             bruteForce = s.bruteForce;
             stripes = s.stripes;
+            shadows = s.shadows;
             aovs = s.aovs;
         }
     }

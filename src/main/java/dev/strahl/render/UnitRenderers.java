@@ -30,7 +30,7 @@ import java.util.function.Supplier;
  * its tile, so its sums are those of a local render.
  */
 final class UnitRenderers implements UnitService {
-    private static final int SETTINGS_FORMAT = 2;
+    private static final int SETTINGS_FORMAT = 3;
 
     @Override
     public UnitRenderer open(Scene scene, byte[] settingsBytes, byte[] digest, int threads) {
@@ -75,6 +75,7 @@ final class UnitRenderers implements UnitService {
             out.writeDouble(s.photons().initialRadius());
             out.writeBoolean(s.bruteForce());
             out.writeBoolean(s.stripes());
+            out.writeBoolean(s.shadows());
             out.writeBoolean(stratified);
             out.writeInt(s.aovs().size());
             for (Aov aov : s.aovs()) {
@@ -102,13 +103,13 @@ final class UnitRenderers implements UnitService {
             int lightSamples = in.readInt();
             var timeLimit = Duration.ofNanos(in.readLong());
             var photons = new PhotonParameters(in.readInt(), in.readDouble());
-            boolean bruteForce = in.readBoolean(), stripes = in.readBoolean(), stratified = in.readBoolean();
+            boolean bruteForce = in.readBoolean(), stripes = in.readBoolean(), shadows = in.readBoolean(), stratified = in.readBoolean();
             Set<Aov> aovs = EnumSet.noneOf(Aov.class);
             for (int n = in.readInt(); n > 0; n--) {
                 aovs.add(Aov.valueOf(in.readUTF()));
             }
             var settings = new RenderSettings(width, height, spp, depth, seed, threads, hemisphere, cull, perPass, kind, lightSamples,
-                    timeLimit, photons, bruteForce, stripes, aovs);
+                    timeLimit, photons, bruteForce, stripes, shadows, aovs);
             return new Decoded(settings, stratified);
         } catch (IOException e) {
             throw new IllegalArgumentException("unreadable settings: " + e.getMessage(), e);

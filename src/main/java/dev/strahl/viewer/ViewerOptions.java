@@ -35,10 +35,11 @@ import java.util.Set;
  * @param photonRadius the photon mapper's initial gather radius; 0 = automatic
  * @param aovs         the feature buffers the render keeps ({@code --aov}, a scene file's {@code film.aovs})
  * @param overrides    the environment map and lens that replace every opened scene's own (command-line options)
+ * @param shadows      whether shadow rays are traced (false: the teaching option {@code --shadows off})
  */
 public record ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere,
                             int threads, long seed, IntegratorKind integrator, int lightSamples, Theme theme, Set<Setting> given,
-                            int photons, double photonRadius, Set<Aov> aovs, SceneOverrides overrides) {
+                            int photons, double photonRadius, Set<Aov> aovs, SceneOverrides overrides, boolean shadows) {
 
     /**
      * The scene-file settings the viewer never takes from a file: its stop-at count is an
@@ -57,6 +58,14 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
         aovs = Set.copyOf(Objects.requireNonNull(aovs, "aovs"));
         Objects.requireNonNull(overrides, "overrides");
         renderSettings(width, height, maxDepth, hemisphere, threads, seed, integrator, lightSamples, photons, photonRadius);   // validates
+    }
+
+    /** Options with shadows. */
+    public ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere, int threads, long seed,
+                         IntegratorKind integrator, int lightSamples, Theme theme, Set<Setting> given, int photons, double photonRadius,
+                         Set<Aov> aovs, SceneOverrides overrides) {
+        this(scene, width, height, stopAt, maxDepth, hemisphere, threads, seed, integrator, lightSamples, theme, given, photons,
+                photonRadius, aovs, overrides, true);
     }
 
     /** Options without feature buffers that change nothing in the scenes opened. */
@@ -85,7 +94,7 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
     /** The render settings these options describe, without a scene file (validated by {@link RenderSettings}). */
     RenderSettings renderSettings() {
         RenderSettings s = renderSettings(width, height, maxDepth, hemisphere, threads, seed, integrator, lightSamples, photons, photonRadius);
-        return s.withAovs(aovs.isEmpty() ? EnumSet.noneOf(Aov.class) : EnumSet.copyOf(aovs));
+        return s.withAovs(aovs.isEmpty() ? EnumSet.noneOf(Aov.class) : EnumSet.copyOf(aovs)).withShadows(shadows);
     }
 
     /**

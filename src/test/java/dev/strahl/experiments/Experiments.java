@@ -332,7 +332,16 @@ public final class Experiments {
         // Whitted: light sampling alone at diffuse hits, n shadow rays each (the direct integrator
         // adds one BSDF sample by MIS, whose noise n does not reduce); no delta surfaces here.
         RenderSettings direct = settings(256, 1).withIntegrator(IntegratorKind.WHITTED);
-        picture(render(small, direct), "e3-hard-small-light");
+        Run hard = render(small, direct);
+        picture(hard, "e3-hard-small-light");
+        // The talk's first picture: Lambert × light, no shadow rays (the teaching option --shadows off).
+        Run unshadowed = render(small, direct.withShadows(false));
+        picture(unshadowed, "e3-no-shadows");
+        for (var e : Map.of("hard", hard, "no_shadows", unshadowed).entrySet()) {
+            figure("e3." + e.getKey() + ".mean_luminance", luminance(e.getValue().image()));
+            figure("e3." + e.getKey() + ".rays_per_sample", e.getValue().stats().rays() / (double) e.getValue().stats().samples());
+        }
+        figure("e3.shadowed_share", 1 - luminance(hard.image()) / luminance(unshadowed.image()));
         for (int n : new int[] {1, 2, 100}) {
             Run run = render(box, direct.withLightSamples(n));
             picture(run, "e3-soft-" + n + "-light-samples");
@@ -393,8 +402,8 @@ public final class Experiments {
 
     private void convergence() throws Exception {
         Scene box = scene("cornell-box.json");
-        int size = 24;
-        int[] spps = quick ? new int[] {8, 32, 128, 512} : new int[] {8, 32, 128, 512, 2048};
+        int size = quick ? 24 : 32;
+        int[] spps = quick ? new int[] {8, 32, 128, 512} : new int[] {8, 32, 128, 512, 2048, 8192};
         List<Series> series = new ArrayList<>();
         for (String sampler : new String[] {"stratified", "independent"}) {
             System.setProperty("strahl.sampler", sampler);        // read by each new render job

@@ -142,10 +142,14 @@ class DimensionLayoutTest {
 
     @Test
     void directLightingWhittedAndPhotonMappingKeepTheirLayouts() throws Exception {
-        assertFixedLayout("direct lighting, 1 light sample", w -> new DirectLighting(w, false, false, 1));
-        assertFixedLayout("direct lighting, 3 light samples", w -> new DirectLighting(w, false, false, 3));
-        assertFixedLayout("Whitted, 2 light samples", w -> new Whitted(w, -1, false, 2));
-        assertFixedLayout("photon mapper's camera paths", w -> new PhotonMapper(w, -1, false, false, 2000, 0));
+        assertFixedLayout("direct lighting, 1 light sample", w -> new DirectLighting(w, false, false, 1, true));
+        assertFixedLayout("direct lighting, 3 light samples", w -> new DirectLighting(w, false, false, 3, true));
+        assertFixedLayout("Whitted, 2 light samples", w -> new Whitted(w, -1, false, 2, true));
+        assertFixedLayout("photon mapper's camera paths", w -> new PhotonMapper(w, -1, false, false, 2000, 0, true));
+        // The teaching option without shadows skips the shadow rays, never a number.
+        assertFixedLayout("direct lighting without shadows", w -> new DirectLighting(w, false, false, 2, false));
+        assertFixedLayout("Whitted without shadows", w -> new Whitted(w, -1, false, 2, false));
+        assertFixedLayout("photon mapper without shadows", w -> new PhotonMapper(w, -1, false, false, 2000, 0, false));
     }
 
     /**

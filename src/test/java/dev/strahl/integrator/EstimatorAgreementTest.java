@@ -164,7 +164,7 @@ class EstimatorAgreementTest {
     void directLightingEqualsPathTracingAtDepthTwo(String name) throws Exception {
         Scene scene = variant(name);
         Estimate path = Estimate.of(scene, path(scene, 2, PathTracer.Strategy.MIS), 128);
-        Estimate direct = Estimate.of(scene, new DirectLighting(World.of(scene), false, false, 4), 64);
+        Estimate direct = Estimate.of(scene, new DirectLighting(World.of(scene), false, false, 4, true), 64);
         assertThat(worstZ(direct, path)).as("direct vs path at depth 2, %s", name).isLessThan(Z_MAX);
     }
 

@@ -53,7 +53,7 @@ class PhotonCausticTest {
     @BeforeAll
     static void renderWithPhotons() throws Exception {
         scene = SceneLoader.load(Path.of("scenes/cornell-sphere.json"));
-        PhotonMapper pm = new PhotonMapper(World.of(scene), -1, false, false, PHOTONS, RADIUS);
+        PhotonMapper pm = new PhotonMapper(World.of(scene), -1, false, false, PHOTONS, RADIUS, true);
         Integrator.Worker worker = pm.newWorker();
         Parallel parallel = Parallel.sequential(worker);
         double core = 0, shadow = 0;

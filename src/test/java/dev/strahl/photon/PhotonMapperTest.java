@@ -91,7 +91,7 @@ class PhotonMapperTest {
                 .environment(Rgb.BLACK)
                 .camera(new Camera(new Vector3d(0, 0, 4), new Vector3d(), new Vector3d(0, 1, 0), 40))
                 .build();
-        PhotonMapper pm = new PhotonMapper(World.of(scene), -1, false, false, PhotonParameters.DEFAULT_PHOTONS, 0);
+        PhotonMapper pm = new PhotonMapper(World.of(scene), -1, false, false, PhotonParameters.DEFAULT_PHOTONS, 0, true);
         Integrator.Worker w = pm.newWorker();
         pm.prepareSample(0, 0, Parallel.sequential(w));
         assertThat(pm.storedPhotons()).isZero();
@@ -116,14 +116,14 @@ class PhotonMapperTest {
     @Test
     void automaticRadiusIsAHundredthOfTheDiagonal() {
         Scene scene = furnace(0.5);
-        PhotonMapper pm = new PhotonMapper(World.of(scene), -1, false, false, PhotonParameters.DEFAULT_PHOTONS, 0);
+        PhotonMapper pm = new PhotonMapper(World.of(scene), -1, false, false, PhotonParameters.DEFAULT_PHOTONS, 0, true);
         assertThat(pm.initialRadius()).isCloseTo(0.01 * World.of(scene).geometry().bounds().diagonal(), within(1e-12));
-        assertThat(new PhotonMapper(World.of(scene), -1, false, false, 10, 0.2).initialRadius()).isEqualTo(0.2);
+        assertThat(new PhotonMapper(World.of(scene), -1, false, false, 10, 0.2, true).initialRadius()).isEqualTo(0.2);
     }
 
     @Test
     void radianceBeforeAnyPreparedIterationIsRefused() {
-        PhotonMapper pm = new PhotonMapper(World.of(furnace(0.5)), -1, false, false, PhotonParameters.DEFAULT_PHOTONS, 0);
+        PhotonMapper pm = new PhotonMapper(World.of(furnace(0.5)), -1, false, false, PhotonParameters.DEFAULT_PHOTONS, 0, true);
         Integrator.Worker w = pm.newWorker();
         assertThatThrownBy(() -> w.radiance(new Ray(), new IndependentSampler(1), new MutableRgb())).isInstanceOf(IllegalStateException.class);
         assertThat(pm.preparesEachSample()).isTrue();
@@ -131,7 +131,7 @@ class PhotonMapperTest {
 
     @Test
     void photonRaysAreCountedByTheWorkersThatTracedThem() {
-        PhotonMapper pm = new PhotonMapper(World.of(furnace(0.5)), -1, false, false, 5000, 0.1);
+        PhotonMapper pm = new PhotonMapper(World.of(furnace(0.5)), -1, false, false, 5000, 0.1, true);
         Integrator.Worker w = pm.newWorker();
         pm.prepareSample(0, 0, Parallel.sequential(w));
         assertThat(w.rayCount()).isGreaterThanOrEqualTo(5000);                 // at least one ray per photon
@@ -142,7 +142,7 @@ class PhotonMapperTest {
     @Test
     void radianceAndPhotonTracingAllocateNothing() throws Exception {
         Scene scene = dev.strahl.io.SceneLoader.load(java.nio.file.Path.of("scenes/cornell-sphere.json"));
-        PhotonMapper pm = new PhotonMapper(World.of(scene), -1, false, false, 20_000, 0);
+        PhotonMapper pm = new PhotonMapper(World.of(scene), -1, false, false, 20_000, 0, true);
         Integrator.Worker w = pm.newWorker();
         pm.prepareSample(1, 0, Parallel.sequential(w));
         var rays = Meshes.rays(scene.camera(), 64, 64);
@@ -180,7 +180,7 @@ class PhotonMapperTest {
         assertThatThrownBy(() -> new PhotonParameters(10, -1)).hasMessageContaining("photon radius");
         assertThatThrownBy(() -> new PhotonParameters(10, Double.NaN)).hasMessageContaining("photon radius");
         assertThatThrownBy(() -> new PhotonParameters(10, Double.POSITIVE_INFINITY)).hasMessageContaining("photon radius");
-        assertThatThrownBy(() -> new PhotonMapper(World.of(furnace(0.5)), 0, false, false, PhotonParameters.DEFAULT_PHOTONS, 0))
+        assertThatThrownBy(() -> new PhotonMapper(World.of(furnace(0.5)), 0, false, false, PhotonParameters.DEFAULT_PHOTONS, 0, true))
                 .hasMessageContaining("maxDepth");
     }
 }

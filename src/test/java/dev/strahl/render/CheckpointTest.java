@@ -240,6 +240,51 @@ class CheckpointTest {
                 .withTimeLimit(java.time.Duration.ofSeconds(5))).restore(file);
     }
 
+    /** The teaching option without shadows changes the image: a checkpoint of one is not resumed with the other. */
+    @Test
+    void shadowsOrNoneAreInTheFingerprint() throws Exception {
+        assertThat(Checkpoint.settingsKey(SETTINGS)).contains(";shadows=true;");
+        assertThat(Checkpoint.settingsKey(SETTINGS.withShadows(false))).contains(";shadows=false;");
+        Path with = dir.resolve("with.ck");
+        Checkpoint.of(cornell, SETTINGS).save(with, uninterrupted, 0, 0);
+        assertRefused(Checkpoint.of(cornell, SETTINGS.withShadows(false)), with, "other settings", "shadows true in the checkpoint, false now");
+        Path without = dir.resolve("without.ck");
+        Checkpoint.of(cornell, SETTINGS.withShadows(false)).save(without, uninterrupted, 0, 0);
+        assertRefused(Checkpoint.of(cornell, SETTINGS), without, "shadows false in the checkpoint, true now");
+    }
+
+    /** A checkpoint saved before strahl had the shadows setting was rendered with shadows: it resumes with them, and only with them. */
+    @Test
+    void aCheckpointFromBeforeTheShadowsSettingResumesWithShadows() throws Exception {
+        Path file = dir.resolve("older.ck");
+        Checkpoint.of(cornell, SETTINGS).save(file, uninterrupted, 0, 0);
+        removeSetting(file, ";shadows=true");
+        assertSameBits(Checkpoint.of(cornell, SETTINGS).restore(file).film(), uninterrupted);
+        assertRefused(Checkpoint.of(cornell, SETTINGS.withShadows(false)), file, "shadows true in the checkpoint, false now");
+        assertRefused(Checkpoint.of(cornell, SETTINGS.withSeed(10)), file, "seed 9 in the checkpoint, 10 now");
+    }
+
+    /** Rewrites a checkpoint as one without {@code entry} in its settings: the string, its length and the checksum. */
+    private static void removeSetting(Path file, String entry) throws IOException {
+        byte[] b = Files.readAllBytes(file);
+        int at = 8 + 4 + 32;                            // magic, version, scene digest
+        int length = ((b[at] & 0xff) << 8) | (b[at + 1] & 0xff);
+        String settings = new String(b, at + 2, length, java.nio.charset.StandardCharsets.US_ASCII);
+        assertThat(settings).contains(entry);
+        byte[] shorter = settings.replace(entry, "").getBytes(java.nio.charset.StandardCharsets.US_ASCII);
+        var body = new java.io.ByteArrayOutputStream();
+        body.write(b, 0, at);
+        body.write(shorter.length >> 8);
+        body.write(shorter.length & 0xff);
+        body.write(shorter);
+        body.write(b, at + 2 + length, b.length - 4 - (at + 2 + length));
+        var crc = new java.util.zip.CRC32C();
+        crc.update(body.toByteArray());
+        int c = (int) crc.getValue();
+        body.write(new byte[] {(byte) (c >>> 24), (byte) (c >>> 16), (byte) (c >>> 8), (byte) c});
+        Files.write(file, body.toByteArray());
+    }
+
     @Test
     void anotherSceneOrCameraIsRefused() throws Exception {
         Path file = dir.resolve("t.ck");

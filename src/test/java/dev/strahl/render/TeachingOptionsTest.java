@@ -18,7 +18,8 @@ import org.junit.jupiter.api.Test;
 /**
  * The teaching options {@code --accel none} and {@code --schedule stripes} change how the image
  * is computed, never the image: the same bits as the defaults. Stripes really are one stripe per
- * thread, and the idle time they cause is counted.
+ * thread, and the idle time they cause is counted. The third, {@code --shadows off}, does change
+ * the image (integrator/NoShadowsTest checks what it shows), deterministically.
  */
 class TeachingOptionsTest {
     private static final RenderSettings SETTINGS = RenderSettings.defaults().withSize(70, 50).withSamplesPerPixel(6).withSeed(42);
@@ -27,8 +28,28 @@ class TeachingOptionsTest {
     void defaultsAreTheBvhAndTiles() {
         assertThat(RenderSettings.defaults().bruteForce()).isFalse();
         assertThat(RenderSettings.defaults().stripes()).isFalse();
-        assertThat(SETTINGS.withBruteForce(true).withStripes(true))
-                .extracting(RenderSettings::bruteForce, RenderSettings::stripes).containsExactly(true, true);
+        assertThat(RenderSettings.defaults().shadows()).isTrue();
+        assertThat(SETTINGS.withBruteForce(true).withStripes(true).withShadows(false))
+                .extracting(RenderSettings::bruteForce, RenderSettings::stripes, RenderSettings::shadows).containsExactly(true, true, false);
+        RenderSettings d = RenderSettings.defaults();
+        assertThat(new RenderSettings(d.width(), d.height(), d.samplesPerPixel(), d.maxDepth(), d.seed(), d.threads(), d.hemisphere(),
+                d.cullBackFaces(), d.samplesPerPass(), d.integrator(), d.lightSamples(), d.timeLimit(), d.photons(), d.bruteForce(),
+                d.stripes(), d.aovs())).as("the constructor without shadows keeps them").isEqualTo(d);
+    }
+
+    /** Without shadows the image is lighter (no light is blocked) and, like every image, the same bits on any number of threads. */
+    @Test
+    void withoutShadowsTheImageIsLighterAndTheSameBitsOnAnyThreadCount() throws Exception {
+        Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
+        for (IntegratorKind kind : IntegratorKind.values()) {
+            RenderSettings s = SETTINGS.withIntegrator(kind).withPhotons(new PhotonParameters(5000, 0));
+            Image shadows = Renders.render(scene, s.withThreads(2));
+            Image none = Renders.render(scene, s.withShadows(false).withThreads(1));
+            assertThat(Renders.render(scene, s.withShadows(false).withThreads(3)).rgb()).as("%s, 1 and 3 threads", kind)
+                    .isEqualTo(none.rgb());
+            // the Cornell Box's shadows hold 2.5 % (photon) to 5 % (path) of the green the camera sees
+            assertThat(none.mean()[1]).as("%s: green without shadows against with", kind).isGreaterThan(1.015 * shadows.mean()[1]);
+        }
     }
 
     @Test

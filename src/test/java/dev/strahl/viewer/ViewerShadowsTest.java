@@ -1,0 +1,28 @@
+package dev.strahl.viewer;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import dev.strahl.io.json.SceneSettings;
+import dev.strahl.render.HemisphereSampling;
+import dev.strahl.render.IntegratorKind;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+
+/** The teaching option without shadows reaches the viewer's renders, also of a scene file that chooses its own integrator. */
+class ViewerShadowsTest {
+    private static ViewerOptions options(boolean shadows) {
+        return new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.SYSTEM, Set.of(),
+                1000, 0, Set.of(), SceneOverrides.NONE, shadows);
+    }
+
+    @Test
+    void shadowsAreOnUnlessTurnedOff() {
+        assertThat(ViewerOptions.defaults().shadows()).isTrue();
+        assertThat(ViewerOptions.defaults().renderSettings().shadows()).isTrue();
+        assertThat(options(true).renderSettings().shadows()).isTrue();
+        assertThat(options(false).renderSettings().shadows()).isFalse();
+        SceneSettings file = new SceneSettings(32, 32, 8, 3, 1L, IntegratorKind.WHITTED, 2, null, null, null);
+        assertThat(options(false).settingsFor(file)).extracting(s -> s.integrator(), s -> s.shadows())
+                .containsExactly(IntegratorKind.WHITTED, false);
+    }
+}
