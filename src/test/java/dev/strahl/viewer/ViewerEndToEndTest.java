@@ -197,7 +197,7 @@ class ViewerEndToEndTest {
     @Timeout(value = 60, unit = TimeUnit.SECONDS)
     void theDenoiseToggleShowsAndSavesTheDenoisedImage(@TempDir Path dir) throws Exception {
         assumeTrue(!GraphicsEnvironment.isHeadless(), "no display (headless): run under xvfb-run to include this test");
-        ViewerOptions options = new ViewerOptions(Path.of("scenes", "cornell-box.json"), 128, 128, 16, -1, HemisphereSampling.COSINE,
+        ViewerOptions options = new ViewerOptions(Path.of("scenes", "cornell-box.json"), 96, 96, 8, -1, HemisphereSampling.COSINE,
                 0, 1, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of());
         Viewer viewer = Viewer.open(options);
         try {
@@ -213,11 +213,11 @@ class ViewerEndToEndTest {
             assertThat(onEdt(() -> ui.actions.denoise.getValue(javax.swing.Action.SELECTED_KEY))).isEqualTo(true);
             assertThat(c.status().generation()).as("restarted with the guides").isGreaterThan(generation);
             assertThat(c.settings().aovs()).containsAll(LiveDenoiser.GUIDES);
-            waitFor("the denoised image at the stop-at count, 16 spp", 30, () -> {
+            waitFor("the denoised image at the stop-at count, 8 spp", 30, () -> {
                 FramePresenter.Shown s = viewer.presenter().shown();
-                return s != null && s.denoised() && s.frame().samplesPerPixel() == 16;
+                return s != null && s.denoised() && s.frame().samplesPerPixel() == 8;
             });
-            waitFor("the status bar says so", 5, () -> statusText(ui).contains("denoised, 16 spp"));
+            waitFor("the status bar says so", 5, () -> statusText(ui).contains("denoised, 8 spp"));
             assertThat(c.status().state()).isEqualTo(RenderController.State.DONE);
 
             FramePresenter.Pick shown = viewer.presenter().pick();
