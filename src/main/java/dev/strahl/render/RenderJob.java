@@ -11,7 +11,7 @@ import dev.strahl.world.World;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Objects;
-import java.util.Set;
+import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
@@ -55,14 +55,9 @@ public final class RenderJob implements AutoCloseable {
     private final CompletableFuture<RenderStats> result = new CompletableFuture<>();
     private volatile int completedSpp;
     private final long restoredSamples;              // held by a resumed film before this job began
-    /** The mean image at the end of the last completed pass: what {@link #snapshot()} returns. */
-    private volatile Image lastPass;
+    /** The last completed pass: its image ({@link #snapshot()}) and, when asked for, its buffers. */
+    private final PassBuffers passes;
     private final PauseClock clock = new PauseClock();
-
-    private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener, Checkpoint identity,
-                      Checkpoint.Restored restored) {
-        this(scene, settings, integrator, listener, identity, restored, null);
-    }
 
     /** With {@code cluster} non-null, the passes are rendered by the runner it makes for the job's film (a cluster render). */
     private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener, Checkpoint identity,
@@ -85,6 +80,7 @@ public final class RenderJob implements AutoCloseable {
                 : new RenderWorkers(film, rays, integrator, features ? () -> new FeatureTracer(world, settings.cullBackFaces()) : null,
                         settings.seed(), settings.effectiveThreads(), settings.stripes(), "strahl-render-" + number);
         this.completedSpp = Math.min(film.minSampleCount(), settings.samplesPerPixel());   // 0, unless the film was restored
+        this.passes = new PassBuffers(film, settings.aovs());
         this.restoredSamples = film.totalSamples();
     }
 
@@ -113,7 +109,7 @@ public final class RenderJob implements AutoCloseable {
 
     /** Starts rendering with a given integrator made for this scene; the settings' choice is ignored (tests). */
     static RenderJob start(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener) {
-        return launch(new RenderJob(scene, settings, integrator, listener, null, null));
+        return launch(new RenderJob(scene, settings, integrator, listener, null, null, null));
     }
 
     /**
@@ -136,7 +132,7 @@ public final class RenderJob implements AutoCloseable {
         Objects.requireNonNull(checkpoint, "checkpoint");
         Checkpoint identity = Checkpoint.of(scene, settings);
         Checkpoint.Restored restored = identity.restore(checkpoint);
-        return launch(new RenderJob(scene, settings, Integrators.create(World.of(scene), settings), listener, identity, restored));
+        return launch(new RenderJob(scene, settings, Integrators.create(World.of(scene), settings), listener, identity, restored, null));
     }
 
     /**
@@ -174,8 +170,21 @@ public final class RenderJob implements AutoCloseable {
      * @return the image, immutable
      */
     public Image snapshot() {
-        Image image = lastPass;
-        return image != null ? image : new Image(settings.width(), settings.height(), new float[3 * settings.width() * settings.height()]);
+        return passes.image();
+    }
+
+    /**
+     * The image of the last completed pass ({@link #snapshot()}) with its variance and the feature
+     * buffers of the settings, for a {@link Denoiser} while the render goes on. Copied from the film
+     * when asked for (as long as about four snapshots take), and only while it holds exactly that
+     * pass: in a listener (the workers wait for it), during a pause begun in one, and after the
+     * render (as {@link #awaitBuffers()}); not while a pass is being rendered, nor paused in one.
+     *
+     * @return the buffers, or empty while a pass is being rendered (or paused in the middle of one)
+     */
+    public Optional<RenderBuffers> snapshotBuffers() {
+        RenderBuffers now = passes.snapshot();
+        return now != null || !isDone() ? Optional.ofNullable(now) : Optional.of(passes.of(film.toImage()));
     }
 
     /**
@@ -241,14 +250,14 @@ public final class RenderJob implements AutoCloseable {
      */
     public synchronized void pause() {
         if (clock.pause()) {
-            workers.hold();
+            passes.pause(workers::hold);
         }
     }
 
     /** Lets paused workers go on; does nothing unless paused. */
     public synchronized void resume() {
         if (clock.resume()) {
-            workers.release();
+            passes.resume(workers::release);
         }
     }
 
@@ -281,7 +290,6 @@ public final class RenderJob implements AutoCloseable {
             workers.release();
         }
     }
-
 
     private synchronized Checkpoint identity() {
         if (identity == null) {
@@ -328,16 +336,7 @@ public final class RenderJob implements AutoCloseable {
      */
     public RenderBuffers awaitBuffers() throws InterruptedException {
         awaitStats();
-        return buffers();
-    }
-
-    /** The film's buffers; consistent only while nothing renders into it. */
-    private RenderBuffers buffers() {
-        Set<Aov> aovs = settings.aovs();
-        return new RenderBuffers(film.toImage(), film.varianceImage(),
-                aovs.contains(Aov.ALBEDO) ? film.featureImage(0) : null,
-                aovs.contains(Aov.NORMAL) ? film.featureImage(3) : null,
-                aovs.contains(Aov.DEPTH) ? film.featureImage(6) : null);
+        return passes.of(film.toImage());
     }
 
     /**
@@ -398,7 +397,7 @@ public final class RenderJob implements AutoCloseable {
             boolean prepares = integrator.preparesEachSample();
             int start = film.minSampleCount();
             if (restoredSamples > 0) {
-                lastPass = film.toImage();                 // what the restored film holds, until a pass ends
+                passes.ended(film.toImage());              // what the restored film holds, until a pass ends
             }
             int pass = 0;
             while (start < spp && !workers.cancelled()) {
@@ -410,13 +409,14 @@ public final class RenderJob implements AutoCloseable {
                         break;
                     }
                 }
+                passes.starting();
                 workers.renderPass(start, end);
                 if (workers.cancelled()) {
                     break;
                 }
                 completedSpp = end;
                 Image image = film.toImage();
-                lastPass = image;
+                passes.ended(image);
                 listener.passFinished(new RenderListener.Pass(pass + 1, end, workers.samplesDone(), elapsedSeconds()), image);
                 start = end;
                 pass++;
@@ -435,7 +435,6 @@ public final class RenderJob implements AutoCloseable {
             workers.shutdown();
         }
     }
-
 
     /** Passes of 1, 1, 2, 4, 8 and then 16 samples per pixel: a first image at once, little overhead later. */
     static int autoPassSize(int pass) {

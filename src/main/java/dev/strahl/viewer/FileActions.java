@@ -27,6 +27,10 @@ import javax.swing.filechooser.FileNameExtensionFilter;
  * errors become a dialog with the one-line message, and a scene that fails to load (or asks for
  * settings that cannot be applied, or for a film the heap cannot hold) leaves the current one on
  * screen. Every scene opened goes to the front of the {@link RecentFiles}.
+ *
+ * <p>Saving writes what the window shows: the denoised image while View → Denoise shows one
+ * (named "…-64spp-denoised.png", and the message says "denoised"), else the newest image of the
+ * render. Either way the linear image, before the display's exposure and tone curve.
  */
 final class FileActions {
     /** Loads a scene file with the settings it is to be shown with ({@link SceneFiles#open}). */
@@ -56,7 +60,7 @@ final class FileActions {
         this.onSceneOpened = onSceneOpened;
         open = ViewerActions.action("Open scene…", Icons.open(), "Open a scene file (.json, .obj or .ply)",
                 KeyStroke.getKeyStroke(KeyEvent.VK_O, ViewerActions.menuMask()), e -> chooseScene());
-        save = ViewerActions.action("Save image…", Icons.save(), "Save the current image as PNG (sRGB) or PFM (linear)",
+        save = ViewerActions.action("Save image…", Icons.save(), "Save the image shown (denoised if it is) as PNG (sRGB) or PFM (linear)",
                 KeyStroke.getKeyStroke(KeyEvent.VK_S, ViewerActions.menuMask()), e -> chooseImageFile());
     }
 
@@ -158,7 +162,7 @@ final class FileActions {
     }
 
     private void chooseImageFile() {
-        RenderController.Frame shot = presenter.latest();
+        FramePresenter.Pick shot = presenter.pick();
         if (shot == null) {
             status.accept("Nothing to save yet");
             return;
@@ -170,7 +174,7 @@ final class FileActions {
         chooser.addChoosableFileFilter(png);
         chooser.addChoosableFileFilter(pfm);
         chooser.setFileFilter(png);
-        chooser.setSelectedFile(new File(defaultName(sceneFile, shot.samplesPerPixel())));
+        chooser.setSelectedFile(new File(defaultName(sceneFile, shot.frame().samplesPerPixel(), shot.denoised())));
         if (chooser.showSaveDialog(frame) != JFileChooser.APPROVE_OPTION) {
             return;
         }
@@ -179,15 +183,15 @@ final class FileActions {
                 JOptionPane.OK_CANCEL_OPTION, JOptionPane.WARNING_MESSAGE) != JOptionPane.OK_OPTION) {
             return;
         }
-        saveImage(presenter.latest(), out);   // the newest image, not the one from when the dialog opened
+        saveImage(presenter.pick(), out);   // the newest image shown, not the one from when the dialog opened
     }
 
-    /** Writes {@code shot} to {@code out} in the background (atomically, by {@link ImageWriters}). */
-    void saveImage(RenderController.Frame shot, Path out) {
+    /** Writes the linear image of {@code shot} to {@code out} in the background (atomically, by {@link ImageWriters}). */
+    void saveImage(FramePresenter.Pick shot, Path out) {
         new SwingWorker<Void, Void>() {
             @Override
             protected Void doInBackground() throws Exception {
-                ImageWriters.write(shot.image(), out);
+                ImageWriters.write(shot.frame().image(), out);
                 return null;
             }
 
@@ -195,8 +199,7 @@ final class FileActions {
             protected void done() {
                 try {
                     get();
-                    status.accept("Saved " + out.getFileName() + " (" + shot.samplesPerPixel() + " spp"
-                            + (shot.preview() ? ", preview" : "") + ")");
+                    status.accept(savedText(out, shot));
                 } catch (ExecutionException e) {
                     JOptionPane.showMessageDialog(frame, "Cannot write " + out + ": " + e.getCause().getMessage(),
                             "Cannot save image", JOptionPane.ERROR_MESSAGE);
@@ -207,11 +210,22 @@ final class FileActions {
         }.execute();
     }
 
+    /** "Saved x.png (64 spp, denoised)": what was saved. */
+    static String savedText(Path out, FramePresenter.Pick shot) {
+        return "Saved " + out.getFileName() + " (" + shot.frame().samplesPerPixel() + " spp"
+                + (shot.frame().preview() ? ", preview" : "") + (shot.denoised() ? ", denoised" : "") + ")";
+    }
+
     /** "cornell-box-64spp.png" for the scene file and sample count. */
     static String defaultName(Path scene, int spp) {
+        return defaultName(scene, spp, false);
+    }
+
+    /** "cornell-box-64spp.png", or "cornell-box-64spp-denoised.png" for a denoised image. */
+    static String defaultName(Path scene, int spp, boolean denoised) {
         String base = scene == null || scene.getFileName() == null ? "strahl" : scene.getFileName().toString();
         int dot = base.lastIndexOf('.');
-        return (dot > 0 ? base.substring(0, dot) : base) + "-" + spp + "spp.png";
+        return (dot > 0 ? base.substring(0, dot) : base) + "-" + spp + "spp" + (denoised ? "-denoised" : "") + ".png";
     }
 
     /** {@code file} itself if it names a .png or .pfm, else with {@code ext} appended. */

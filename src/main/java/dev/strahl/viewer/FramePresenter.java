@@ -19,6 +19,11 @@ import java.util.function.Consumer;
  * sees half of one pass and half of the next. Changing the exposure or the tone curve
  * ({@link ToneMapping}: clamp, ACES, AgX, as {@code --tonemap} for PNGs) re-converts the last
  * frame and never restarts rendering.
+ *
+ * <p>With View → Denoise on ({@link #setDenoised}), a full-resolution job's frames are shown as
+ * the {@link LiveDenoiser} hands them over denoised ({@link #acceptDenoised}): once the first
+ * denoised frame of a job has come, the newest denoised one is shown, never again a noisy one of
+ * that job; before it, and for previews, the noisy frames. Off, the noisy frames again.
  */
 final class FramePresenter implements Consumer<RenderController.Frame>, AutoCloseable {
 
@@ -26,8 +31,11 @@ final class FramePresenter implements Consumer<RenderController.Frame>, AutoClos
     static final double MIN_EXPOSURE = -10;
     static final double MAX_EXPOSURE = 10;
 
-    /** A converted frame: what the image panel paints. */
-    record Shown(BufferedImage image, RenderController.Frame frame, double exposure, ToneMapping curve) {}
+    /** A converted frame: what the image panel paints; {@code denoised} if it is the denoiser's output. */
+    record Shown(BufferedImage image, RenderController.Frame frame, double exposure, ToneMapping curve, boolean denoised) {}
+
+    /** The frame to show (or save), and whether it is the denoiser's output. */
+    record Pick(RenderController.Frame frame, boolean denoised) {}
 
     private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
         Thread t = new Thread(r, "strahl-viewer-display");
@@ -36,6 +44,8 @@ final class FramePresenter implements Consumer<RenderController.Frame>, AutoClos
     });
     private final AtomicBoolean scheduled = new AtomicBoolean();
     private RenderController.Frame latest;     // guarded by this
+    private RenderController.Frame latestDenoised;   // guarded by this
+    private boolean denoise;                   // guarded by this: View → Denoise
     private volatile double exposure;
     private volatile ToneMapping curve = ToneMapping.CLAMP;
     private volatile Shown shown;
@@ -51,6 +61,35 @@ final class FramePresenter implements Consumer<RenderController.Frame>, AutoClos
             latest = frame;
         }
         schedule();
+    }
+
+    /** Hands a denoised frame over (from the denoiser's thread); dropped if a newer job's frame has come. */
+    void acceptDenoised(RenderController.Frame frame) {
+        synchronized (this) {
+            if (latest != null && frame.generation() < latest.generation()) {
+                return;
+            }
+            latestDenoised = frame;
+        }
+        schedule();
+    }
+
+    /** Shows the denoised frames (when there are) or the noisy ones; re-converts at once. */
+    void setDenoised(boolean on) {
+        synchronized (this) {
+            denoise = on;
+        }
+        schedule();
+    }
+
+    /**
+     * What is to be shown: with Denoise on, the newest denoised frame if it is of the job whose
+     * frames come in now and that job is no preview; else the newest frame.
+     */
+    synchronized Pick pick() {
+        boolean useDenoised = denoise && latest != null && !latest.preview() && latestDenoised != null
+                && latestDenoised.generation() == latest.generation();
+        return latest == null ? null : new Pick(useDenoised ? latestDenoised : latest, useDenoised);
     }
 
     /** Sets the display exposure in stops (each stop doubles the displayed radiance). */
@@ -103,14 +142,15 @@ final class FramePresenter implements Consumer<RenderController.Frame>, AutoClos
 
     private void convert() {
         scheduled.set(false);                  // a frame arriving from now on schedules another round
-        RenderController.Frame f = latest();
+        Pick p = pick();
         double e = exposure;
         ToneMapping c = curve;
         Shown s = shown;
-        if (f == null || (s != null && s.frame() == f && s.exposure() == e && s.curve() == c)) {
+        if (p == null || (s != null && s.frame() == p.frame() && s.exposure() == e && s.curve() == c)) {
             return;
         }
-        shown = new Shown(Tonemap.toBufferedImage(f.image(), e, c), f, e, c);
+        RenderController.Frame f = p.frame();
+        shown = new Shown(Tonemap.toBufferedImage(f.image(), e, c), f, e, c, p.denoised());
         onShown.forEach(Runnable::run);
     }
 

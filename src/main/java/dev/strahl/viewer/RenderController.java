@@ -1,6 +1,7 @@
 package dev.strahl.viewer;
 
 import dev.strahl.image.Image;
+import dev.strahl.render.Aov;
 import dev.strahl.render.IntegratorKind;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderListener;
@@ -8,6 +9,7 @@ import dev.strahl.render.RenderSettings;
 import dev.strahl.render.HemisphereSampling;
 import dev.strahl.scene.Scene;
 import java.util.Objects;
+import java.util.Set;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 import java.util.function.UnaryOperator;
@@ -47,8 +49,8 @@ final class RenderController {
     /** Stop-at value meaning "never stop". */
     static final int UNLIMITED = 0;
 
-    /** One image to show: the mean after {@code samplesPerPixel} samples of job number {@code generation}. */
-    record Frame(Image image, int samplesPerPixel, boolean preview, long generation) {}
+    /** One image to show: the mean after {@code samplesPerPixel} samples of job number {@code generation}; its pass's buffers. */
+    record Frame(Image image, int samplesPerPixel, boolean preview, long generation, RenderJobs.Buffers buffers) {}
 
     /** What the status bar shows. {@code seconds} counts only the time the job was not held. */
     record Status(State state, boolean preview, int samplesPerPixel, int stopAt, double seconds, long samples,
@@ -93,7 +95,7 @@ final class RenderController {
         this.focusDistance = scene.camera().focusDistance();
         this.camera = home;
         this.settings = Objects.requireNonNull(settings, "settings");
-        this.stopAt = checkStopAt(stopAt);
+        this.stopAt = ViewerOptions.checkStopAt(stopAt);
         this.starter = starter;
         this.sink = sink;
         this.scheduler = scheduler;
@@ -103,13 +105,6 @@ final class RenderController {
     /** A controller that runs real {@link RenderJob}s and times camera moves on its own daemon thread. */
     static RenderController rendering(Scene scene, RenderSettings settings, int stopAt, Consumer<Frame> sink) {
         return new RenderController(scene, settings, stopAt, RenderJobs::start, sink, RenderJobs.timer(), System::nanoTime);
-    }
-
-    private static int checkStopAt(int n) {
-        if (n < 0) {
-            throw new IllegalArgumentException("stop-at samples per pixel must be >= 0 (0 = never stop), got " + n);
-        }
-        return n;
     }
 
     // --- user actions ------------------------------------------------------------------------
@@ -159,7 +154,7 @@ final class RenderController {
 
     /** Samples per pixel at which to hold, or {@link #UNLIMITED}; raising it continues a finished render. */
     synchronized void setStopAt(int n) {
-        stopAt = checkStopAt(n);
+        stopAt = ViewerOptions.checkStopAt(n);
         if (state == State.DONE && !reachedStop()) {
             state = State.RUNNING;
             goOn();
@@ -176,6 +171,11 @@ final class RenderController {
 
     synchronized void setIntegrator(IntegratorKind integrator) {
         changeSettings(settings.withIntegrator(integrator));
+    }
+
+    /** The feature buffers full-resolution jobs keep (View → Denoise adds its guides); previews keep none. */
+    synchronized void setAovs(Set<Aov> aovs) {
+        changeSettings(settings.withAovs(aovs));
     }
 
     private void changeSettings(RenderSettings s) {
@@ -340,7 +340,7 @@ final class RenderController {
         }
         RenderSettings s = settings.withTimeLimit(java.time.Duration.ZERO);
         if (previewJob) {
-            s = s.withSize(previewSize(s.width()), previewSize(s.height()));
+            s = s.withSize(previewSize(s.width()), previewSize(s.height())).withAovs(Set.of());   // never denoised
         }
         s = s.withSamplesPerPixel(Integer.MAX_VALUE).withSamplesPerPass(1);
         long g = generation;
@@ -372,7 +372,7 @@ final class RenderController {
             }
             samplesPerPixel = spp;
             passes++;
-            frame = new Frame(image, spp, preview, g);
+            frame = new Frame(image, spp, preview, g, job::snapshotBuffers);
         }
         sink.accept(frame);                  // outside the lock: the sink may take its time
         synchronized (this) {

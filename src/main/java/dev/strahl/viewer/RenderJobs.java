@@ -1,9 +1,11 @@
 package dev.strahl.viewer;
 
+import dev.strahl.render.RenderBuffers;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.scene.Scene;
+import java.util.Optional;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
@@ -26,6 +28,14 @@ final class RenderJobs {
         void resume();
 
         long samplesDone();
+
+        /** {@link RenderJob#snapshotBuffers()}: the last pass's buffers while the film holds exactly that pass. */
+        Optional<RenderBuffers> snapshotBuffers();
+    }
+
+    /** The buffers of a frame's pass, copied when asked for: present while the job's film still holds that pass. */
+    interface Buffers {
+        Optional<RenderBuffers> get();
     }
 
     /** Starts a job that reports its passes to {@code listener}. */
@@ -63,13 +73,23 @@ final class RenderJobs {
             public long samplesDone() {
                 return job.samplesDone();
             }
+
+            @Override
+            public Optional<RenderBuffers> snapshotBuffers() {
+                return job.snapshotBuffers();
+            }
         };
     }
 
     /** A scheduler on one daemon thread ("strahl-viewer-timer"). */
     static Scheduler timer() {
+        return timer("strahl-viewer-timer");
+    }
+
+    /** A scheduler on one daemon thread of this name. */
+    static Scheduler timer(String threadName) {
         ScheduledExecutorService timer = Executors.newSingleThreadScheduledExecutor(r -> {
-            Thread t = new Thread(r, "strahl-viewer-timer");
+            Thread t = new Thread(r, threadName);
             t.setDaemon(true);
             return t;
         });

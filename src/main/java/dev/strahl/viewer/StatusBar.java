@@ -13,7 +13,8 @@ import javax.swing.UIManager;
 
 /**
  * The line under the image: state, samples per pixel, render time, samples per second, film
- * resolution, and the integrator with its max depth and sampling. Updated on the event dispatch thread by the viewer's timer.
+ * resolution, and the integrator with its max depth and sampling; with View → Denoise on, whether the
+ * image shown is denoised and at how many samples per pixel. Updated on the event dispatch thread by the viewer's timer.
  */
 final class StatusBar extends JPanel {
     private final JLabel state = label("Starting");
@@ -22,28 +23,36 @@ final class StatusBar extends JPanel {
     private final JLabel rate = label("–");
     private final JLabel size = label("");
     private final JLabel integrator = label("");
+    private final JLabel denoise = label("");
+    private final JSeparator denoiseSeparator;
 
     StatusBar() {
         super(new FlowLayout(FlowLayout.LEADING, 8, 2));
         setBorder(BorderFactory.createMatteBorder(1, 0, 0, 0, UIManager.getColor("Separator.foreground")));
-        JLabel[] parts = {state, spp, time, rate, size, integrator};
+        JLabel[] parts = {state, spp, time, rate, size, integrator, denoise};
+        JSeparator last = null;
         for (int i = 0; i < parts.length; i++) {
             if (i > 0) {
-                add(new JSeparator(SwingConstants.VERTICAL) {
+                last = new JSeparator(SwingConstants.VERTICAL) {
                     @Override
                     public java.awt.Dimension getPreferredSize() {
                         return new java.awt.Dimension(1, 14);
                     }
-                });
+                };
+                add(last);
             }
             add(parts[i]);
         }
+        denoiseSeparator = last;
+        denoiseSeparator.setVisible(false);
+        denoise.setVisible(false);
         state.setToolTipText("Rendering, paused, done (reached the stop-at count) or previewing a camera move");
         spp.setToolTipText("Samples per pixel accumulated (and the stop-at count)");
         time.setToolTipText("Render time of this image, pauses excluded");
         rate.setToolTipText("Camera samples per second");
         size.setToolTipText("Film resolution in pixels");
         integrator.setToolTipText("Integrator, max depth and hemisphere sampling");
+        denoise.setToolTipText("View → Denoise (N): whether the image shown is denoised, and its samples per pixel");
     }
 
     private static JLabel label(String text) {
@@ -59,11 +68,18 @@ final class StatusBar extends JPanel {
         integrator.setText(integratorText(s.integrator(), s.maxDepth(), s.hemisphere()));
     }
 
+    /** With Denoise on, says whether the image {@code shown} is denoised; off, says nothing. */
+    void showDenoise(boolean on, FramePresenter.Shown shown) {
+        denoise.setText(on ? denoiseText(shown) : "");
+        denoise.setVisible(on);
+        denoiseSeparator.setVisible(on);
+    }
+
     /** The whole line as text, as a user reads it. */
     String text() {
         StringBuilder b = new StringBuilder();
-        for (JLabel l : new JLabel[] {state, spp, time, rate, size, integrator}) {
-            if (!l.getText().isEmpty()) {
+        for (JLabel l : new JLabel[] {state, spp, time, rate, size, integrator, denoise}) {
+            if (l.isVisible() && !l.getText().isEmpty()) {
                 b.append(b.length() > 0 ? " | " : "").append(l.getText());
             }
         }
@@ -80,6 +96,14 @@ final class StatusBar extends JPanel {
             case DONE -> "Done";
             case CLOSED -> "Closed";
         };
+    }
+
+    /** "denoised, 16 spp" when the image shown is the denoiser's, else "not denoised yet" (previews never are). */
+    static String denoiseText(FramePresenter.Shown shown) {
+        if (shown != null && shown.denoised()) {
+            return "denoised, " + shown.frame().samplesPerPixel() + " spp";
+        }
+        return shown != null && shown.frame().preview() ? "preview not denoised" : "not denoised yet";
     }
 
     static String sppText(int spp, int stopAt) {

@@ -17,7 +17,8 @@ import javax.swing.SwingUtilities;
  * {@code Viewer.open(options).awaitClosed()}.
  *
  * <p>Threads: the render job's threads render and report passes to a {@link RenderController};
- * a {@link FramePresenter} thread tone-maps the newest pass; the event dispatch thread only paints
+ * with View → Denoise on, a {@link LiveDenoiser} thread denoises passes now and then; a
+ * {@link FramePresenter} thread tone-maps the newest pass; the event dispatch thread only paints
  * finished images and handles input, and never waits for rendering. Closing the window cancels the
  * render at once.
  *
@@ -29,13 +30,15 @@ public final class Viewer {
 
     private final RenderController controller;
     private final FramePresenter presenter;
+    private final LiveDenoiser denoiser;
     private final CountDownLatch closed = new CountDownLatch(1);
     private final AtomicBoolean closing = new AtomicBoolean();
     private volatile ViewerFrame ui;
 
-    private Viewer(RenderController controller, FramePresenter presenter) {
+    private Viewer(RenderController controller, FramePresenter presenter, LiveDenoiser denoiser) {
         this.controller = controller;
         this.presenter = presenter;
+        this.denoiser = denoiser;
     }
 
     /**
@@ -88,8 +91,9 @@ public final class Viewer {
         mark("opening");
         SceneFiles.Opened opened = SceneFiles.open(options.scene(), options, filmCheck);
         FramePresenter presenter = new FramePresenter();
-        RenderController controller = RenderController.rendering(opened.scene(), opened.settings(), options.stopAt(), presenter);
-        Viewer viewer = new Viewer(controller, presenter);
+        LiveDenoiser denoiser = LiveDenoiser.of(presenter);
+        RenderController controller = RenderController.rendering(opened.scene(), opened.settings(), options.stopAt(), denoiser);
+        Viewer viewer = new Viewer(controller, presenter, denoiser);
         if (TRACE) {
             presenter.onShown(viewer::trace);
         }
@@ -126,7 +130,7 @@ public final class Viewer {
         if (options.scene() != null) {
             recent.add(options.scene());
         }
-        ViewerFrame frame = new ViewerFrame(controller, presenter, opened, file -> SceneFiles.open(file, options, filmCheck), recent,
+        ViewerFrame frame = new ViewerFrame(controller, presenter, denoiser, opened, file -> SceneFiles.open(file, options, filmCheck), recent,
                 this::close);
         if (TRACE) {
             AtomicBoolean first = new AtomicBoolean(true);
@@ -163,6 +167,7 @@ public final class Viewer {
             return;
         }
         controller.close();
+        denoiser.close();
         presenter.close();
         ViewerFrame frame = ui;
         if (frame != null) {
@@ -191,6 +196,10 @@ public final class Viewer {
 
     FramePresenter presenter() {
         return presenter;
+    }
+
+    LiveDenoiser denoiser() {
+        return denoiser;
     }
 
     ViewerFrame ui() {

@@ -14,6 +14,7 @@ import javax.swing.AbstractButton;
 import javax.swing.Action;
 import javax.swing.Icon;
 import javax.swing.InputMap;
+import javax.swing.JCheckBoxMenuItem;
 import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JMenu;
@@ -21,6 +22,7 @@ import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
 import javax.swing.JOptionPane;
 import javax.swing.JRootPane;
+import javax.swing.JToggleButton;
 import javax.swing.JToolBar;
 import javax.swing.KeyStroke;
 
@@ -40,6 +42,7 @@ final class ViewerActions {
 
     private final RenderController controller;
     private final FramePresenter presenter;
+    private final LiveDenoiser denoiser;
     private final FileActions files;
     private final JRootPane root;
 
@@ -49,6 +52,8 @@ final class ViewerActions {
     final Action brighter;
     final Action darker;
     final Action normalExposure;
+    /** View → Denoise, a check box: its {@link Action#SELECTED_KEY} is the state. */
+    final Action denoise;
     final Action controls;
     final Action quit;
     final Choice<IntegratorKind> integrator;
@@ -57,9 +62,11 @@ final class ViewerActions {
     final Choice<Integer> stopAt;
     private final JLabel exposureLabel = new JLabel(StatusBar.exposureText(0));
 
-    ViewerActions(RenderController controller, FramePresenter presenter, FileActions files, JRootPane root, Runnable onQuit) {
+    ViewerActions(RenderController controller, FramePresenter presenter, LiveDenoiser denoiser, FileActions files, JRootPane root,
+                  Runnable onQuit) {
         this.controller = controller;
         this.presenter = presenter;
+        this.denoiser = denoiser;
         this.files = files;
         this.root = root;
         pause = action("Pause", Icons.pause(), "Pause or resume rendering; the samples so far are kept",
@@ -74,6 +81,10 @@ final class ViewerActions {
                 KeyStroke.getKeyStroke(KeyEvent.VK_MINUS, 0), e -> exposureBy(-EXPOSURE_STEP));
         normalExposure = action("Normal exposure", null, "Display exposure back to 0",
                 KeyStroke.getKeyStroke(KeyEvent.VK_0, 0), e -> presenter.setExposure(0));
+        denoise = action("Denoise", null, "Show the render denoised as it goes on (restarts it once if it lacks the albedo,"
+                + " normal and depth buffers)", KeyStroke.getKeyStroke(KeyEvent.VK_N, 0),
+                e -> setDenoise(denoiseChecked()));
+        denoise.putValue(Action.SELECTED_KEY, false);
         controls = action("Controls", null, "Mouse and keyboard controls", KeyStroke.getKeyStroke(KeyEvent.VK_F1, 0),
                 e -> JOptionPane.showMessageDialog(root, CONTROLS, "strahl viewer: controls", JOptionPane.PLAIN_MESSAGE));
         quit = action("Quit", null, "Close the viewer", KeyStroke.getKeyStroke(KeyEvent.VK_Q, menuMask()), e -> onQuit.run());
@@ -100,6 +111,7 @@ final class ViewerActions {
             <tr><td><b>H</b></td><td>cosine / uniform hemisphere sampling</td></tr>
             <tr><td><b>T / Shift+T</b></td><td>next / previous stop-at count</td></tr>
             <tr><td><b>+ / − / 0</b></td><td>exposure up / down / back to 0 (display only)</td></tr>
+            <tr><td><b>N</b></td><td>denoise on / off</td></tr>
             <tr><td><b>Ctrl+O / Ctrl+S / Ctrl+Q</b></td><td>open scene / save image / quit</td></tr>
             </table></html>""";
 
@@ -132,6 +144,26 @@ final class ViewerActions {
             k = "+";
         }
         return mods.isEmpty() ? k : mods + "+" + k;
+    }
+
+    /**
+     * Turns View → Denoise on or off. On, every full-resolution job keeps the denoiser's guides
+     * (albedo, normal, depth); a render without them starts again with them (its samples are lost),
+     * one that has them goes on and its last frame is denoised if it can still be. Off, the
+     * buffers stay until a scene is opened; the noisy frames are shown again at once.
+     */
+    void setDenoise(boolean on) {
+        denoise.putValue(Action.SELECTED_KEY, on);
+        boolean restart = on && !controller.settings().aovs().containsAll(LiveDenoiser.GUIDES);
+        if (restart) {
+            controller.setAovs(LiveDenoiser.withGuides(controller.settings().aovs()));
+        }
+        denoiser.setEnabled(on, !restart);
+    }
+
+    /** The check box's state (the menu item or the toolbar button changes it before its action runs). */
+    private boolean denoiseChecked() {
+        return Boolean.TRUE.equals(denoise.getValue(Action.SELECTED_KEY));
     }
 
     private void exposureBy(double stops) {
@@ -186,6 +218,10 @@ final class ViewerActions {
         view.add(item(darker));
         view.add(item(normalExposure));
         view.add(ToneMenu.menu(presenter));
+        view.addSeparator();
+        JCheckBoxMenuItem denoiseItem = new JCheckBoxMenuItem(denoise);
+        denoiseItem.setToolTipText(null);
+        view.add(denoiseItem);
         bar.add(view);
 
         JMenu help = new JMenu("Help");
@@ -251,6 +287,10 @@ final class ViewerActions {
         exposureLabel.setToolTipText("Display exposure in stops: display only, rendering goes on (+, −, 0)");
         bar.add(exposureLabel);
         bar.add(button(brighter));
+        bar.addSeparator();
+        JToggleButton denoiseButton = new JToggleButton(denoise);
+        denoiseButton.setFocusable(false);
+        bar.add(denoiseButton);
         return bar;
     }
 

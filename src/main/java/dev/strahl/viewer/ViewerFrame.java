@@ -26,6 +26,8 @@ final class ViewerFrame {
     final FileActions files;
     final ViewerActions actions;
     private final RenderController controller;
+    private final FramePresenter presenter;
+    private final LiveDenoiser denoiser;
     private final Timer timer;
     /** The film size the current scene asks for (its settings' size before the window fits it). */
     private int askedWidth;
@@ -35,10 +37,12 @@ final class ViewerFrame {
      * The window for {@code opened}, which {@code controller} renders; {@code opener} loads the
      * scenes opened from the window (with the file chooser, from {@code recent} or dropped onto it).
      */
-    ViewerFrame(RenderController controller, FramePresenter presenter, SceneFiles.Opened opened, FileActions.Opener opener,
-                RecentFiles recent, Runnable onClose) {
+    ViewerFrame(RenderController controller, FramePresenter presenter, LiveDenoiser denoiser, SceneFiles.Opened opened,
+                FileActions.Opener opener, RecentFiles recent, Runnable onClose) {
         assert SwingUtilities.isEventDispatchThread();
         this.controller = controller;
+        this.presenter = presenter;
+        this.denoiser = denoiser;
         askedWidth = opened.settings().width();
         askedHeight = opened.settings().height();
         frame = new JFrame(title(opened.file()));
@@ -55,7 +59,7 @@ final class ViewerFrame {
         SceneDrop drop = new SceneDrop(files::openScene);
         frame.setTransferHandler(drop);
         image.setTransferHandler(drop);
-        actions = new ViewerActions(controller, presenter, files, frame.getRootPane(), onClose);
+        actions = new ViewerActions(controller, presenter, denoiser, files, frame.getRootPane(), onClose);
         CameraMouse.attach(image, controller);
 
         frame.setJMenuBar(actions.menuBar());
@@ -81,10 +85,13 @@ final class ViewerFrame {
      * Shows a scene opened from the window, with its settings. When it asks for another film size
      * than the scene before, the window is resized to show the film at that size (unless it is
      * maximised); otherwise the window keeps its size. Either way the film takes the new scene's
-     * aspect, letterboxed in the window.
+     * aspect, letterboxed in the window. With Denoise on, it renders the denoiser's guides too.
      */
     void showScene(SceneFiles.Opened opened) {
         RenderSettings s = opened.settings();
+        if (denoiser.enabled()) {
+            s = s.withAovs(LiveDenoiser.withGuides(s.aovs()));
+        }
         boolean newSize = s.width() != askedWidth || s.height() != askedHeight;
         askedWidth = s.width();
         askedHeight = s.height();
@@ -101,6 +108,7 @@ final class ViewerFrame {
     void refreshStatus() {
         RenderController.Status s = controller.status();
         status.update(s);
+        status.showDenoise(denoiser.enabled(), presenter.shown());
         actions.refresh(s);
     }
 

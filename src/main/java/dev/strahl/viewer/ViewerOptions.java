@@ -48,9 +48,7 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
     static final Set<Setting> NEVER_FROM_FILE = Set.of(Setting.SAMPLES_PER_PIXEL);
 
     public ViewerOptions {
-        if (stopAt < 0) {
-            throw new IllegalArgumentException("stop-at samples per pixel must be >= 0 (0 = never stop), got " + stopAt);
-        }
+        checkStopAt(stopAt);
         Objects.requireNonNull(hemisphere, "hemisphere");
         Objects.requireNonNull(integrator, "integrator");
         Objects.requireNonNull(theme, "theme");
@@ -89,6 +87,14 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
      */
     public static ViewerOptions defaults() {
         return new ViewerOptions(null, 512, 512, 1024, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.SYSTEM, Set.of());
+    }
+
+    /** Returns {@code n} if it is a stop-at count (0 = never stop, or a positive count of samples per pixel). */
+    static int checkStopAt(int n) {
+        if (n < 0) {
+            throw new IllegalArgumentException("stop-at samples per pixel must be >= 0 (0 = never stop), got " + n);
+        }
+        return n;
     }
 
     /** The render settings these options describe, without a scene file (validated by {@link RenderSettings}). */

@@ -7,6 +7,7 @@ import dev.strahl.image.Image;
 import dev.strahl.image.ToneMapping;
 import dev.strahl.film.Tonemap;
 import java.awt.image.BufferedImage;
+import java.util.Optional;
 import java.util.concurrent.Semaphore;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
@@ -28,7 +29,7 @@ class FramePresenterTest {
 
     /** A 2×1 image: a grey of radiance {@code v} and black. */
     static RenderController.Frame frame(float v, long generation) {
-        return new RenderController.Frame(new Image(2, 1, new float[] {v, v, v, 0, 0, 0}), 1, false, generation);
+        return new RenderController.Frame(new Image(2, 1, new float[] {v, v, v, 0, 0, 0}), 1, false, generation, Optional::empty);
     }
 
     FramePresenter.Shown awaitShown() throws InterruptedException {
@@ -95,6 +96,35 @@ class FramePresenterTest {
         assertThat(presenter.latest().generation()).isEqualTo(3);
         assertThat(shown.tryAcquire(200, TimeUnit.MILLISECONDS)).isFalse();
         assertThat(red(presenter.shown().image(), 0)).isEqualTo(Tonemap.toSrgb8(0.5f));
+    }
+
+    /** View → Denoise: the denoised frame of the job on screen is shown (and would be saved) instead of its noisy frames. */
+    @Test
+    void withDenoiseOnTheDenoisedFrameOfTheCurrentJobIsShown() throws Exception {
+        presenter.accept(frame(0.2f, 1));
+        awaitShown();
+        presenter.setDenoised(true);
+        presenter.acceptDenoised(frame(0.4f, 1));
+        FramePresenter.Shown s = awaitShown();
+        assertThat(s.denoised()).isTrue();
+        assertThat(red(s.image(), 0)).isEqualTo(Tonemap.toSrgb8(0.4f));
+        presenter.accept(frame(0.3f, 1));
+        assertThat(presenter.pick().denoised()).as("a newer noisy frame of the same job waits for its denoise").isTrue();
+        assertThat(presenter.pick().frame().image().get(0, 0, 0)).isEqualTo(0.4f);
+
+        presenter.setDenoised(false);
+        s = awaitShown();
+        assertThat(s.denoised()).isFalse();
+        assertThat(red(s.image(), 0)).isEqualTo(Tonemap.toSrgb8(0.3f));
+        presenter.setDenoised(true);
+        assertThat(awaitShown().denoised()).isTrue();
+
+        presenter.accept(frame(0.6f, 2));
+        s = awaitShown();
+        assertThat(s.denoised()).as("a new job: noisy until its first denoised frame").isFalse();
+        assertThat(red(s.image(), 0)).isEqualTo(Tonemap.toSrgb8(0.6f));
+        presenter.acceptDenoised(frame(0.5f, 1));
+        assertThat(presenter.pick().denoised()).as("a late result of the old job is dropped").isFalse();
     }
 
     @Test

@@ -4,7 +4,9 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import dev.strahl.image.Image;
+import dev.strahl.render.Aov;
 import dev.strahl.render.IntegratorKind;
+import dev.strahl.render.RenderBuffers;
 import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.HemisphereSampling;
@@ -12,7 +14,10 @@ import dev.strahl.scene.Scene;
 import dev.strahl.io.SceneLoader;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.List;
+import java.util.Optional;
+import java.util.Set;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.BeforeAll;
@@ -30,6 +35,8 @@ class RenderControllerTest {
         final RenderListener listener;
         volatile boolean cancelled;
         volatile boolean paused;
+        /** What {@link #snapshotBuffers()} answers. */
+        volatile Optional<RenderBuffers> buffers = Optional.empty();
 
         FakeJob(Scene scene, RenderSettings settings, RenderListener listener) {
             this.scene = scene;
@@ -60,6 +67,11 @@ class RenderControllerTest {
         @Override
         public long samplesDone() {
             return 1000;
+        }
+
+        @Override
+        public Optional<RenderBuffers> snapshotBuffers() {
+            return buffers;
         }
     }
 
@@ -307,6 +319,34 @@ class RenderControllerTest {
         assertThat(controller.status().integrator()).isEqualTo(IntegratorKind.WHITTED);
         assertThat(jobs).hasSize(8);
         assertThat(jobs.subList(0, 7)).allSatisfy(j -> assertThat(j.cancelled).isTrue());
+    }
+
+    /** View → Denoise: feature buffers for full-resolution jobs (a restart only when they change), never for previews. */
+    @Test
+    void featureBuffersRestartOnlyWhenTheyChangeAndPreviewsKeepNone() {
+        Set<Aov> all = EnumSet.allOf(Aov.class);
+        controller.setAovs(all);
+        FakeJob full = glance();
+        assertThat(full.settings.aovs()).isEqualTo(all);
+        assertThat(jobs.get(jobs.size() - 2).settings.aovs()).as("the glance").isEmpty();
+        controller.setAovs(EnumSet.allOf(Aov.class));
+        assertThat(job()).as("the same buffers: no restart").isSameAs(full);
+        controller.moveCamera(c -> c.orbit(0.1, 0));
+        assertThat(job().settings.aovs()).as("a preview").isEmpty();
+        timer.runAll();
+        assertThat(job().settings.aovs()).as("full resolution again").isEqualTo(all);
+    }
+
+    /** A frame's buffers are its job's, asked for when the frame's user wants them (the denoiser). */
+    @Test
+    void aFramesBuffersAreThoseOfItsJob() {
+        FakeJob full = job();
+        full.pass(1);
+        RenderController.Frame f = frames.get(frames.size() - 1);
+        assertThat(f.buffers().get()).isEmpty();
+        RenderBuffers b = RenderBuffers.of(new dev.strahl.image.Image(64, 48, new float[3 * 64 * 48]));
+        full.buffers = Optional.of(b);
+        assertThat(f.buffers().get()).containsSame(b);
     }
 
     @Test

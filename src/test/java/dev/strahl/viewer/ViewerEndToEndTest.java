@@ -187,6 +187,99 @@ class ViewerEndToEndTest {
         }
     }
 
+    /**
+     * View → Denoise with its key N: the render restarts with the denoiser's guides, the window
+     * shows the denoised image (the status bar says so, at the stop-at count too, where the render
+     * holds), far smoother than the noisy one and still the Cornell Box; saving writes that image;
+     * N again shows the noisy image.
+     */
+    @Test
+    @Timeout(value = 60, unit = TimeUnit.SECONDS)
+    void theDenoiseToggleShowsAndSavesTheDenoisedImage(@TempDir Path dir) throws Exception {
+        assumeTrue(!GraphicsEnvironment.isHeadless(), "no display (headless): run under xvfb-run to include this test");
+        ViewerOptions options = new ViewerOptions(Path.of("scenes", "cornell-box.json"), 96, 96, 8, -1, HemisphereSampling.COSINE,
+                0, 1, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of());
+        Viewer viewer = Viewer.open(options);
+        try {
+            ViewerFrame ui = viewer.ui();
+            RenderController c = viewer.controller();
+            Robot robot = new Robot();
+            waitFor("a full-resolution pass", 20, () -> !c.status().preview() && c.status().samplesPerPixel() >= 1);
+            long generation = c.status().generation();
+            assertThat(c.settings().aovs()).isEmpty();
+
+            pressKey(robot, ui, java.awt.event.KeyEvent.VK_N);
+            waitFor("Denoise on", 5, () -> viewer.denoiser().enabled());
+            assertThat(onEdt(() -> ui.actions.denoise.getValue(javax.swing.Action.SELECTED_KEY))).isEqualTo(true);
+            assertThat(c.status().generation()).as("restarted with the guides").isGreaterThan(generation);
+            assertThat(c.settings().aovs()).containsAll(LiveDenoiser.GUIDES);
+            waitFor("the denoised image at the stop-at count, 8 spp", 30, () -> {
+                FramePresenter.Shown s = viewer.presenter().shown();
+                return s != null && s.denoised() && s.frame().samplesPerPixel() == 8;
+            });
+            waitFor("the status bar says so", 5, () -> statusText(ui).contains("denoised, 8 spp"));
+            assertThat(c.status().state()).isEqualTo(RenderController.State.DONE);
+
+            FramePresenter.Pick shown = viewer.presenter().pick();
+            assertThat(shown.denoised()).isTrue();
+            dev.strahl.image.Image noisy = viewer.presenter().latest().image();
+            assertThat(roughness(shown.frame().image())).as("denoised: far smoother than the noisy image")
+                    .isLessThan(0.5 * roughness(noisy));
+            robot.waitForIdle();
+            robot.delay(300);
+            assertShowsTheCornellBox(capture(robot, ui));
+
+            Path saved = dir.resolve("denoised.pfm");
+            SwingUtilities.invokeAndWait(() -> ui.files.saveImage(viewer.presenter().pick(), saved));
+            waitFor("the saved file", 10, () -> Files.exists(saved));
+            assertThat(dev.strahl.io.image.PfmReader.read(saved)).as("saving writes the denoised image").isEqualTo(shown.frame().image());
+
+            pressKey(robot, ui, java.awt.event.KeyEvent.VK_N);
+            waitFor("Denoise off", 5, () -> !viewer.denoiser().enabled());
+            waitFor("the noisy image again", 5, () -> !viewer.presenter().shown().denoised());
+            waitFor("the status bar says nothing of denoising", 5, () -> !statusText(ui).contains("denoised"));
+        } finally {
+            viewer.close();
+        }
+    }
+
+    /** A key typed on the window (through the X server, as a user would). */
+    static void pressKey(Robot robot, ViewerFrame ui, int key) throws Exception {
+        SwingUtilities.invokeAndWait(() -> {
+            ui.frame.toFront();
+            ui.image.requestFocusInWindow();
+        });
+        robot.waitForIdle();
+        robot.keyPress(key);
+        robot.keyRelease(key);
+        robot.waitForIdle();
+    }
+
+    static String statusText(ViewerFrame ui) {
+        try {
+            return onEdt(ui.status::text);
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    /** Mean absolute difference of the luminance of horizontally neighbouring pixels, over the back wall. */
+    static double roughness(dev.strahl.image.Image img) {
+        double s = 0;
+        int n = 0;
+        for (int y = (int) (0.3 * img.height()); y < 0.6 * img.height(); y++) {
+            for (int x = (int) (0.35 * img.width()); x < 0.65 * img.width(); x++) {
+                s += Math.abs(lum(img, x + 1, y) - lum(img, x, y));
+                n++;
+            }
+        }
+        return s / n;
+    }
+
+    static double lum(dev.strahl.image.Image img, int x, int y) {
+        return 0.2126 * img.get(x, y, 0) + 0.7152 * img.get(x, y, 1) + 0.0722 * img.get(x, y, 2);
+    }
+
     /** Opens {@code file} from the window, waits for the error dialog, closes it and returns its message. */
     private static String errorDialogOnOpening(ViewerFrame ui, Path file) throws Exception {
         SwingUtilities.invokeLater(() -> ui.files.openScene(file));
