@@ -305,7 +305,7 @@ final class RenderCommand implements Callable<Integer> {
         }
         if (!quiet) {
             err.println(String.format(Locale.ROOT, "strahl: resuming %s at %d spp (%.1f s rendered before)", resume,
-                    job.completedSamplesPerPixel(), job.earlierSeconds()));
+                    job.earlierSamplesPerPixel(), job.earlierSeconds()));
             err.flush();
         }
         return job;

@@ -113,7 +113,7 @@ public final class RenderCluster implements AutoCloseable {
             channels.add(channel);
         }
         try {
-            return RenderJob.onCluster(scene, settings, listener, checkpoint, film -> new ClusterPasses(film, channel));
+            return RenderJob.launch(scene, settings, listener, checkpoint, film -> new ClusterPasses(film, channel));
         } catch (CheckpointException | IOException | RuntimeException e) {
             channel.close();
             throw e;

@@ -52,6 +52,7 @@ public final class RenderJob implements AutoCloseable {
     /** Figures of the renders a resumed job continues: NaN samples and seconds. */
     private final long earlierInvalid;
     private final double earlierSeconds;
+    private final int earlierSpp;
     private final CompletableFuture<RenderStats> result = new CompletableFuture<>();
     private volatile int completedSpp;
     private final long restoredSamples;              // held by a resumed film before this job began
@@ -79,7 +80,7 @@ public final class RenderJob implements AutoCloseable {
         this.workers = cluster != null ? cluster.apply(film)
                 : new RenderWorkers(film, rays, integrator, features ? () -> new FeatureTracer(world, settings.cullBackFaces()) : null,
                         settings.seed(), settings.effectiveThreads(), settings.stripes(), "strahl-render-" + number);
-        this.completedSpp = Math.min(film.minSampleCount(), settings.samplesPerPixel());   // 0, unless the film was restored
+        this.completedSpp = this.earlierSpp = Math.min(film.minSampleCount(), settings.samplesPerPixel());   // 0, unless restored
         this.passes = new PassBuffers(film, settings.aovs());
         this.restoredSamples = film.totalSamples();
     }
@@ -129,18 +130,15 @@ public final class RenderJob implements AutoCloseable {
      */
     public static RenderJob resumeFrom(Path checkpoint, Scene scene, RenderSettings settings, RenderListener listener)
             throws CheckpointException, IOException {
-        Objects.requireNonNull(checkpoint, "checkpoint");
-        Checkpoint identity = Checkpoint.of(scene, settings);
-        Checkpoint.Restored restored = identity.restore(checkpoint);
-        return launch(new RenderJob(scene, settings, Integrators.create(World.of(scene), settings), listener, identity, restored, null));
+        return launch(scene, settings, listener, Objects.requireNonNull(checkpoint, "checkpoint"), null);
     }
 
     /**
-     * A render whose passes the members of a cluster render ({@link RenderCluster}): a fresh one,
-     * or with {@code checkpoint} non-null the one saved there.
+     * A fresh render, or with {@code checkpoint} non-null the one saved there, whose passes are
+     * rendered here or, with {@code runner} non-null, by the members of a cluster ({@link RenderCluster}).
      */
-    static RenderJob onCluster(Scene scene, RenderSettings settings, RenderListener listener, Path checkpoint,
-                               Function<Film, PassRunner> runner) throws CheckpointException, IOException {
+    static RenderJob launch(Scene scene, RenderSettings settings, RenderListener listener, Path checkpoint,
+                            Function<Film, PassRunner> runner) throws CheckpointException, IOException {
         Checkpoint identity = Checkpoint.of(scene, settings);
         Checkpoint.Restored restored = checkpoint != null ? identity.restore(checkpoint) : null;
         return launch(new RenderJob(scene, settings, Integrators.create(World.of(scene), settings), listener, identity, restored, runner));
@@ -174,11 +172,9 @@ public final class RenderJob implements AutoCloseable {
     }
 
     /**
-     * The image of the last completed pass ({@link #snapshot()}) with its variance and the feature
-     * buffers of the settings, for a {@link Denoiser} while the render goes on. Copied from the film
-     * when asked for (as long as about four snapshots take), and only while it holds exactly that
-     * pass: in a listener (the workers wait for it), during a pause begun in one, and after the
-     * render (as {@link #awaitBuffers()}); not while a pass is being rendered, nor paused in one.
+     * The last completed pass's image ({@link #snapshot()}), variance and feature buffers, for a
+     * {@link Denoiser} while the render goes on: copied from the film when asked for, only while it
+     * holds exactly that pass (in a listener, in a pause begun in one, after the render).
      *
      * @return the buffers, or empty while a pass is being rendered (or paused in the middle of one)
      */
@@ -232,6 +228,15 @@ public final class RenderJob implements AutoCloseable {
      */
     public double elapsedSeconds() {
         return clock.seconds();
+    }
+
+    /**
+     * Samples per pixel this job began with: those of the renders whose checkpoint it resumed.
+     *
+     * @return the count, 0 for a job that was started afresh
+     */
+    public int earlierSamplesPerPixel() {
+        return earlierSpp;
     }
 
     /**

@@ -167,6 +167,9 @@ class CheckpointTest {
         assertThat(at8.samplesPerPixel()).isEqualTo(8);
         try (RenderJob resumed = RenderJob.resumeFrom(file, cornell, SETTINGS, new RenderListener() {})) {
             assertSameBits(TestJobs.awaitFilm(resumed), uninterrupted);
+            // what it began with, not what it has reached (render --resume's message; it once raced with the first pass)
+            assertThat(resumed.earlierSamplesPerPixel()).isEqualTo(8);
+            assertThat(resumed.completedSamplesPerPixel()).isEqualTo(SETTINGS.samplesPerPixel()).isNotEqualTo(8);
         }
     }
 
