@@ -122,7 +122,8 @@ public class DenoiseCost {
             started.countDown();
             st = job.awaitStats();
         }
-        long denoiseCpu = cpu("ForkJoinPool.commonPool", "strahl-viewer-denoise") - denoiseCpu0;
+        // only the denoise runs use those threads; elsewhere an idle pool thread that ended would make the difference negative
+        long denoiseCpu = mode.equals("denoise") ? cpu("ForkJoinPool.commonPool", "strahl-viewer-denoise") - denoiseCpu0 : 0;
         Thread.sleep(300);
         System.out.printf(Locale.ROOT, "%s %-8s pass %d: %.2f s, %.3f M samples/s, in listener %.0f ms (%.1f %% of the time; cpu %.0f ms),"
                 + " render cpu %.1f s, denoiser cpu %.1f s (%.1f %% of the render's), denoised %d%n", label, mode,
