@@ -31,7 +31,7 @@ import net.jqwik.api.RandomGenerator;
  * and the seed {@code -Dstrahl.fuzz.seed} (default: a fixed one, so a run is repeatable).
  */
 public final class Fuzzer {
-    public static final int DEFAULT_SECONDS = 10;
+    public static final int DEFAULT_SECONDS = 7;
     private static final Duration PER_INPUT = Duration.ofSeconds(5);
     private static final Duration SHRINK_BUDGET = Duration.ofSeconds(10);
     private static final int MAX_FINDINGS = 5;
