@@ -9,7 +9,7 @@ import org.joml.Vector3d;
  * glTF cameras: the first perspective camera placed by a node becomes the scene's camera. A glTF
  * camera looks down its node's −Z with +Y up (§3.10.1); {@code yfov} is the vertical field of
  * view in radians, as strahl's; {@code aspectRatio} is handed on to set the film's shape when no
- * size is given. {@code znear}/{@code zfar} mean nothing to a ray tracer. Orthographic cameras are
+ * size is given, and the side not given when only one is. {@code znear}/{@code zfar} mean nothing to a ray tracer. Orthographic cameras are
  * refused with a note (strahl has none), and so is a camera whose node scales it to nothing.
  */
 final class GltfCameras {

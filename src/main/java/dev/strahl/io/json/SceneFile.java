@@ -51,8 +51,8 @@ public record SceneFile(Scene scene, SceneSettings settings) {
             SceneSettings settings = SceneSettings.NONE;
             if (asset.aspectRatio() > 0) {
                 int width = RenderSettings.defaults().width();
-                int height = Math.max(1, Math.min(RenderSettings.MAX_SIZE, (int) Math.round(width / asset.aspectRatio())));
-                settings = new SceneSettings(width, height, null, null, null, null, null, null, null, null);
+                settings = new SceneSettings(width, SceneSettings.filmSide(width / asset.aspectRatio()), null, null, null, null,
+                        null, null, null, null, null, asset.aspectRatio());
             }
             return new SceneFile(builder.build(), settings);
         }

@@ -27,13 +27,21 @@ import java.util.Set;
  * @param photons         photons per iteration for the photon mapper, or null
  * @param photonRadius    the photon mapper's initial gather radius in scene units (0 = automatic), or null
  * @param aovs            the feature buffers to keep ({@code film.aovs}), or null
+ * @param aspectRatio     the film's width / height to keep when a command line gives only one of
+ *                        them (a glTF camera's {@code aspectRatio}), or null: each on its own
  */
 public record SceneSettings(Integer width, Integer height, Integer samplesPerPixel, Integer maxDepth, Long seed,
                             IntegratorKind integrator, Integer lightSamples, HemisphereSampling hemisphere,
-                            Integer photons, Double photonRadius, Set<Aov> aovs) {
+                            Integer photons, Double photonRadius, Set<Aov> aovs, Double aspectRatio) {
 
     public SceneSettings {
         aovs = aovs == null ? null : Set.copyOf(aovs);
+    }
+
+    /** Settings without an aspect ratio to keep. */
+    public SceneSettings(Integer width, Integer height, Integer samplesPerPixel, Integer maxDepth, Long seed, IntegratorKind integrator,
+                         Integer lightSamples, HemisphereSampling hemisphere, Integer photons, Double photonRadius, Set<Aov> aovs) {
+        this(width, height, samplesPerPixel, maxDepth, seed, integrator, lightSamples, hemisphere, photons, photonRadius, aovs, null);
     }
 
     /** Settings without {@code film.aovs}. */
@@ -51,7 +59,7 @@ public record SceneSettings(Integer width, Integer height, Integer samplesPerPix
     }
 
     /** A file that says nothing about rendering (and every OBJ or PLY). */
-    public static final SceneSettings NONE = new SceneSettings(null, null, null, null, null, null, null, null, null, null, null);
+    public static final SceneSettings NONE = new SceneSettings(null, null, null, null, null, null, null, null, null, null, null, null);
 
     public boolean isEmpty() {
         return equals(NONE);
@@ -74,6 +82,10 @@ public record SceneSettings(Integer width, Integer height, Integer samplesPerPix
         }
         if (height != null && !given.contains(Setting.HEIGHT)) {
             s = s.withSize(s.width(), height);
+        }
+        if (aspectRatio != null && given.contains(Setting.WIDTH) != given.contains(Setting.HEIGHT)) {
+            s = given.contains(Setting.WIDTH) ? s.withSize(s.width(), filmSide(s.width() / aspectRatio))
+                    : s.withSize(filmSide(s.height() * aspectRatio), s.height());
         }
         if (samplesPerPixel != null && !given.contains(Setting.SAMPLES_PER_PIXEL)) {
             s = s.withSamplesPerPixel(samplesPerPixel);
@@ -104,6 +116,11 @@ public record SceneSettings(Integer width, Integer height, Integer samplesPerPix
             s = s.withAovs(aovs.isEmpty() ? EnumSet.noneOf(Aov.class) : EnumSet.copyOf(aovs));
         }
         return s.withPhotons(p);
+    }
+
+    /** A film side of about {@code pixels}, within the limits of {@link RenderSettings}. */
+    public static int filmSide(double pixels) {
+        return (int) Math.max(1, Math.min(RenderSettings.MAX_SIZE, Math.round(pixels)));
     }
 
     /**

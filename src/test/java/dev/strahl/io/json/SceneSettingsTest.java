@@ -101,4 +101,26 @@ class SceneSettingsTest {
         assertThat(s.photons().initialRadius()).as("the file says nothing: the command line's").isEqualTo(0.25);
         assertThat(photonOnly.applyTo(COMMAND_LINE, Set.of(Setting.PHOTONS)).photons().photonsPerIteration()).as("--photons given").isEqualTo(5000);
     }
+
+    /**
+     * A glTF camera's aspect ratio: the file's 512×320 film, and with only one side given the
+     * other follows the aspect (a render of a 1.6 camera at --width 320 is 320×200, not 320×320);
+     * both given, or none, as always.
+     */
+    @Test
+    void aCamerasAspectRatioGivesTheSideNotGiven() throws Exception {
+        SceneSettings gltf = SceneFile.load(Path.of("scenes/gltf-showcase.glb")).settings();
+        assertThat(gltf.aspectRatio()).isEqualTo(1.6);
+        RenderSettings base = RenderSettings.defaults();
+        RenderSettings none = gltf.applyTo(base, Set.of());
+        assertThat(new int[] {none.width(), none.height()}).containsExactly(512, 320);
+        RenderSettings width = gltf.applyTo(base.withSize(320, base.height()), Set.of(Setting.WIDTH));
+        assertThat(new int[] {width.width(), width.height()}).containsExactly(320, 200);
+        RenderSettings height = gltf.applyTo(base.withSize(base.width(), 100), Set.of(Setting.HEIGHT));
+        assertThat(new int[] {height.width(), height.height()}).containsExactly(160, 100);
+        RenderSettings both = gltf.applyTo(base.withSize(300, 300), Set.of(Setting.WIDTH, Setting.HEIGHT));
+        assertThat(new int[] {both.width(), both.height()}).containsExactly(300, 300);
+        RenderSettings json = EVERY_KEY.applyTo(base.withSize(100, base.height()), Set.of(Setting.WIDTH));
+        assertThat(json.height()).as("a scene file's film: each side on its own").isEqualTo(160);
+    }
 }
