@@ -1,0 +1,47 @@
+import dev.strahl.io.SceneLoader;
+import dev.strahl.render.Aov;
+import dev.strahl.render.Denoiser;
+import dev.strahl.render.RenderBuffers;
+import dev.strahl.render.RenderJob;
+import dev.strahl.render.RenderSettings;
+import dev.strahl.scene.Scene;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.EnumSet;
+import java.util.Locale;
+
+/**
+ * Wall time of one denoise (issue 18's goal: a 512x512 image in under 1 s on the 2 cores here):
+ * renders the Cornell Box at SIZE² and SPP with all feature buffers, then denoises the same
+ * buffers WARM-UP times untimed and RUNS times timed, nothing else running in the JVM.
+ *
+ *   mvn -B -q -DskipTests package
+ *   java -cp target/strahl.jar docs/bench/DenoiseTime.java [size=512] [spp=16] [runs=9]
+ */
+public class DenoiseTime {
+    public static void main(String[] args) throws Exception {
+        int size = args.length > 0 ? Integer.parseInt(args[0]) : 512;
+        int spp = args.length > 1 ? Integer.parseInt(args[1]) : 16;
+        int runs = args.length > 2 ? Integer.parseInt(args[2]) : 9;
+        Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
+        RenderSettings settings = RenderSettings.defaults().withSize(size, size).withSamplesPerPixel(spp)
+                .withAovs(EnumSet.allOf(Aov.class));
+        RenderBuffers buffers;
+        try (RenderJob job = RenderJob.start(scene, settings)) {
+            buffers = job.awaitBuffers();
+        }
+        Denoiser denoiser = Denoiser.create();
+        for (int i = 0; i < 3; i++) {
+            denoiser.denoise(buffers);
+        }
+        double[] seconds = new double[runs];
+        for (int i = 0; i < runs; i++) {
+            long t0 = System.nanoTime();
+            denoiser.denoise(buffers);
+            seconds[i] = (System.nanoTime() - t0) * 1e-9;
+        }
+        Arrays.sort(seconds);
+        System.out.printf(Locale.ROOT, "denoise %dx%d (%d spp, all feature buffers), %d processors: median %.3f s, min %.3f s, max %.3f s over %d runs%n",
+                size, size, spp, Runtime.getRuntime().availableProcessors(), seconds[runs / 2], seconds[0], seconds[runs - 1], runs);
+    }
+}
