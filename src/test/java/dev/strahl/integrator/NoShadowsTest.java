@@ -2,8 +2,6 @@ package dev.strahl.integrator;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.camera.CameraRays;
-import dev.strahl.geometry.Ray;
 import dev.strahl.image.Image;
 import dev.strahl.image.Rgb;
 import dev.strahl.render.IntegratorKind;
@@ -68,29 +66,12 @@ class NoShadowsTest {
                 .withPhotons(new PhotonParameters(2000, 0)).withThreads(2);
     }
 
-    /** ρ/π · I cosθ / d² integrated over each pixel by 8×8 rays. */
+    /** ρ/π · I cosθ / d² integrated over each pixel. */
     private static Image closedForm() {
-        CameraRays rays = Meshes.rays(CAMERA, SIZE, SIZE);
-        Ray ray = new Ray();
-        float[] rgb = new float[SIZE * SIZE * 3];
-        for (int y = 0; y < SIZE; y++) {
-            for (int x = 0; x < SIZE; x++) {
-                double sum = 0;
-                for (int j = 0; j < 8; j++) {
-                    for (int i = 0; i < 8; i++) {
-                        rays.generate(x + (i + 0.5) / 8, y + (j + 0.5) / 8, ray);
-                        Vector3d p = new Vector3d(ray.d).mul(-ray.o.y / ray.d.y).add(ray.o);
-                        double d2 = p.distanceSquared(LIGHT);
-                        sum += INTENSITY * LIGHT.y / Math.sqrt(d2) / d2;
-                    }
-                }
-                float v = (float) (ALBEDO / Math.PI * sum / 64);
-                for (int c = 0; c < 3; c++) {
-                    rgb[3 * (y * SIZE + x) + c] = v;
-                }
-            }
-        }
-        return new Image(SIZE, SIZE, rgb);
+        return Meshes.floorRadiance(CAMERA, SIZE, ALBEDO, p -> {
+            double d2 = p.distanceSquared(LIGHT);
+            return INTENSITY * LIGHT.y / Math.sqrt(d2) / d2;
+        });
     }
 
     private static double worstRelativeDifference(Image actual, Image expected) {

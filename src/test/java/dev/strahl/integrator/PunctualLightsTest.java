@@ -3,8 +3,6 @@ package dev.strahl.integrator;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import dev.strahl.camera.CameraRays;
-import dev.strahl.geometry.Ray;
 import dev.strahl.image.Image;
 import dev.strahl.image.Rgb;
 import dev.strahl.render.IntegratorKind;
@@ -48,26 +46,9 @@ class PunctualLightsTest {
                 .withPhotons(new PhotonParameters(2000, 0));
     }
 
-    /** ρ/π · E(p) integrated over each pixel by 8×8 rays, E given per point of the floor y = 0. */
+    /** ρ/π · E(p) integrated over each pixel, E given per point of the floor y = 0. */
     private static Image expected(ToDoubleFunction<Vector3d> irradiance) {
-        CameraRays rays = Meshes.rays(CAMERA, SIZE, SIZE);
-        Ray ray = new Ray();
-        float[] rgb = new float[SIZE * SIZE * 3];
-        for (int y = 0; y < SIZE; y++) {
-            for (int x = 0; x < SIZE; x++) {
-                double sum = 0;
-                for (int j = 0; j < 8; j++) {
-                    for (int i = 0; i < 8; i++) {
-                        rays.generate(x + (i + 0.5) / 8, y + (j + 0.5) / 8, ray);
-                        double t = -ray.o.y / ray.d.y;
-                        sum += irradiance.applyAsDouble(new Vector3d(ray.d).mul(t).add(ray.o));
-                    }
-                }
-                float v = (float) (ALBEDO / Math.PI * sum / 64);
-                rgb[3 * (y * SIZE + x)] = rgb[3 * (y * SIZE + x) + 1] = rgb[3 * (y * SIZE + x) + 2] = v;
-            }
-        }
-        return new Image(SIZE, SIZE, rgb);
+        return Meshes.floorRadiance(CAMERA, SIZE, ALBEDO, irradiance);
     }
 
     /** Every pixel within 1 % of its expected value, plus 1e-4 absolute for the dark ones. */

@@ -3,12 +3,16 @@ package dev.strahl.testing;
 import dev.strahl.camera.CameraRays;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.GeometryBuilder;
+import dev.strahl.geometry.Ray;
+import dev.strahl.image.Image;
 import dev.strahl.scene.Camera;
 import dev.strahl.scene.TriangleMesh;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.ToDoubleFunction;
+import org.joml.Vector3d;
 
 /** Meshes made in code for tests. */
 public final class Meshes {
@@ -89,5 +93,30 @@ public final class Meshes {
     /** The camera's ray generator for a film size. */
     public static CameraRays rays(Camera c, int width, int height) {
         return new CameraRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), width, height);
+    }
+
+    /**
+     * The closed form of a Lambertian floor y = 0 of reflectance {@code albedo} seen by {@code camera}:
+     * ρ/π · E(p), E given per point of the floor, integrated over each pixel by 8×8 rays (grey).
+     */
+    public static Image floorRadiance(Camera camera, int size, double albedo, ToDoubleFunction<Vector3d> irradiance) {
+        CameraRays rays = rays(camera, size, size);
+        Ray ray = new Ray();
+        float[] rgb = new float[size * size * 3];
+        for (int y = 0; y < size; y++) {
+            for (int x = 0; x < size; x++) {
+                double sum = 0;
+                for (int j = 0; j < 8; j++) {
+                    for (int i = 0; i < 8; i++) {
+                        rays.generate(x + (i + 0.5) / 8, y + (j + 0.5) / 8, ray);
+                        double t = -ray.o.y / ray.d.y;
+                        sum += irradiance.applyAsDouble(new Vector3d(ray.d).mul(t).add(ray.o));
+                    }
+                }
+                float v = (float) (albedo / Math.PI * sum / 64);
+                rgb[3 * (y * size + x)] = rgb[3 * (y * size + x) + 1] = rgb[3 * (y * size + x) + 2] = v;
+            }
+        }
+        return new Image(size, size, rgb);
     }
 }
