@@ -87,10 +87,7 @@ class GltfFactorsTest {
         Texture base = GltfMaterialsTest.principled(scene).baseColor();
         double[] f = {0.5, 0.8, 0.25};
         for (int i = 0; i < 4; i++) {
-            MutableRgb c = colourAt(base, i);
-            assertThat(c.r).as("texel %d", i).isCloseTo(f[0] * decoded(i, 0), within(1e-9));
-            assertThat(c.g).as("texel %d", i).isCloseTo(f[1] * decoded(i, 1), within(1e-9));
-            assertThat(c.b).as("texel %d", i).isCloseTo(f[2] * decoded(i, 2), within(1e-9));
+            assertFactorTimesDecodedTexel(colourAt(base, i), 1, f, i);
         }
         assertThat(scene.notes()).noneMatch(n -> n.contains("factor"));
     }
@@ -114,9 +111,7 @@ class GltfFactorsTest {
         MutableRgb le = new MutableRgb();
         for (int i = 0; i < 4; i++) {
             World.of(scene).emission(0).eval(new Vector2d(CENTRES[i][0], 1 - CENTRES[i][1]), le);
-            assertThat(le.r).as("texel %d", i).isCloseTo(2 * f[0] * decoded(i, 0), within(1e-9));
-            assertThat(le.g).as("texel %d", i).isCloseTo(2 * f[1] * decoded(i, 1), within(1e-9));
-            assertThat(le.b).as("texel %d", i).isCloseTo(2 * f[2] * decoded(i, 2), within(1e-9));
+            assertFactorTimesDecodedTexel(le, 2, f, i);
         }
         assertThat(scene.notes()).noneMatch(n -> n.contains("largest channel"));
         Scene dark = load(map("emissiveTexture", map("index", 0)));          // emissiveFactor defaults to black
@@ -143,10 +138,7 @@ class GltfFactorsTest {
         double[] f = {0.5, 1, 2};
         for (int i = 0; i < 4; i++) {
             assertThat(valueAt(p.specular(), i)).as("texel %d", i).isCloseTo(0.5 * linear(i, 3), within(1e-9));
-            MutableRgb c = colourAt(p.specularColor(), i);
-            assertThat(c.r).as("texel %d", i).isCloseTo(f[0] * decoded(i, 0), within(1e-9));
-            assertThat(c.g).as("texel %d", i).isCloseTo(f[1] * decoded(i, 1), within(1e-9));
-            assertThat(c.b).as("texel %d", i).isCloseTo(f[2] * decoded(i, 2), within(1e-9));
+            assertFactorTimesDecodedTexel(colourAt(p.specularColor(), i), 1, f, i);
         }
         assertThat(scene.notes()).noneMatch(n -> n.contains("specularTexture"));
     }
@@ -265,5 +257,12 @@ class GltfFactorsTest {
         assertThat(new GltfMeshes(doc).mesh(0).get(0).uvs()).isNull();
         assertThat(doc.notes).containsExactly("warning: meshes[0].primitives[0] has no TEXCOORD_2, which its material's textures read:"
                 + " it has no texture coordinates");
+    }
+
+    /** Each channel of {@code c} is scale × f[channel] × the decoded texel i's channel. */
+    private static void assertFactorTimesDecodedTexel(MutableRgb c, double scale, double[] f, int i) {
+        assertThat(c.r).as("texel %d", i).isCloseTo(scale * f[0] * decoded(i, 0), within(1e-9));
+        assertThat(c.g).as("texel %d", i).isCloseTo(scale * f[1] * decoded(i, 1), within(1e-9));
+        assertThat(c.b).as("texel %d", i).isCloseTo(scale * f[2] * decoded(i, 2), within(1e-9));
     }
 }
