@@ -58,20 +58,12 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
         renderSettings(width, height, maxDepth, hemisphere, threads, seed, integrator, lightSamples, photons, photonRadius);   // validates
     }
 
-    /** Options with shadows. */
-    public ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere, int threads, long seed,
-                         IntegratorKind integrator, int lightSamples, Theme theme, Set<Setting> given, int photons, double photonRadius,
-                         Set<Aov> aovs, SceneOverrides overrides) {
-        this(scene, width, height, stopAt, maxDepth, hemisphere, threads, seed, integrator, lightSamples, theme, given, photons,
-                photonRadius, aovs, overrides, true);
-    }
-
-    /** Options without feature buffers that change nothing in the scenes opened. */
+    /** Options with shadows, without feature buffers, that change nothing in the scenes opened. */
     public ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere, int threads,
                          long seed, IntegratorKind integrator, int lightSamples, Theme theme, Set<Setting> given, int photons,
                          double photonRadius) {
         this(scene, width, height, stopAt, maxDepth, hemisphere, threads, seed, integrator, lightSamples, theme, given, photons,
-                photonRadius, Set.of(), SceneOverrides.NONE);
+                photonRadius, Set.of(), SceneOverrides.NONE, true);
     }
 
     /** Options with the photon mapper's default parameters. */

@@ -25,7 +25,7 @@ class SceneOverridesTest {
 
     static ViewerOptions with(SceneOverrides overrides) {
         return new ViewerOptions(null, 16, 16, 4, -1, HemisphereSampling.COSINE, 1, 0, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of(),
-                5000, 0, Set.of(), overrides);
+                5000, 0, Set.of(), overrides, true);
     }
 
     private Path scene() throws Exception {
