@@ -26,7 +26,6 @@ class SourceSizeTest {
             "dev/strahl/io/json/JsonSceneReader.java", 497,
             "dev/strahl/render/RenderJob.java", 453,
             "dev/strahl/io/obj/ObjReader.java", 441,
-            "dev/strahl/accel/Bvh.java", 434,
             "dev/strahl/viewer/RenderController.java", 427);
 
     @Test

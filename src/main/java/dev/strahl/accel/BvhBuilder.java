@@ -59,7 +59,7 @@ final class BvhBuilder {
 
     Bvh build() {
         if (n == 0) {
-            return new Bvh(geometry, new float[0], 0);
+            return new Bvh(geometry, new float[0], 0, new float[0]);
         }
         if (n >= PARALLEL_MIN && threads > 1) {
             ForkJoinPool pool = new ForkJoinPool(threads);

@@ -1,6 +1,7 @@
 package dev.strahl.bench;
 
-import dev.strahl.accel.Bvh;
+import dev.strahl.accel.Aggregate;
+import dev.strahl.accel.RayBatch;
 import dev.strahl.accel.TraversalStack;
 import dev.strahl.scene.Camera;
 import dev.strahl.camera.CameraRays;
@@ -162,7 +163,7 @@ public final class BenchRays {
     }
 
     /** Traces the set on {@code threads} threads of the pool, each a contiguous share. */
-    public static Result trace(Bvh bvh, RaySet set, int threads, ExecutorService pool) throws InterruptedException {
+    public static Result trace(Aggregate bvh, RaySet set, int threads, ExecutorService pool) throws InterruptedException {
         List<Callable<long[]>> tasks = new ArrayList<>();
         for (int t = 0; t < threads; t++) {
             int from = (int) ((long) set.count() * t / threads), to = (int) ((long) set.count() * (t + 1) / threads);
@@ -183,27 +184,34 @@ public final class BenchRays {
         return new Result(seconds, hits, checksum);
     }
 
-    private static long[] traceRange(Bvh bvh, RaySet set, int from, int to) {
-        Ray ray = new Ray();
-        Hit hit = new Hit();
-        TraversalStack stack = Bvh.newStack();
+    /** Rays per batch query: the thread's batch is filled from the set and traced with one call. */
+    private static final int BATCH = 256;
+
+    private static long[] traceRange(Aggregate bvh, RaySet set, int from, int to) {
+        RayBatch batch = new RayBatch(BATCH);
+        TraversalStack stack = new TraversalStack();
         double[] data = set.data();
         long hits = 0, checksum = 0;
-        if (set.anyHit()) {
-            for (int i = from; i < to; i++) {
-                load(data, i, ray);
-                if (bvh.occluded(ray, stack)) {
-                    hits++;
-                    checksum += i;
-                }
+        for (int first = from; first < to; first += BATCH) {
+            int n = Math.min(BATCH, to - first);
+            for (int j = 0, k = 7 * first; j < n; j++, k += 7) {
+                batch.set(j, data[k], data[k + 1], data[k + 2], data[k + 3], data[k + 4], data[k + 5], data[k + 6]);
             }
-        } else {
-            for (int i = from; i < to; i++) {
-                load(data, i, ray);
-                hit.reset();
-                if (bvh.intersect(ray, hit, stack, false)) {
-                    hits++;
-                    checksum += hit.prim + 1;
+            if (set.anyHit()) {
+                bvh.occluded(batch, 0, n, stack);
+                for (int j = 0; j < n; j++) {
+                    if (batch.occluded[j]) {
+                        hits++;
+                        checksum += first + j;
+                    }
+                }
+            } else {
+                bvh.intersect(batch, 0, n, stack, false);
+                for (int j = 0; j < n; j++) {
+                    if (batch.prim[j] >= 0) {
+                        hits++;
+                        checksum += batch.prim[j] + 1;
+                    }
                 }
             }
         }
@@ -215,9 +223,9 @@ public final class BenchRays {
      * set: the same hit or miss, the same primitive (or one at the same distance, a tie), the same
      * occlusion answer. Returns a description of the first difference, or null.
      */
-    public static String check(Bvh bvh, RaySet set, int samples) {
+    public static String check(Aggregate bvh, RaySet set, int samples) {
         Geometry g = bvh.geometry();
-        TraversalStack stack = Bvh.newStack();
+        TraversalStack stack = new TraversalStack();
         Ray r = new Ray(), rb = new Ray();
         Hit hit = new Hit(), brute = new Hit();
         int step = Math.max(1, set.count() / Math.max(1, samples));

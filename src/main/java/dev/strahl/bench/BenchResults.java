@@ -61,6 +61,8 @@ public final class BenchResults {
     String os;
     String jvm;
     boolean vectorApi;
+    /** What traced the rays and renders ({@code Aggregate.kernel()}). */
+    String kernel;
     long maxHeapMiB;
     boolean quick;
     int runs;
