@@ -15,11 +15,12 @@ public final class TraversalStack {
     /** Node references still to visit, and their keys ({@link ScalarKernel#key}): both grow upwards. */
     final int[] refs = new int[BvhLayout.STACK_SIZE];
     final int[] keys = new int[BvhLayout.STACK_SIZE];
+    /** The stack's size, where the SIMD kernel's node visits ({@link SimdKernel}) hand it over. */
+    int sp;
     /** The keys of one node's eight children (or -1 for those the ray misses). */
     final int[] lanes = new int[BvhLayout.WIDTH];
-    /** A leaf block's per-lane results, read back on a hit: t, the scaled barycentrics v, w and det. */
-    final double[] laneT = new double[BvhLayout.LANES], laneV = new double[BvhLayout.LANES],
-            laneW = new double[BvhLayout.LANES], laneDet = new double[BvhLayout.LANES];
+    /** The distance of a leaf block's nearest hit ({@link SimdKernel}), infinite for none. */
+    double bestT;
 
     // Slab test: inverse direction, offsets of the near and far planes in a node, origin bounds for near and far planes.
     float ix, iy, iz;
@@ -41,11 +42,11 @@ public final class TraversalStack {
      * would mispredict every one of them, so selections go through sign bits.
      */
     void prepare(Ray ray) {
-        double ox = ray.o.x, oy = ray.o.y, oz = ray.o.z;
+        double ox = ray.o.x, oy = ray.o.y, oz = ray.o.z, dx = ray.d.x, dy = ray.d.y, dz = ray.d.z;
         // Float division: within 1 ulp of 1/d, as the traversal's margin assumes.
-        ix = 1 / (float) ray.d.x;
-        iy = 1 / (float) ray.d.y;
-        iz = 1 / (float) ray.d.z;
+        ix = 1 / (float) dx;
+        iy = 1 / (float) dy;
+        iz = 1 / (float) dz;
         int sgx = Float.floatToRawIntBits(ix) >>> 31, sgy = Float.floatToRawIntBits(iy) >>> 31, sgz = Float.floatToRawIntBits(iz) >>> 31;
         // The near plane is the minimum for a positive direction, the maximum (3 planes on) for a negative one.
         int w3 = 3 * BvhLayout.WIDTH;
@@ -55,27 +56,18 @@ public final class TraversalStack {
         fx = nx + w3 - 2 * w3 * sgx;
         fy = ny + w3 - 2 * w3 * sgy;
         fz = nz + w3 - 2 * w3 * sgz;
-        // Near planes take the upper origin bound for a positive direction, the lower one for a
-        // negative: with sign s = ±1, s·above(s·o) is above(o) or below(o) (negations are exact).
-        double sx = Math.copySign(1.0, ix), sy = Math.copySign(1.0, iy), sz = Math.copySign(1.0, iz);
-        onx = (float) sx * above(sx * ox);
-        ofx = (float) -sx * above(-sx * ox);
-        ony = (float) sy * above(sy * oy);
-        ofy = (float) -sy * above(-sy * oy);
-        onz = (float) sz * above(sz * oz);
-        ofz = (float) -sz * above(-sz * oz);
+        // Origin bounds: o ± e with e = |o|·2^-22 + 2^-126 (at least two float spacings around o, and
+        // more than the smallest normal float) rounded to float lie on either side of o. Near
+        // planes take the upper bound for a positive direction, the lower one for a negative.
+        double ex = Math.copySign(Math.abs(ox) * 0x1p-22 + 0x1p-126, dx);
+        double ey = Math.copySign(Math.abs(oy) * 0x1p-22 + 0x1p-126, dy);
+        double ez = Math.copySign(Math.abs(oz) * 0x1p-22 + 0x1p-126, dz);
+        onx = (float) (ox + ex);
+        ofx = (float) (ox - ex);
+        ony = (float) (oy + ey);
+        ofy = (float) (oy - ey);
+        onz = (float) (oz + ez);
+        ofz = (float) (oz - ez);
         triangle.prepare(ray);
-    }
-
-    /** The float strictly above the double v (which lies strictly between {@link #below} and this). */
-    static float above(double v) {
-        float f = (float) v + 0f;                     // + 0 turns -0 into +0
-        int b = Float.floatToRawIntBits(f);
-        return Float.intBitsToFloat(b + 1 + 2 * (b >> 31));
-    }
-
-    /** The float strictly below the double v. */
-    static float below(double v) {
-        return -above(-v);
     }
 }

@@ -177,7 +177,7 @@ class BvhTest {
      * aimed at points on random primitives, and with zero direction components (axis-aligned or
      * in a coordinate plane, origins sometimes exactly on a vertex's coordinate plane).
      */
-    private static Ray randomRay(SplittableRandom random, Geometry g, Aabb box, SurfacePoint sp) {
+    static Ray randomRay(SplittableRandom random, Geometry g, Aabb box, SurfacePoint sp) {
         double ex = Math.max(box.extent(0), 0.1), ey = Math.max(box.extent(1), 0.1), ez = Math.max(box.extent(2), 0.1);
         Vector3d o;
         if (random.nextBoolean()) {
