@@ -113,11 +113,11 @@ public final class Bvh implements Aggregate {
         }
 
         int blockPrim(int block) {
-            return Float.floatToRawIntBits(blocks[BvhLayout.BLOCK * block + BvhLayout.BLOCK_PRIM]);
+            return BvhLayout.firstPrim(Float.floatToRawIntBits(blocks[BvhLayout.BLOCK * block + BvhLayout.BLOCK_PRIMS]));
         }
 
         int blockCount(int block) {
-            return Float.floatToRawIntBits(blocks[BvhLayout.BLOCK * block + BvhLayout.BLOCK_COUNT]);
+            return BvhLayout.primCount(Float.floatToRawIntBits(blocks[BvhLayout.BLOCK * block + BvhLayout.BLOCK_PRIMS]));
         }
     }
 

@@ -14,10 +14,12 @@ package dev.strahl.accel;
  *
  * <p><b>Block</b> j is {@value #BLOCK} floats at {@code blocks[BLOCK·j ..]}: up to four
  * triangles side by side, their nine vertex coordinates as planes of four ({@code 4·(3v + k)}
- * holds coordinate k of vertex v of the four triangles), then the first triangle's primitive id
- * and the number of triangles (as int bits) at {@link #BLOCK_PRIM} and {@link #BLOCK_COUNT}. The
- * triangles of a block are consecutive primitives; unused lanes hold NaN vertices, which no
- * test reports as a hit. A leaf is one or more consecutive blocks.
+ * holds coordinate k of vertex v of the four triangles), then one word (int bits) at
+ * {@link #BLOCK_PRIMS}: the first triangle's primitive id and the number of triangles,
+ * {@code first << 2 | (count − 1)} ({@link #firstPrim}, {@link #primCount}). The triangles of a
+ * block are consecutive primitives; unused lanes hold NaN vertices, which no test reports as a
+ * hit. A leaf is one or more consecutive blocks. 148 bytes, 37–39 a triangle at the builder's
+ * fill of 3.8 triangles a block.
  *
  * <p><b>References</b> (the children words): a triangle leaf is
  * {@code MIN_VALUE | firstBlock << 2 | (blocks − 1)}; a sphere leaf sets bit 30 as well and holds
@@ -35,10 +37,9 @@ final class BvhLayout {
     static final int CHILDREN = 6 * WIDTH;
     /** Triangles per block, and lanes of the leaf test. */
     static final int LANES = 4;
-    /** Floats per block: nine coordinate planes of four, first primitive, count, two unused. */
-    static final int BLOCK = 40;
-    static final int BLOCK_PRIM = 9 * LANES;
-    static final int BLOCK_COUNT = BLOCK_PRIM + 1;
+    /** Floats per block: nine coordinate planes of four, and the word of its primitives. */
+    static final int BLOCK = 9 * LANES + 1;
+    static final int BLOCK_PRIMS = 9 * LANES;
     /** Blocks a leaf may have. */
     static final int MAX_BLOCKS = 4;
     /** A child slot without a child. */
@@ -80,6 +81,22 @@ final class BvhLayout {
 
     static int sphereCount(int ref) {
         return ref & 7;
+    }
+
+    /** A block's word of primitives: {@code count} triangles from {@code first} on. */
+    static int prims(int first, int count) {
+        if (first < 0 || first >= 1 << 29 || count < 1 || count > LANES) {
+            throw new IllegalArgumentException("block out of range: first " + first + ", count " + count);
+        }
+        return first << 2 | (count - 1);
+    }
+
+    static int firstPrim(int word) {
+        return word >>> 2;
+    }
+
+    static int primCount(int word) {
+        return (word & 3) + 1;
     }
 
     /** Traversal stack entries: at most seven siblings pushed per level, and room for one vector store of eight. */

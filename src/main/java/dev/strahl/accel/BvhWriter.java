@@ -1,8 +1,7 @@
 package dev.strahl.accel;
 
 import static dev.strahl.accel.BvhLayout.BLOCK;
-import static dev.strahl.accel.BvhLayout.BLOCK_COUNT;
-import static dev.strahl.accel.BvhLayout.BLOCK_PRIM;
+import static dev.strahl.accel.BvhLayout.BLOCK_PRIMS;
 import static dev.strahl.accel.BvhLayout.CHILDREN;
 import static dev.strahl.accel.BvhLayout.LANES;
 import static dev.strahl.accel.BvhLayout.NODE;
@@ -164,14 +163,14 @@ final class BvhWriter {
         return BvhLayout.triangleLeaf(firstBlock, blocks);
     }
 
-    /** The blocks' contents: vertex planes from the reordered geometry, NaN in unused lanes, first primitive and count. */
+    /** The blocks' contents: vertex planes from the reordered geometry, NaN in unused lanes, the word of primitives. */
     private float[] blocks(Geometry g) {
         float[] pos = g.positionArray();
         int[] tri = g.indexArray();
         float[] out = new float[BLOCK * blockCount];
         for (int j = 0; j < blockCount; j++) {
             int o = BLOCK * j;
-            Arrays.fill(out, o, o + BLOCK_PRIM, Float.NaN);
+            Arrays.fill(out, o, o + BLOCK_PRIMS, Float.NaN);
             for (int lane = 0; lane < blockSize[j]; lane++) {
                 int prim = blockPrim[j] + lane;
                 for (int v = 0; v < 3; v++) {
@@ -181,8 +180,7 @@ final class BvhWriter {
                     }
                 }
             }
-            out[o + BLOCK_PRIM] = Float.intBitsToFloat(blockPrim[j]);
-            out[o + BLOCK_COUNT] = Float.intBitsToFloat(blockSize[j]);
+            out[o + BLOCK_PRIMS] = Float.intBitsToFloat(BvhLayout.prims(blockPrim[j], blockSize[j]));
         }
         return out;
     }

@@ -1,8 +1,7 @@
 package dev.strahl.accel;
 
 import static dev.strahl.accel.BvhLayout.BLOCK;
-import static dev.strahl.accel.BvhLayout.BLOCK_COUNT;
-import static dev.strahl.accel.BvhLayout.BLOCK_PRIM;
+import static dev.strahl.accel.BvhLayout.BLOCK_PRIMS;
 import static dev.strahl.accel.BvhLayout.CHILDREN;
 import static dev.strahl.accel.BvhLayout.LANES;
 import static dev.strahl.accel.BvhLayout.NODE;
@@ -89,7 +88,7 @@ final class ScalarKernel {
             } else if (!BvhLayout.isSphereLeaf(ref)) {
                 boolean closer = false;
                 for (int b = BvhLayout.firstBlock(ref), end = b + BvhLayout.blockCount(ref); b < end; b++) {
-                    int o = BLOCK * b, prim = bits(blocks[o + BLOCK_PRIM]), n = bits(blocks[o + BLOCK_COUNT]);
+                    int o = BLOCK * b, word = bits(blocks[o + BLOCK_PRIMS]), prim = BvhLayout.firstPrim(word), n = BvhLayout.primCount(word);
                     for (int lane = 0; lane < n; lane++) {
                         if (tr.hit(blocks, o + lane, o + 3 * LANES + lane, o + 6 * LANES + lane, LANES, flags, prim + lane, tHit, cull)) {
                             tHit = tr.t;
@@ -137,7 +136,7 @@ final class ScalarKernel {
                 }
             } else if (!BvhLayout.isSphereLeaf(ref)) {
                 for (int b = BvhLayout.firstBlock(ref), end = b + BvhLayout.blockCount(ref); b < end; b++) {
-                    int o = BLOCK * b, n = bits(blocks[o + BLOCK_COUNT]);
+                    int o = BLOCK * b, n = BvhLayout.primCount(bits(blocks[o + BLOCK_PRIMS]));
                     for (int lane = 0; lane < n; lane++) {
                         if (tr.hit(blocks, o + lane, o + 3 * LANES + lane, o + 6 * LANES + lane, LANES, null, 0, tMax, false)) {
                             return true;

@@ -1,8 +1,7 @@
 package dev.strahl.accel;
 
 import static dev.strahl.accel.BvhLayout.BLOCK;
-import static dev.strahl.accel.BvhLayout.BLOCK_COUNT;
-import static dev.strahl.accel.BvhLayout.BLOCK_PRIM;
+import static dev.strahl.accel.BvhLayout.BLOCK_PRIMS;
 import static dev.strahl.accel.BvhLayout.LANES;
 import static dev.strahl.accel.BvhLayout.NODE;
 import static dev.strahl.accel.ScalarKernel.bits;
@@ -74,7 +73,7 @@ final class SimdKernel {
             } else if (!BvhLayout.isSphereLeaf(ref)) {
                 for (int b = BvhLayout.firstBlock(ref), end = b + BvhLayout.blockCount(ref); b < end; b++) {
                     int o = BLOCK * b;
-                    int prim = bits(blocks[o + BLOCK_PRIM]);
+                    int prim = BvhLayout.firstPrim(bits(blocks[o + BLOCK_PRIMS]));
                     int lane = blockTest(blocks, o, tr, tHit, cull, false, s);
                     if (lane >= 0) {
                         // Without a branch on whether a lane hit (bestT is infinite then): a random ray would mispredict it.
@@ -85,7 +84,7 @@ final class SimdKernel {
                         tHit = closer ? t : tHit;
                     } else {
                         // The lanes could not decide: the scalar test, lane after lane.
-                        for (int l = 0, n = bits(blocks[o + BLOCK_COUNT]); l < n; l++) {
+                        for (int l = 0, n = BvhLayout.primCount(bits(blocks[o + BLOCK_PRIMS])); l < n; l++) {
                             if (tr.hit(blocks, o + l, o + 3 * LANES + l, o + 6 * LANES + l, LANES, bvh.flags, prim + l, tHit, cull)) {
                                 tHit = tr.t;
                                 found = prim + l;
@@ -144,7 +143,7 @@ final class SimdKernel {
                             return true;
                         }
                     } else {
-                        for (int l = 0, n = bits(blocks[o + BLOCK_COUNT]); l < n; l++) {
+                        for (int l = 0, n = BvhLayout.primCount(bits(blocks[o + BLOCK_PRIMS])); l < n; l++) {
                             if (tr.hit(blocks, o + l, o + 3 * LANES + l, o + 6 * LANES + l, LANES, null, 0, tMax, false)) {
                                 return true;
                             }
