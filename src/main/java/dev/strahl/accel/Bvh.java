@@ -16,7 +16,8 @@ import dev.strahl.geometry.RayTriangle;
  * {@link TraversalStack}.
  *
  * <p>Two kernels traverse it: {@link SimdKernel} (the Vector API) where {@link Simd#enabled()},
- * else {@link ScalarKernel}, its twin; both give the same bits (hits, distances, barycentrics).
+ * once C2 has compiled it ({@link SimdWarmUp}), else {@link ScalarKernel}, its twin; both give
+ * the same bits (hits, distances, barycentrics), so the switch does not show in any image.
  * Triangles are tested with {@link RayTriangle} (the watertight test of Woop et al. 2013, in
  * double from the float vertices), as {@link Geometry#intersect(int, int, Ray, Hit, boolean)}
  * does, so the tree and a loop over all primitives agree bit for bit.
@@ -30,21 +31,23 @@ public final class Bvh implements Aggregate {
     private final int nodeCount;
     /** The leaves' triangle blocks, {@link BvhLayout#BLOCK} floats each. */
     final float[] blocks;
-    /** Whether queries take {@link SimdKernel}. */
-    private final boolean simd;
+    /** Which kernel answers: {@link #SCALAR}, {@link #WHEN_WARM} or {@link #ALWAYS}. */
+    private final int kernel;
+    /** The scalar kernel; the SIMD one once {@link SimdWarmUp#ready()}, the scalar one until then; the SIMD one. */
+    private static final int SCALAR = 0, WHEN_WARM = 1, ALWAYS = 2;
 
     Bvh(Geometry geometry, float[] nodes, int nodeCount, float[] blocks) {
-        this(geometry, nodes, nodeCount, blocks, Simd.enabled());
+        this(geometry, nodes, nodeCount, blocks, !Simd.enabled() ? SCALAR : Simd.ALWAYS.equals(System.getProperty(Simd.PROPERTY)) ? ALWAYS : WHEN_WARM);
     }
 
-    private Bvh(Geometry geometry, float[] nodes, int nodeCount, float[] blocks, boolean simd) {
+    private Bvh(Geometry geometry, float[] nodes, int nodeCount, float[] blocks, int kernel) {
         this.geometry = geometry;
         this.triangleCount = geometry.triangleCount();
         this.flags = geometry.flagArray();
         this.nodes = nodes;
         this.nodeCount = nodeCount;
         this.blocks = blocks;
-        this.simd = simd;
+        this.kernel = kernel;
     }
 
     /**
@@ -57,8 +60,8 @@ public final class Bvh implements Aggregate {
     }
 
     /**
-     * The same tree traversed by the SIMD kernel or by the scalar one (for tests and benchmarks
-     * comparing the two, and for {@code --simd off}).
+     * The same tree traversed by the SIMD kernel from the first query on, warm or not, or by the
+     * scalar one (for tests and benchmarks comparing the two).
      *
      * @throws IllegalStateException if the SIMD kernel is asked for where it cannot run
      */
@@ -67,17 +70,21 @@ public final class Bvh implements Aggregate {
             throw new IllegalStateException("the SIMD kernel needs the JVM option --add-modules jdk.incubator.vector"
                     + " and a processor with 256-bit vectors");
         }
-        return on == simd ? this : new Bvh(geometry, nodes, nodeCount, blocks, on);
+        return new Bvh(geometry, nodes, nodeCount, blocks, on ? ALWAYS : SCALAR);
     }
 
-    /** Whether queries take the Vector API kernel. */
+    /** Whether queries take the Vector API kernel (once it is compiled, for a tree built with the default). */
     public boolean usesSimd() {
-        return simd;
+        return kernel != SCALAR;
     }
 
     @Override
     public String kernel() {
-        return "bvh8, " + Simd.describe(simd);
+        return "bvh8, " + Simd.describe(kernel != SCALAR);
+    }
+
+    private boolean simdNow() {
+        return kernel == ALWAYS || kernel == WHEN_WARM && SimdWarmUp.ready();
     }
 
     /** The same primitives without the tree ({@link BruteForce}). */
@@ -150,7 +157,7 @@ public final class Bvh implements Aggregate {
             return false;
         }
         stack.prepare(ray);
-        return simd ? SimdKernel.closestHit(this, ray, hit, stack, cullBackFaces) : ScalarKernel.closestHit(this, ray, hit, stack, cullBackFaces);
+        return simdNow() ? SimdKernel.closestHit(this, ray, hit, stack, cullBackFaces) : ScalarKernel.closestHit(this, ray, hit, stack, cullBackFaces);
     }
 
     /** Whether anything blocks the ray in (0, ray.tMax); stops at the first blocker found. Never culls. */
@@ -160,6 +167,6 @@ public final class Bvh implements Aggregate {
             return false;
         }
         stack.prepare(ray);
-        return simd ? SimdKernel.anyHit(this, ray, stack) : ScalarKernel.anyHit(this, ray, stack);
+        return simdNow() ? SimdKernel.anyHit(this, ray, stack) : ScalarKernel.anyHit(this, ray, stack);
     }
 }

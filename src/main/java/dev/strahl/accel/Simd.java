@@ -11,20 +11,59 @@ package dev.strahl.accel;
 public final class Simd {
     private Simd() {}
 
-    /** The system property that switches the SIMD kernel off for BVHs built from then on ({@code -Dstrahl.simd=false}). */
+    /**
+     * The system property that switches the SIMD kernel off for BVHs built from then on
+     * ({@code -Dstrahl.simd=false}), or on from the first ray, before C2 has compiled it
+     * ({@value #ALWAYS}: for tests that want its answers, not its speed; see {@link SimdWarmUp}).
+     */
     public static final String PROPERTY = "strahl.simd";
+    public static final String ALWAYS = "always";
 
-    /** Whether the module is there and the processor has 256-bit vectors. */
-    public static final boolean AVAILABLE = ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent() && Lanes.wide();
+    /**
+     * Whether the module is there, the processor has 256-bit vectors and the JVM compiles with C2
+     * (the Vector API's lanes are C2's intrinsics; interpreted or in C1 code they are slower than
+     * the scalar kernel: {@code -Xint}, {@code -XX:TieredStopAtLevel=1}).
+     */
+    public static final boolean AVAILABLE = ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent() && Lanes.wide() && c2();
 
     /** Whether a BVH built now takes the SIMD kernel: {@link #AVAILABLE} and not switched off by {@link #PROPERTY}. */
     public static boolean enabled() {
         return AVAILABLE && !"false".equals(System.getProperty(PROPERTY));
     }
 
+    /**
+     * Waits until the SIMD kernel is compiled and answers the queries of BVHs built with the
+     * default ({@link SimdWarmUp}), at most {@code millis}; for benchmarks, which time it warm.
+     *
+     * @return whether it is
+     */
+    public static boolean awaitWarmUp(long millis) throws InterruptedException {
+        long end = System.nanoTime() + millis * 1_000_000;
+        while (enabled() && !SimdWarmUp.ready()) {
+            if (System.nanoTime() > end) {
+                return false;
+            }
+            Thread.sleep(10);
+        }
+        return enabled();
+    }
+
     /** The kernel's name for reports: "simd (AVX-512, 256-bit lanes)" style, or "scalar". */
     public static String describe(boolean simd) {
         return simd ? "simd (" + Lanes.preferredBits() + "-bit vectors, 8 float lanes per node, 4 double lanes per leaf block)" : "scalar";
+    }
+
+    /** Whether this JVM compiles with C2 (the server compiler), which the lanes need to be fast. */
+    public static boolean c2() {
+        try {
+            com.sun.management.HotSpotDiagnosticMXBean vm = java.lang.management.ManagementFactory.getPlatformMXBean(com.sun.management.HotSpotDiagnosticMXBean.class);
+            boolean tiered = Boolean.parseBoolean(vm.getVMOption("TieredCompilation").getValue());
+            return Boolean.parseBoolean(vm.getVMOption("UseCompiler").getValue())
+                    && (!tiered || Integer.parseInt(vm.getVMOption("TieredStopAtLevel").getValue()) >= 4)
+                    && !System.getProperty("java.vm.info", "").startsWith("interpreted");
+        } catch (RuntimeException | LinkageError e) {
+            return true;                                  // not HotSpot: assume a compiler that makes lanes fast
+        }
     }
 
     /** Touches the Vector API only when the module is present (checked before the call). */

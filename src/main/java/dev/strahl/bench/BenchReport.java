@@ -44,6 +44,33 @@ public final class BenchReport {
         return r;
     }
 
+    /** Waits for the SIMD kernel to be compiled ({@code Simd.awaitWarmUp}); returns the seconds waited, NaN if it did not get there. */
+    public static double awaitSimd() throws InterruptedException {
+        long t0 = System.nanoTime();
+        boolean warm = Simd.awaitWarmUp(120_000);
+        return warm || !Simd.enabled() ? (System.nanoTime() - t0) * 1e-9 : Double.NaN;
+    }
+
+    /** The vector extensions among the processor's flags (Linux), for the record of what the kernel ran on. */
+    static String cpuFlags() {
+        try {
+            for (String line : Files.readAllLines(Path.of("/proc/cpuinfo"))) {
+                if (line.startsWith("flags")) {
+                    StringBuilder b = new StringBuilder();
+                    for (String f : line.substring(line.indexOf(':') + 1).trim().split(" ")) {
+                        if (f.startsWith("avx") || f.equals("fma") || f.startsWith("sse4") || f.equals("neon") || f.startsWith("asimd")) {
+                            b.append(b.length() == 0 ? "" : " ").append(f);
+                        }
+                    }
+                    return b.toString();
+                }
+            }
+        } catch (IOException | SecurityException e) {
+            // not Linux
+        }
+        return "";
+    }
+
     private static String cpuModel() {
         try {
             for (String line : Files.readAllLines(Path.of("/proc/cpuinfo"))) {
@@ -187,6 +214,8 @@ public final class BenchReport {
             json.writeStringField("jvm_arguments", String.join(" ", ManagementFactory.getRuntimeMXBean().getInputArguments()));
             json.writeBooleanField("vector_api", r.vectorApi);
             json.writeStringField("kernel", r.kernel);
+            json.writeStringField("cpu_flags", cpuFlags());
+            json.writeNumberField("simd_warm_up_seconds", r.simdWarmUpSeconds);
             json.writeNumberField("max_heap_mib", r.maxHeapMiB);
             json.writeEndObject();
             json.writeBooleanField("quick", r.quick);

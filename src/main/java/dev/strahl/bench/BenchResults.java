@@ -63,6 +63,8 @@ public final class BenchResults {
     boolean vectorApi;
     /** What traced the rays and renders ({@code Aggregate.kernel()}). */
     String kernel;
+    /** Seconds the bench waited for the SIMD kernel to be compiled before timing (0 for the scalar kernel). */
+    public double simdWarmUpSeconds;
     long maxHeapMiB;
     boolean quick;
     int runs;

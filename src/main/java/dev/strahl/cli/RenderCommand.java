@@ -189,6 +189,9 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     DebugOption debug;
 
+    @Mixin
+    SimdOption simd;
+
     @Option(names = "--stats", paramLabel = "FILE.json", description = "Also write the render's figures (time, samples/s, rays/s, load and BVH build time) as JSON.")
     Path statsFile;
 
@@ -202,7 +205,7 @@ final class RenderCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
-        try (Interrupts irq = Interrupts.install(err)) {
+        try (SimdOption.Scope kernel = simd.apply(); Interrupts irq = Interrupts.install(err)) {
             return run(err, irq);
         } catch (SceneException | CheckpointException e) {
             return fail(err, e, e.getMessage(), 2);

@@ -1,5 +1,6 @@
 package dev.strahl.cli;
 
+import dev.strahl.accel.Simd;
 import dev.strahl.io.json.JsonFile;
 import dev.strahl.render.RenderCluster;
 import dev.strahl.render.RenderSettings;
@@ -62,6 +63,7 @@ final class StatsFile {
             }
             json.writeNumberField("thread_idle_seconds", stats.threadIdleSeconds());
             json.writeStringField("accel", settings.bruteForce() ? "none" : "bvh");
+            json.writeStringField("kernel", settings.bruteForce() ? "brute force" : "bvh8, " + Simd.describe(Simd.enabled()));
             json.writeStringField("schedule", settings.stripes() ? "stripes" : "tiles");
             json.writeStringField("shadows", settings.shadows() ? "on" : "off");
             json.writeNumberField("texture_bytes", textureBytes);

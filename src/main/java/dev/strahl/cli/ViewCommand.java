@@ -69,6 +69,9 @@ final class ViewCommand implements Callable<Integer> {
     @Mixin
     DebugOption debug;
 
+    @Mixin
+    SimdOption simd;
+
     /** What the options say; those given on the command line win over the scene file's settings. */
     ViewerOptions options() {
         return new ViewerOptions(scene, width, height, spp, transport.maxDepth, transport.hemisphere, threads, seed,
@@ -90,7 +93,7 @@ final class ViewCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
-        try {
+        try (SimdOption.Scope kernel = simd.apply()) {
             Viewer.open(options(), HeapCheck::checkFilm).awaitClosed();   // refuses a film too large for the heap, as render does
             return 0;
         } catch (SceneException | IllegalArgumentException e) {
