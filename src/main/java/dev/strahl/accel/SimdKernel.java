@@ -35,9 +35,8 @@ import jdk.incubator.vector.VectorSpecies;
  * <p>Leaf block: the triangle test of {@link RayTriangle} in double lanes, from the block's float
  * vertices. A lane with an edge function of exactly zero (a ray through an edge's line) sends the
  * block to {@link RayTriangle} itself, whose exact fallback decides; so does a back face to cull.
- * Of the lanes that hit, the nearest (the first of equal ones, as the scalar loop keeps) is taken
- * without a branch on whether there was one; its barycentrics come from the scalar test of that
- * one triangle at the end (the same operations, so the same bits).
+ * Of the lanes that hit, the nearest (the first of equal ones, as the scalar loop keeps) is found
+ * in lanes; it and its scaled barycentrics are read back only where it is closer than the hit so far.
  */
 final class SimdKernel {
     private SimdKernel() {}
@@ -61,7 +60,6 @@ final class SimdKernel {
         double tHit = ray.tMax;
         int tMaxBits = ScalarKernel.tMaxBits(tHit);
         int found = -1;
-        int foundAt = 0;
         s.sp = 0;
         int ref = 0;
         while (true) {
@@ -76,19 +74,21 @@ final class SimdKernel {
                     int prim = BvhLayout.firstPrim(bits(blocks[o + BLOCK_PRIMS]));
                     int lane = blockTest(blocks, o, tr, tHit, cull, false, s);
                     if (lane >= 0) {
-                        // Without a branch on whether a lane hit (bestT is infinite then): a random ray would mispredict it.
-                        double t = s.bestT;
-                        boolean closer = t < tHit;
-                        found = closer ? prim + lane : found;
-                        foundAt = closer ? o + lane : foundAt;
-                        tHit = closer ? t : tHit;
+                        double t = s.bestT;                   // infinite where no lane hit
+                        if (t < tHit) {
+                            tHit = t;
+                            found = prim + lane;
+                            tr.t = t;
+                            tr.v = s.laneV[lane];
+                            tr.w = s.laneW[lane];
+                            tr.det = s.laneDet[lane];
+                        }
                     } else {
                         // The lanes could not decide: the scalar test, lane after lane.
                         for (int l = 0, n = BvhLayout.primCount(bits(blocks[o + BLOCK_PRIMS])); l < n; l++) {
                             if (tr.hit(blocks, o + l, o + 3 * LANES + l, o + 6 * LANES + l, LANES, bvh.flags, prim + l, tHit, cull)) {
                                 tHit = tr.t;
                                 found = prim + l;
-                                foundAt = o + l;
                             }
                         }
                     }
@@ -106,11 +106,6 @@ final class SimdKernel {
             int cut = ScalarKernel.cut(tMaxBits), sp = s.sp;
             do {
                 if (sp == 0) {
-                    if (found >= 0 && found < bvh.triangleCount) {
-                        // The barycentrics of the closest triangle: its lane's test once more, in scalar.
-                        tr.hit(blocks, foundAt, foundAt + 3 * LANES, foundAt + 6 * LANES, LANES, null, 0, Double.POSITIVE_INFINITY, false);
-                        assert tr.t == tHit : "lane and scalar test differ: " + tr.t + " vs " + tHit;
-                    }
                     return ScalarKernel.finish(bvh, ray, hit, found, tHit, tr);
                 }
                 ref = refs[--sp];
@@ -257,6 +252,9 @@ final class SimdKernel {
         p = m.rearrange(HALVES);
         m = m.blend(p, p.compare(VectorOperators.LT, m));
         s.bestT = m.lane(0);
+        v.intoArray(s.laneV, 0);
+        w.intoArray(s.laneW, 0);
+        det.intoArray(s.laneDet, 0);
         return t.compare(VectorOperators.EQ, m).and(hits).firstTrue();
     }
 

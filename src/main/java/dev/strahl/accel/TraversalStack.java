@@ -19,8 +19,9 @@ public final class TraversalStack {
     int sp;
     /** The keys of one node's eight children (or -1 for those the ray misses). */
     final int[] lanes = new int[BvhLayout.WIDTH];
-    /** The distance of a leaf block's nearest hit ({@link SimdKernel}), infinite for none. */
+    /** The distance of a leaf block's nearest hit ({@link SimdKernel}), infinite for none, and the block's scaled barycentrics. */
     double bestT;
+    final double[] laneV = new double[BvhLayout.LANES], laneW = new double[BvhLayout.LANES], laneDet = new double[BvhLayout.LANES];
 
     // Slab test: inverse direction, offsets of the near and far planes in a node, origin bounds for near and far planes.
     float ix, iy, iz;
