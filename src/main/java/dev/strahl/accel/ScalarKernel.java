@@ -38,6 +38,13 @@ final class ScalarKernel {
     static final int MARGIN_ULPS = 8;
 
     /**
+     * Whether the scalar kernel counts its node visits and block tests into the stack
+     * ({@code -Dstrahl.countVisits=true}, for docs/bench/VisitCounts.java); a constant, so the
+     * compiled loops have no trace of it otherwise. The SIMD kernel visits the same nodes.
+     */
+    static final boolean COUNT = Boolean.getBoolean("strahl.countVisits");
+
+    /**
      * The stack key of a child entered at distance bits {@code entry} ≥ 0 in slot {@code slot}:
      * the order of visits (nearest first, ties by slot), unique within a node. It lies within 7
      * of the entry bits, which the cut on pop allows for ({@link #cut}).
@@ -76,6 +83,9 @@ final class ScalarKernel {
             if (ref >= 0) {
                 int o = NODE * ref;
                 int hits = childKeys(nodes, o, s, tMaxBits, lanes);
+                if (COUNT) {
+                    s.nodeVisits++;
+                }
                 if (hits != 0) {
                     if ((hits & hits - 1) == 0) {
                         ref = child(nodes, o, Integer.numberOfTrailingZeros(hits));
@@ -87,6 +97,9 @@ final class ScalarKernel {
                 }
             } else if (!BvhLayout.isSphereLeaf(ref)) {
                 boolean closer = false;
+                if (COUNT) {
+                    s.blockTests += BvhLayout.blockCount(ref);
+                }
                 for (int b = BvhLayout.firstBlock(ref), end = b + BvhLayout.blockCount(ref); b < end; b++) {
                     int o = BLOCK * b, word = bits(blocks[o + BLOCK_PRIMS]), prim = BvhLayout.firstPrim(word), n = BvhLayout.primCount(word);
                     for (int lane = 0; lane < n; lane++) {
@@ -131,10 +144,16 @@ final class ScalarKernel {
         while (true) {
             if (ref >= 0) {
                 int o = NODE * ref;
+                if (COUNT) {
+                    s.nodeVisits++;
+                }
                 if (childKeys(nodes, o, s, tMaxBits, lanes) != 0) {
                     sp = pushAll(nodes, o, lanes, refs, sp);
                 }
             } else if (!BvhLayout.isSphereLeaf(ref)) {
+                if (COUNT) {
+                    s.blockTests += BvhLayout.blockCount(ref);
+                }
                 for (int b = BvhLayout.firstBlock(ref), end = b + BvhLayout.blockCount(ref); b < end; b++) {
                     int o = BLOCK * b, n = BvhLayout.primCount(bits(blocks[o + BLOCK_PRIMS]));
                     for (int lane = 0; lane < n; lane++) {

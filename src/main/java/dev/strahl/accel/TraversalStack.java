@@ -34,6 +34,19 @@ public final class TraversalStack {
     final Ray ray = new Ray();
     final Hit hit = new Hit();
 
+    /** What the scalar kernel visited, where it counts ({@link ScalarKernel#COUNT}). */
+    long nodeVisits, blockTests;
+
+    /** Node visits counted so far (only with {@code -Dstrahl.countVisits=true}, by the scalar kernel). */
+    public long nodeVisits() {
+        return nodeVisits;
+    }
+
+    /** Leaf blocks tested so far (as {@link #nodeVisits()}). */
+    public long blockTests() {
+        return blockTests;
+    }
+
     /** Creates the working memory of one thread's traversals. */
     public TraversalStack() {}
 
