@@ -55,15 +55,28 @@ public final class Simd {
 
     /** Whether this JVM compiles with C2 (the server compiler), which the lanes need to be fast. */
     public static boolean c2() {
-        try {
-            com.sun.management.HotSpotDiagnosticMXBean vm = java.lang.management.ManagementFactory.getPlatformMXBean(com.sun.management.HotSpotDiagnosticMXBean.class);
-            boolean tiered = Boolean.parseBoolean(vm.getVMOption("TieredCompilation").getValue());
-            return Boolean.parseBoolean(vm.getVMOption("UseCompiler").getValue())
-                    && (!tiered || Integer.parseInt(vm.getVMOption("TieredStopAtLevel").getValue()) >= 4)
-                    && !System.getProperty("java.vm.info", "").startsWith("interpreted");
-        } catch (RuntimeException | LinkageError e) {
-            return true;                                  // not HotSpot: assume a compiler that makes lanes fast
+        return c2(java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments());
+    }
+
+    /**
+     * Whether a JVM with these options compiles with C2: not interpreted only ({@code -Xint},
+     * {@code -XX:-UseCompiler}) and not stopped at C1 ({@code -XX:TieredStopAtLevel} below 4, as
+     * with {@code -XX:TieredStopAtLevel=1}). The JVM's options, not its diagnostic bean: that costs
+     * tens of milliseconds of start-up more.
+     */
+    public static boolean c2(java.util.List<String> jvmOptions) {
+        if (System.getProperty("java.vm.info", "").startsWith("interpreted")) {
+            return false;
         }
+        boolean c2 = true;
+        for (String o : jvmOptions) {
+            if (o.equals("-Xint") || o.equals("-XX:-UseCompiler")) {
+                c2 = false;
+            } else if (o.startsWith("-XX:TieredStopAtLevel=")) {
+                c2 = o.endsWith("=4") || o.endsWith("=-1");
+            }
+        }
+        return c2;
     }
 
     /** Touches the Vector API only when the module is present (checked before the call). */

@@ -57,10 +57,13 @@ final class SimdLauncher {
      */
     static int relaunch(String[] args) {
         if (ModuleLayer.boot().findModule(MODULE).isPresent() || ModuleFinder.ofSystem().find(MODULE).isEmpty()
-                || "false".equals(System.getProperty(Simd.PROPERTY)) || simdOff(args) || !Simd.c2()) {
+                || "false".equals(System.getProperty(Simd.PROPERTY)) || simdOff(args)) {
             return -1;
         }
         List<String> jvm = ManagementFactory.getRuntimeMXBean().getInputArguments();
+        if (!Simd.c2(jvm)) {
+            return -1;
+        }
         for (String a : jvm) {
             if (a.startsWith("-agentlib") || a.startsWith("-agentpath") || a.startsWith("-javaagent") || a.startsWith("-Xrunjdwp") || a.equals("-Xdebug")) {
                 return -1;
