@@ -31,8 +31,8 @@ import java.util.Map;
  * process group (both JVMs), {@code kill PID} only to this one; so that the child sees each signal
  * exactly once (the first asks a render to stop and write its image, a second exits at once),
  * the child ignores SIGINT and SIGTERM and this process forwards each one it gets as SIGUSR1 or
- * SIGUSR2, which the child takes for them ({@link #osSignal}). A child whose parent is gone
- * exits.
+ * SIGURG, which the child takes for them ({@link #osSignal}; not SIGUSR2, with which HotSpot
+ * suspends threads for the flight recorder's samples). A child whose parent is gone exits.
  *
  * <p>Not relaunched: {@code --simd off} or {@code -Dstrahl.simd=false} (the scalar kernel is
  * wanted anyway), a JDK without the module, a JVM without C2 ({@code -Xint},
@@ -48,7 +48,7 @@ final class SimdLauncher {
     static final String LAUNCHED = "strahl.launched";
     /** Set on the child: whether the launcher's stderr, which the child's reaches through a pipe, is a terminal. */
     static final String STDERR_TERMINAL = "strahl.stderr.terminal";
-    private static final int SIGUSR1_EXIT = 128 + 10, SIGUSR2_EXIT = 128 + 12;
+    private static final int SIGUSR1_EXIT = 128 + 10;
 
     /**
      * Runs the command in a JVM with the Vector API module if this one can use one and lacks it.
@@ -106,7 +106,7 @@ final class SimdLauncher {
         Thread pump = new Thread(() -> copyStderr(child.getErrorStream(), new FileOutputStream(FileDescriptor.err)), "strahl-stderr");
         pump.start();
         for (String name : new String[] {"INT", "TERM"}) {
-            handle(name, forward ? () -> forward(child, name.equals("INT") ? "USR1" : "USR2") : () -> { });
+            handle(name, forward ? () -> forward(child, name.equals("INT") ? "USR1" : "URG") : () -> { });
         }
         int code;
         while (true) {
@@ -118,8 +118,30 @@ final class SimdLauncher {
                 // only signals wake us, and those are forwarded: keep waiting
             }
         }
-        // A child ended by a forwarded signal before it could handle it ended as by that signal.
-        return code == SIGUSR1_EXIT ? Interrupts.SIGINT_EXIT : code == SIGUSR2_EXIT ? Interrupts.SIGTERM_EXIT : code;
+        if (jvm.stream().anyMatch(a -> a.contains("FlightRecord"))) {
+            dropRecordings();
+        }
+        // A child ended by a forwarded SIGINT before it could handle it ended as by that signal (SIGURG is ignored until then).
+        return code == SIGUSR1_EXIT ? Interrupts.SIGINT_EXIT : code;
+    }
+
+    /**
+     * Closes this JVM's flight recordings without writing them: the child, which got the same
+     * {@code -XX:StartFlightRecording}, has written its recording (the one of the work) to that
+     * file, and this JVM's, written when it ends (also on halt), would replace it.
+     */
+    private static void dropRecordings() {
+        try {
+            Class<?> recorder = Class.forName("jdk.jfr.FlightRecorder");
+            if ((Boolean) recorder.getMethod("isInitialized").invoke(null)) {
+                Object flightRecorder = recorder.getMethod("getFlightRecorder").invoke(null);
+                for (Object recording : (List<?>) recorder.getMethod("getRecordings").invoke(flightRecorder)) {
+                    Class.forName("jdk.jfr.Recording").getMethod("close").invoke(recording);
+                }
+            }
+        } catch (ReflectiveOperationException | RuntimeException | LinkageError e) {
+            // no flight recorder to quiet
+        }
     }
 
     /** Whether the arguments ask for the scalar kernel ({@code --simd off} or {@code --simd=off}). */
@@ -134,7 +156,7 @@ final class SimdLauncher {
 
     /**
      * In a JVM this launcher started with forwarding: SIGINT and SIGTERM (which the terminal's
-     * process group also delivers here) are ignored; SIGUSR1 and SIGUSR2 mean them, and until a
+     * process group also delivers here) are ignored; SIGUSR1 and SIGURG mean them, and until a
      * command installs its own handlers ({@link Interrupts}) end the JVM as those would (exit code
      * 130 or 143, shutdown hooks run). The JVM exits when its launcher is gone.
      */
@@ -148,7 +170,7 @@ final class SimdLauncher {
             handle("INT", null);
             handle("TERM", null);
             handle("USR1", () -> System.exit(Interrupts.SIGINT_EXIT));
-            handle("USR2", () -> System.exit(Interrupts.SIGTERM_EXIT));
+            handle("URG", () -> System.exit(Interrupts.SIGTERM_EXIT));
         }
     }
 
@@ -157,7 +179,7 @@ final class SimdLauncher {
         if (!"forward".equals(System.getProperty(LAUNCHED))) {
             return name;
         }
-        return name.equals("INT") ? "USR1" : name.equals("TERM") ? "USR2" : name;
+        return name.equals("INT") ? "USR1" : name.equals("TERM") ? "URG" : name;
     }
 
     private static void forward(Process child, String signal) {

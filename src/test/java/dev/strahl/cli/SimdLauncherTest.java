@@ -98,6 +98,34 @@ class SimdLauncherTest {
         assertThat(Files.readAllBytes(on)).as("the same bits").isEqualTo(Files.readAllBytes(off));
     }
 
+    /**
+     * A flight recording asked for on the command line is the child's, the one of the work: the
+     * launcher's own, which would overwrite it on exit, is dropped. (HotSpot samples threads for it
+     * with SIGUSR2, which the launcher therefore does not use for forwarding.)
+     */
+    @Test
+    void aFlightRecordingIsTheWorkingJvms() throws Exception {
+        Path jfr = dir.resolve("rec.jfr"), png = dir.resolve("rec.png");
+        Run run = strahl(List.of("-XX:StartFlightRecording=filename=" + jfr + ",settings=profile"), "render", SCENE, "-o", png.toString(),
+                "--width", "48", "--height", "48", "--spp", "32", "--threads", "1");
+        assertThat(run.code()).as(run.err()).isZero();
+        assertThat(png).isNotEmptyFile();
+        long renderSamples;
+        ModuleLayer.boot().findModule("jdk.jfr").ifPresent(SimdLauncherTest.class.getModule()::addReads);   // the test module reads the recording
+        try (var recording = new jdk.jfr.consumer.RecordingFile(jfr)) {
+            long n = 0;
+            while (recording.hasMoreEvents()) {
+                var e = recording.readEvent();
+                if (e.getEventType().getName().equals("jdk.ExecutionSample") && e.getStackTrace() != null
+                        && e.getStackTrace().getFrames().stream().anyMatch(f -> f.getMethod().getType().getName().startsWith("dev.strahl.integrator"))) {
+                    n++;
+                }
+            }
+            renderSamples = n;
+        }
+        assertThat(renderSamples).as("samples of the render in the recording").isPositive();
+    }
+
     @Test
     void noSecondJvmWithoutC2() throws Exception {
         Run run = strahl(List.of("-XX:TieredStopAtLevel=1"), "--version");
