@@ -26,8 +26,10 @@ embree.meshes.<mesh>.<set>.rays_per_second (median/min/max/runs), with versions 
    runs; --strahl-arg passes more, e.g. --strahl-arg=--simd --strahl-arg=off), A B A B. The figures
    of every round are under alternating.rounds, and per mesh and set the ratio strahl/Embree of
    each round (a pair run minutes apart, so that the machine's drift cancels) with its median, min
-   and max under alternating.ratios; embree.meshes then holds the medians over the rounds, for
-   `strahl bench --anchors`. Also recorded: the CPU's vector flags, strahl's JVM and ray kernel.
+   and max under alternating.ratios, of rays per second of wall time and of the tracing thread's CPU
+   time (on a shared machine the second leaves out what other processes take from the core);
+   embree.meshes then holds the medians over the rounds, for `strahl bench --anchors`. Also
+   recorded: the CPU's vector flags, strahl's JVM and ray kernel.
 
 Usage (from the repository root, after `mvn -B -q -DskipTests package`):
     python3 docs/bench/anchors.py --out anchors.json
@@ -115,15 +117,17 @@ def embree_mesh(work, desc, runs):
         tmax = np.ascontiguousarray(np.minimum(rays[:, 6], np.float32(3e38)))
         query = 'OCCLUDED' if s['any_hit'] else 'INTERSECT'
         scene.run(o[:4096], d[:4096], dists=tmax[:4096].copy(), query=query)   # warm-up
-        rates, hits = [], None
+        rates, cpu_rates, hits = [], [], None
         for run in range(runs):
             dist = tmax.copy()
-            t0 = time.perf_counter()
+            t0, c0 = time.perf_counter(), time.thread_time()
             res = scene.run(o, d, dists=dist, query=query)
-            rates.append(len(rays) / (time.perf_counter() - t0))
+            c1, t1 = time.thread_time(), time.perf_counter()
+            rates.append(len(rays) / (t1 - t0))
+            cpu_rates.append(len(rays) / (c1 - c0))
             hits = int(np.count_nonzero(res >= 0))
         out[s['name']] = {'query': 'any-hit' if s['any_hit'] else 'closest-hit', 'rays': len(rays), 'hits': hits,
-                          'rays_per_second': stat(rates)}
+                          'rays_per_second': stat(rates), 'rays_per_cpu_second': stat(cpu_rates)}
     # the binding's floor: the incoherent set's directions from origins beyond the box, pointing away
     rays = np.fromfile(os.path.join(work, f'{name}.incoherent.f32'), dtype='<f4').reshape(-1, 7)
     d = np.ascontiguousarray(np.abs(rays[:, 3:6]) + np.float32(1e-3))
@@ -224,7 +228,7 @@ def alternate(args, work, descs, data):
             bench = json.load(fh)
         os.remove(out)
         strahl_info = bench['machine']
-        strahl = {m['name']: {x['set']: x['rays_per_second'] for x in m['rays'] if x['threads'] == 1} for m in bench['meshes']}
+        strahl = {m['name']: {x['set']: x for x in m['rays'] if x['threads'] == 1} for m in bench['meshes']}
         rounds.append({'embree': embree, 'strahl': strahl, 'load_average': os.getloadavg()[0]})
     ratios, medians = {}, {}
     for desc in descs:
@@ -232,17 +236,22 @@ def alternate(args, work, descs, data):
         medians[name] = {k: v for k, v in rounds[0]['embree'][name].items() if not isinstance(v, dict) or 'query' not in v}
         for s in desc['sets']:
             set_name = s['name']
-            e = [r['embree'][name][set_name]['rays_per_second']['median'] for r in rounds]
-            j = [r['strahl'].get(name, {}).get(set_name, {}).get('median') for r in rounds]
-            if None in j:
-                continue
-            ratios.setdefault(name, {})[set_name] = dict(stat([b / a for a, b in zip(e, j)]),
-                                                         embree=stat(e), strahl=stat(j))
-            medians[name][set_name] = dict(rounds[0]['embree'][name][set_name], rays_per_second=stat(e))
+            entry = {}
+            for kind in ('rays_per_second', 'rays_per_cpu_second'):
+                e = [r['embree'][name][set_name][kind]['median'] for r in rounds]
+                j = [r['strahl'].get(name, {}).get(set_name, {}).get(kind, {}).get('median') for r in rounds]
+                if None not in j:
+                    entry[kind] = dict(stat([b / a for a, b in zip(e, j)]), embree=stat(e), strahl=stat(j))
+            if entry:
+                ratios.setdefault(name, {})[set_name] = entry
+            medians[name][set_name] = dict(rounds[0]['embree'][name][set_name],
+                                           rays_per_second=stat([r['embree'][name][set_name]['rays_per_second']['median'] for r in rounds]))
     for name, sets in ratios.items():
-        for set_name, r in sets.items():
-            print(f"anchors: {name:30s} {set_name:10s} strahl/Embree {r['median']:.2f} [{r['min']:.2f}, {r['max']:.2f}]"
-                  f"  (Embree {r['embree']['median'] / 1e6:.2f} M/s, strahl {r['strahl']['median'] / 1e6:.2f} M/s)", file=sys.stderr)
+        for set_name, entry in sets.items():
+            for kind, r in entry.items():
+                print(f"anchors: {name:30s} {set_name:10s} {'wall' if kind == 'rays_per_second' else 'CPU ':4s} strahl/Embree"
+                      f" {r['median']:.2f} [{r['min']:.2f}, {r['max']:.2f}]  (Embree {r['embree']['median'] / 1e6:.2f} M/s,"
+                      f" strahl {r['strahl']['median'] / 1e6:.2f} M/s)", file=sys.stderr)
     return {'rounds': rounds, 'ratios': ratios, 'embree_medians': medians, 'strahl_machine': strahl_info,
             'strahl_arguments': args.strahl_arg}
 

@@ -7,7 +7,6 @@ import static dev.strahl.accel.BvhLayout.LANES;
 import static dev.strahl.accel.BvhLayout.NODE;
 import static dev.strahl.accel.BvhLayout.WIDTH;
 
-import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.RayTriangle;
@@ -31,9 +30,9 @@ final class ScalarKernel {
 
     /**
      * Largest error of a float slab distance in ulps, with room to spare: the origin is bounded
-     * by the floats just below and above it and each slab uses the bound that makes its distance
-     * err outwards; what remains is the rounding of one subtraction, one product and the float
-     * inverse (under 2 ulp on each end).
+     * by floats on either side of it ({@link TraversalStack#prepare}) and each slab uses the bound
+     * that makes its distance err outwards; what remains is the rounding of one subtraction, one
+     * product and the float inverse (under 2 ulp on each end).
      */
     static final int MARGIN_ULPS = 8;
 

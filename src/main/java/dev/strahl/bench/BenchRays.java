@@ -36,8 +36,8 @@ public final class BenchRays {
     /** Rays in flat arrays: origin, direction, tMax (7 doubles per ray); shadow rays ask only for any hit. */
     public record RaySet(String name, double[] data, int count, boolean anyHit) {}
 
-    /** What tracing a set gave: wall time, hits, and an order-independent checksum of the hit primitives. */
-    public record Result(double seconds, long hits, long checksum) {}
+    /** What tracing a set gave: wall time, the tracing threads' CPU time, hits, and an order-independent checksum of the hit primitives. */
+    public record Result(double seconds, double cpuSeconds, long hits, long checksum) {}
 
     /** Camera rays through jittered points of a width × height film, {@code spp} per pixel. */
     public static RaySet primary(Camera camera, int width, int height, int spp, long seed) {
@@ -172,16 +172,17 @@ public final class BenchRays {
         long start = System.nanoTime();
         List<Future<long[]>> futures = pool.invokeAll(tasks);
         double seconds = (System.nanoTime() - start) * 1e-9;
-        long hits = 0, checksum = 0;
+        long hits = 0, checksum = 0, cpu = 0;
         for (Future<long[]> f : futures) {
             try {
                 hits += f.get()[0];
                 checksum += f.get()[1];
+                cpu += f.get()[2];
             } catch (ExecutionException e) {
                 throw new IllegalStateException("ray kernel failed: " + e.getCause(), e.getCause());
             }
         }
-        return new Result(seconds, hits, checksum);
+        return new Result(seconds, cpu * 1e-9, hits, checksum);
     }
 
     /** Rays per batch query: the thread's batch is filled from the set and traced with one call. */
@@ -192,6 +193,8 @@ public final class BenchRays {
         TraversalStack stack = new TraversalStack();
         double[] data = set.data();
         long hits = 0, checksum = 0;
+        java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
+        long cpu0 = mx.getCurrentThreadCpuTime();
         for (int first = from; first < to; first += BATCH) {
             int n = Math.min(BATCH, to - first);
             for (int j = 0, k = 7 * first; j < n; j++, k += 7) {
@@ -215,7 +218,7 @@ public final class BenchRays {
                 }
             }
         }
-        return new long[] {hits, checksum};
+        return new long[] {hits, checksum, mx.getCurrentThreadCpuTime() - cpu0};
     }
 
     /**

@@ -265,6 +265,9 @@ public final class BenchReport {
                     json.writeNumberField("rays", x.rays());
                     json.writeNumberField("hits", x.hits());
                     stat(json, "rays_per_second", x.raysPerSecond());
+                    if (x.raysPerCpuSecond() != null) {
+                        stat(json, "rays_per_cpu_second", x.raysPerCpuSecond());
+                    }
                     json.writeEndObject();
                 }
                 json.writeEndArray();

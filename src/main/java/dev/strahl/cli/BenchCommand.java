@@ -359,11 +359,12 @@ final class BenchCommand implements Callable<Integer> {
             BenchRays.trace(bvh, set, counts.last(), pool);                          // warm-up
             BenchRays.Result reference = null;
             for (int t : counts) {
-                double[] rate = new double[timedRuns];
+                double[] rate = new double[timedRuns], cpuRate = new double[timedRuns];
                 for (int run = 0; run < timedRuns; run++) {
                     progress.step(String.format("%s: %s rays, %d thread%s, run %d/%d", name, set.name(), t, t == 1 ? "" : "s", run + 1, timedRuns));
                     BenchRays.Result res = BenchRays.trace(bvh, set, t, pool);
                     rate[run] = set.count() / res.seconds();
+                    cpuRate[run] = set.count() / res.cpuSeconds();          // per core: all threads' CPU time
                     if (reference == null) {
                         reference = res;
                     } else if (res.hits() != reference.hits() || res.checksum() != reference.checksum()) {
@@ -371,7 +372,7 @@ final class BenchCommand implements Callable<Integer> {
                         failures.add(name + ": " + check);
                     }
                 }
-                rays.add(new BenchResults.Rays(set.name(), t, BenchResults.Stat.of(rate), reference.hits(), set.count()));
+                rays.add(new BenchResults.Rays(set.name(), t, BenchResults.Stat.of(rate), reference.hits(), set.count(), BenchResults.Stat.of(cpuRate)));
             }
         }
         r.meshes.add(new BenchResults.Mesh(name, mesh.source(), g.triangleCount(), mesh.loadSeconds(), BenchResults.Stat.of(build), bytes, rays, check));
