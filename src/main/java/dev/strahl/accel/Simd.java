@@ -48,9 +48,9 @@ public final class Simd {
         return enabled();
     }
 
-    /** The kernel's name for reports: "simd (AVX-512, 256-bit lanes)" style, or "scalar". */
+    /** The kernel's name for reports: the SIMD kernel's lanes and the processor's vector width, or "scalar". */
     public static String describe(boolean simd) {
-        return simd ? "simd (" + Lanes.preferredBits() + "-bit vectors, 8 float lanes per node, 4 double lanes per leaf block)" : "scalar";
+        return simd ? "simd (256-bit lanes: 8 floats a node test, 4 doubles a leaf block; " + Lanes.preferredBits() + "-bit CPU vectors)" : "scalar";
     }
 
     /** Whether this JVM compiles with C2 (the server compiler), which the lanes need to be fast. */
