@@ -5,6 +5,7 @@ import dev.strahl.image.ToneMapping;
 import dev.strahl.io.ImageWriters;
 import dev.strahl.io.SceneLoader;
 import dev.strahl.io.image.ImageLimits;
+import dev.strahl.io.image.Printable;
 import dev.strahl.io.json.EnvironmentMaps;
 import dev.strahl.io.json.SceneFile;
 import dev.strahl.io.json.SceneSettings;
@@ -220,7 +221,7 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     private int fail(PrintWriter err, Throwable e, String message, int code) {
-        err.println("strahl: " + message);
+        err.println("strahl: " + Printable.line(message));       // one line, whatever a file put into the message
         if (debug.enabled && e != null) {
             e.printStackTrace(err);
         }
@@ -269,7 +270,7 @@ final class RenderCommand implements Callable<Integer> {
         }
         if (!quiet) {
             for (String note : s.notes()) {
-                err.println("strahl: " + (note.startsWith("warning: ") ? note : "note: " + note));
+                err.println("strahl: " + Printable.line(note.startsWith("warning: ") ? note : "note: " + note));
             }
             err.flush();
         }
@@ -282,6 +283,8 @@ final class RenderCommand implements Callable<Integer> {
         } catch (OutOfMemoryError e) {
             throw new IllegalArgumentException(scene + ": the scene does not fit in the Java heap (at most "
                     + ImageLimits.bytes(Runtime.getRuntime().maxMemory()) + "): give Java more memory (java -Xmx...)", e);
+        } catch (StackOverflowError e) {
+            throw new IllegalArgumentException(scene + ": the scene is nested too deeply to read (the reader's stack overflowed)", e);
         }
     }
 

@@ -94,7 +94,7 @@ final class ViewCommand implements Callable<Integer> {
             Viewer.open(options(), HeapCheck::checkFilm).awaitClosed();   // refuses a film too large for the heap, as render does
             return 0;
         } catch (SceneException | IllegalArgumentException e) {
-            err.println("strahl: " + e.getMessage());
+            err.println("strahl: " + dev.strahl.io.image.Printable.line(e.getMessage()));
             if (debug.enabled) {
                 e.printStackTrace(err);
             }

@@ -1,8 +1,5 @@
 package dev.strahl.io.exr;
 
-import java.util.ArrayList;
-import java.util.List;
-
 /**
  * The Huffman code of PIZ. The block starts with five little-endian uint32: the smallest and the
  * largest symbol of the code table (the largest is the run-length escape), the table's length in
@@ -105,9 +102,12 @@ final class PizHuffman {
 
     private static void decodeData(BitReader r, long bits, int[] lengths, long[] codes, int first, int escape, char[] out)
             throws CorruptDataException {
-        // codes of up to TABLE_BITS bits: one table lookup; longer ones: a short list per prefix
+        // codes of up to TABLE_BITS bits: one table lookup. Longer ones are found by their length: the
+        // codes of one length are consecutive in symbol order (canonical), so a code of length l is
+        // the symbol at (code - the length's first code) in that length's list, if that is in range.
+        // (A list scan per prefix instead made a hostile table of many long codes cost minutes.)
         int[] table = new int[1 << TABLE_BITS];
-        List<List<Integer>> longCodes = new ArrayList<>();
+        int[] longCount = new int[MAX_LENGTH + 1];
         for (int s = first; s <= escape; s++) {
             int l = lengths[s];
             if (l == 0) {
@@ -127,11 +127,23 @@ final class PizHuffman {
                 if (table[prefix] > 0) {
                     throw new CorruptDataException("PIZ Huffman table: two codes share a prefix");
                 }
-                if (table[prefix] == 0) {
-                    table[prefix] = LONG - longCodes.size();
-                    longCodes.add(new ArrayList<>());
+                table[prefix] = LONG;
+                longCount[l]++;
+            }
+        }
+        int[][] longSymbols = new int[MAX_LENGTH + 1][];
+        long[] firstLongCode = new long[MAX_LENGTH + 1];
+        for (int l = TABLE_BITS + 1; l <= MAX_LENGTH; l++) {
+            longSymbols[l] = new int[longCount[l]];
+            longCount[l] = 0;
+        }
+        for (int s = first; s <= escape; s++) {
+            int l = lengths[s];
+            if (l > TABLE_BITS) {
+                if (longCount[l] == 0) {
+                    firstLongCode[l] = codes[s];
                 }
-                longCodes.get(LONG - table[prefix]).add(s);
+                longSymbols[l][longCount[l]++] = s;
             }
         }
         int o = 0;
@@ -143,12 +155,12 @@ final class PizHuffman {
             if (e > 0) {
                 symbol = e >>> 6;
                 l = e & 63;
-            } else if (e < 0) {
-                for (int s : longCodes.get(LONG - e)) {
-                    if (lengths[s] <= left && r.peek(lengths[s]) == codes[s]) {
-                        symbol = s;
-                        l = lengths[s];
-                        break;
+            } else if (e == LONG) {
+                for (int length = TABLE_BITS + 1; length <= MAX_LENGTH && length <= left && symbol < 0; length++) {
+                    long k = r.peek(length) - firstLongCode[length];
+                    if (k >= 0 && k < longCount[length]) {
+                        symbol = longSymbols[length][(int) k];
+                        l = length;
                     }
                 }
             }

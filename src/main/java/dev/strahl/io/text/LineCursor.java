@@ -1,5 +1,6 @@
 package dev.strahl.io.text;
 
+import dev.strahl.io.image.Printable;
 import dev.strahl.scene.SceneException;
 import java.nio.file.Path;
 
@@ -91,7 +92,8 @@ public final class LineCursor {
         return "'" + abbreviate(s) + "'";
     }
 
+    /** At most {@code QUOTE_MAX} characters of {@code s}, invisible ones (control characters of a binary file) escaped. */
     public static String abbreviate(String s) {
-        return s.length() <= QUOTE_MAX ? s : s.substring(0, QUOTE_MAX) + "...";
+        return Printable.line(s.length() <= QUOTE_MAX ? s : s.substring(0, QUOTE_MAX)) + (s.length() <= QUOTE_MAX ? "" : "...");
     }
 }
