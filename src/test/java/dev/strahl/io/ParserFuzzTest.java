@@ -184,7 +184,7 @@ class ParserFuzzTest {
         Fuzzer.Report report = new Fuzzer(name, target, allowed, work.resolve(fileName))
                 .run(inputs, Fuzzer.budget(), Fuzzer.inputs(), Fuzzer.seed());
         System.out.println(report);
-        Path reports = Path.of("target", "fuzz-reports");
+        Path reports = Fuzzer.output().resolve("fuzz-reports");
         Files.createDirectories(reports);
         Files.writeString(reports.resolve(name + ".txt"), report + "\n", StandardCharsets.UTF_8);
         assertThat(report.findings()).as(report.toString()).isEmpty();

@@ -25,7 +25,7 @@ import net.jqwik.api.RandomGenerator;
  * an input or reject it with the project's own exception; anything else is a finding: another
  * exception or error (including {@link OutOfMemoryError}), or no answer within the per-input
  * timeout (a hang). Findings are shrunk (lines, then bytes, removed while the failure stays) and
- * saved under {@code target/fuzz-findings/NAME/}, to be kept as regression cases.
+ * saved under {@code target/fuzz-findings/NAME/} ({@link #output}), to be kept as regression cases.
  *
  * <p>A rejection must also read as the one line a user is shown: its message may not hold a control
  * character or a line break (a reader that quotes a hostile file's bytes as they are fails here) and
@@ -88,6 +88,11 @@ public final class Fuzzer {
     /** The time budget per parser; {@code Duration.ZERO} for none. */
     public static Duration budget() {
         return Duration.ofMillis((long) (1000 * Double.parseDouble(System.getProperty("strahl.fuzz.seconds", "" + DEFAULT_SECONDS))));
+    }
+
+    /** Where reports and findings go: {@code -Dstrahl.fuzz.out}, by default {@code target}. */
+    public static Path output() {
+        return Path.of(System.getProperty("strahl.fuzz.out", "target"));
     }
 
     /** The number of inputs per parser; 0 for no limit. */
@@ -217,7 +222,7 @@ public final class Fuzzer {
     }
 
     private Finding save(byte[] input, String failure) throws IOException {
-        Path dir = Path.of("target", "fuzz-findings", name);
+        Path dir = output().resolve("fuzz-findings").resolve(name);
         Files.createDirectories(dir);
         String fileName = file.getFileName().toString();
         String ext = fileName.substring(fileName.lastIndexOf('.'));

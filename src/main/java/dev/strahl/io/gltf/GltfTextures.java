@@ -1,5 +1,6 @@
 package dev.strahl.io.gltf;
 
+import dev.strahl.io.image.FileReads;
 import dev.strahl.io.image.Printable;
 import dev.strahl.scene.SceneException;
 import dev.strahl.scene.Texture;
@@ -164,20 +165,48 @@ final class GltfTextures {
             }
             throw new SceneException(doc.file, image.path() + ": cannot read the texture image of material " + Printable.quote(material)
                     + ": " + Printable.line(m), e);
+        } finally {
+            if (embedded != null) {
+                forget(path);
+            }
         }
         failed.put(index, true);
         return null;
+    }
+
+    /**
+     * Deletes an embedded image's temporary file once it is read (its pixels are in memory), so that a
+     * process that loads many assets (the viewer, a server, the fuzzer) leaves no files behind; kept
+     * (until exit) only while a cluster render records the scene's files, which ships them.
+     */
+    private void forget(Path file) {
+        if (FileReads.isRecording()) {
+            return;
+        }
+        try {
+            Files.deleteIfExists(file);
+            if (tempFolder != null) {
+                Files.deleteIfExists(tempFolder);       // once empty
+                tempFolder = null;
+            }
+        } catch (IOException e) {
+            // not empty (another image of this asset is being read), or gone: the exit hook or the next call removes it
+        }
     }
 
     private Path embedded(int index, byte[] bytes) throws SceneException {
         try {
             if (tempFolder == null) {
                 tempFolder = Files.createTempDirectory("strahl-gltf");
-                tempFolder.toFile().deleteOnExit();
+                if (FileReads.isRecording()) {
+                    tempFolder.toFile().deleteOnExit();
+                }
             }
             Path f = tempFolder.resolve("image" + index);
             Files.write(f, bytes);
-            f.toFile().deleteOnExit();
+            if (FileReads.isRecording()) {
+                f.toFile().deleteOnExit();
+            }
             return f;
         } catch (IOException e) {
             throw new SceneException(doc.file, "cannot store embedded image " + index + " in a temporary file: " + e.getMessage(), e);
