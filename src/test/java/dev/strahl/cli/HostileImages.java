@@ -316,10 +316,48 @@ final class HostileImages {
             }
         }
         return List.of(
+                hostile("scan-bomb.jpg", scanBomb(), "300 scans"),
                 hostile("cut.jpg", Arrays.copyOf(ok, ok.length / 2), "JPEG"),
                 hostile("header-cut.jpg", Arrays.copyOf(ok, 100), "JPEG"),
                 hostile("scrambled.jpg", scrambled, "JPEG"),
                 hostile("bomb-65000.jpg", bomb, "65000x65000"));
+    }
+
+    /**
+     * A progressive JPEG whose last scan is repeated until it has 300: the decoder passes over the
+     * whole image once per scan (a 4000x4000 one of 2000 scans, 125 kB, took it 146 s).
+     */
+    static byte[] scanBomb() {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        try (var stream = ImageIO.createImageOutputStream(out)) {
+            var writer = ImageIO.getImageWritersByFormatName("jpeg").next();
+            var param = writer.getDefaultWriteParam();
+            param.setProgressiveMode(javax.imageio.ImageWriteParam.MODE_DEFAULT);
+            writer.setOutput(stream);
+            writer.write(null, new javax.imageio.IIOImage(noisy(64, 64), null, null), param);
+            writer.dispose();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        byte[] b = out.toByteArray();
+        int lastScan = -1;
+        for (int i = 2; i + 1 < b.length; i++) {
+            if ((b[i] & 0xff) == 0xff && (b[i + 1] & 0xff) == 0xda) {
+                lastScan = i;
+            }
+        }
+        int end = b.length - 2;                          // the EOI marker
+        ByteArrayOutputStream bomb = new ByteArrayOutputStream();
+        bomb.write(b, 0, end);
+        int scans = 0;
+        for (int i = 2; i + 1 < end; i++) {
+            scans += (b[i] & 0xff) == 0xff && (b[i + 1] & 0xff) == 0xda ? 1 : 0;
+        }
+        for (; scans < 300; scans++) {
+            bomb.write(b, lastScan, end - lastScan);
+        }
+        bomb.write(b, end, 2);
+        return bomb.toByteArray();
     }
 
     static byte[] concat(byte[]... parts) {

@@ -128,10 +128,11 @@ public final class TextureImages {
     /**
      * Checks the size the header claims before the decoder allocates anything: against one array,
      * against the file (a PNG's zlib data expand at most about 1032 times; a JPEG codes every 8x8
-     * block in one bit at the least), and against the heap, which must hold the decoder's raster,
-     * the float samples and the texture's second copy of them (flipped, or sRGB-decoded).
+     * block in one bit at the least), against the time a JPEG's scans take ({@link JpegScans}), and
+     * against the heap, which must hold the decoder's raster, the float samples and the texture's
+     * second copy of them (flipped, or sRGB-decoded).
      */
-    private static void checkSize(Path file, long length, String format, int[] ihdr, int width, int height) throws ImageFormatException {
+    private static void checkSize(Path file, long length, String format, int[] ihdr, int width, int height) throws IOException {
         int channels = 3;                    // a JPEG's, at the most (grey or colour; CMYK is refused)
         int rasterBytes = 3;                 // the decoder's bytes per pixel
         if (ihdr != null) {
@@ -151,6 +152,7 @@ public final class TextureImages {
             if (format.equals("JPEG")) {
                 ImageLimits.checkFileHolds(file, width, height, (double) width * height, length, JPEG_PIXELS_PER_BYTE,
                         "JPEG coding (one bit per 8x8 block at the least)");
+                JpegScans.check(file, width, height);
             }
         }
         long pixels = (long) width * height;
