@@ -184,6 +184,7 @@ public final class ExrReader {
         byte[] packed = new byte[0];
         int compressed;
         final Inflater inflater = new Inflater();
+        final Piz.Scratch piz = new Piz.Scratch();
 
         ChunkDecoder(ExrInput in, ExrHeader h, int maxRaw, long tableEnd) {
             this.in = in;
@@ -247,7 +248,7 @@ public final class ExrReader {
                     ExrCodecs.inflate(inflater, packed, size, scratch, rawSize);
                     ExrCodecs.fromPredicted(scratch, raw, rawSize);
                 }
-                case PIZ -> Piz.decode(packed, size, raw, rawSize, width, lines, h.channels());
+                case PIZ -> Piz.decode(packed, size, raw, rawSize, width, lines, h.channels(), piz);
                 default -> throw new IllegalStateException("not a readable compression: " + h.compression());
             }
         }

@@ -18,7 +18,7 @@ package dev.strahl.io.exr;
 final class PizHuffman {
     private static final int MAX_SYMBOL = 1 << 16;       // the escape may be one past the largest 16-bit value
     private static final int MAX_LENGTH = 58;
-    private static final int TABLE_BITS = 14;
+    static final int TABLE_BITS = 14;
     private static final int LONG = -1;                 // a table entry that starts codes longer than TABLE_BITS
 
     private PizHuffman() {
@@ -26,6 +26,11 @@ final class PizHuffman {
 
     /** Decodes {@code in[off, off + length)} into all of {@code out}. */
     static void decode(byte[] in, int off, int length, char[] out) throws CorruptDataException {
+        decode(in, off, length, out, new int[1 << TABLE_BITS]);
+    }
+
+    /** As above, with {@code lookup} (2^TABLE_BITS entries, any content) as the room of the decoding table. */
+    static void decode(byte[] in, int off, int length, char[] out, int[] lookup) throws CorruptDataException {
         if (length == 0) {
             if (out.length != 0) {
                 throw new CorruptDataException("PIZ Huffman data are empty");
@@ -49,7 +54,7 @@ final class PizHuffman {
             throw new CorruptDataException("PIZ Huffman data claim " + bits + " bits, but " + available + " follow");
         }
         long[] codes = canonicalCodes(lengths, (int) first, (int) escape);
-        decodeData(new BitReader(in, dataStart, off + length), bits, lengths, codes, (int) first, (int) escape, out);
+        decodeData(new BitReader(in, dataStart, off + length), bits, lengths, codes, (int) first, (int) escape, out, lookup);
     }
 
     private static long u32(byte[] b, int at) {
@@ -100,13 +105,13 @@ final class PizHuffman {
         return codes;
     }
 
-    private static void decodeData(BitReader r, long bits, int[] lengths, long[] codes, int first, int escape, char[] out)
+    private static void decodeData(BitReader r, long bits, int[] lengths, long[] codes, int first, int escape, char[] out, int[] table)
             throws CorruptDataException {
         // codes of up to TABLE_BITS bits: one table lookup. Longer ones are found by their length: the
         // codes of one length are consecutive in symbol order (canonical), so a code of length l is
         // the symbol at (code - the length's first code) in that length's list, if that is in range.
         // (A list scan per prefix instead made a hostile table of many long codes cost minutes.)
-        int[] table = new int[1 << TABLE_BITS];
+        java.util.Arrays.fill(table, 0);
         int[] longCount = new int[MAX_LENGTH + 1];
         for (int s = first; s <= escape; s++) {
             int l = lengths[s];
