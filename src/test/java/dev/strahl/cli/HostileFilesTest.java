@@ -46,7 +46,7 @@ class HostileFilesTest {
         List<Arguments> cases = new ArrayList<>();
         for (Hostile h : HostileImages.all()) {
             boolean environment = List.of("exr", "hdr", "pfm").contains(h.format());
-            List<Use> uses = environment ? List.of(Use.ENVMAP, Use.SCENE_ENVMAP, Use.MAP_KD)
+            List<Use> uses = environment ? List.of(Use.ENVMAP, Use.SCENE_ENVMAP, Use.MAP_KD, Use.SCENE_TEXTURE)
                     : List.of(Use.MAP_KD, Use.SCENE_TEXTURE, Use.GLTF_FILE, Use.GLTF_DATA_URI, Use.GLB_VIEW, Use.ENVMAP);
             for (Use use : uses) {
                 cases.add(Arguments.of(h, use));
@@ -63,7 +63,7 @@ class HostileFilesTest {
         List<String> args = new ArrayList<>();
         Path named = image;                  // the file the line must name
         // a PNG as an environment map, an EXR as a texture: refused for its format, whatever its content
-        boolean wrongKind = use == Use.MAP_KD && List.of("exr", "hdr", "pfm").contains(h.format())
+        boolean wrongKind = (use == Use.MAP_KD || use == Use.SCENE_TEXTURE) && List.of("exr", "hdr", "pfm").contains(h.format())
                 || use == Use.ENVMAP && !List.of("exr", "hdr", "pfm").contains(h.format());
         switch (use) {
             case ENVMAP -> {
@@ -150,6 +150,9 @@ class HostileFilesTest {
         write(in.resolve("s.json"), "{\"shapes\": [" + SPHERE + "], \"materials\": {\"m\": {\"type\": \"diffuse\", \"albedo\": {\"texture\":"
                 + " \"gone.jpg\"}}}, \"environment\": [1, 1, 1]}");
         assertWarned(in.resolve("s.json"), in.resolve("gone.jpg"));
+        write(in.resolve("s.json"), "{\"shapes\": [" + SPHERE + "], \"materials\": {\"m\": {\"type\": \"diffuse\", \"albedo\": {\"texture\":"
+                + " \"gone.exr\"}}}, \"environment\": [1, 1, 1]}");
+        assertWarned(in.resolve("s.json"), in.resolve("gone.exr"));
         Map<String, byte[]> gltf = HostileGltf.textured("gone.png", new byte[0], ImageUse.FILE);
         write(in.resolve("t.gltf"), gltf.get("t.gltf"));
         assertWarned(in.resolve("t.gltf"), in.resolve("gone.png"));

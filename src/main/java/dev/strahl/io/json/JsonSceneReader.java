@@ -240,11 +240,7 @@ public final class JsonSceneReader {
     private TextureRef textureRef(JsonNode node, String key, boolean colour) throws SceneException {
         Map<String, JsonNode> t = v.object(node, key);
         v.allowOnly(t, key, colour ? TEXTURE_KEYS : Set.of("texture", "uvScale"));
-        String name = v.string(v.require(t, "texture", node), key + ".texture");
-        String lower = name.toLowerCase(Locale.ROOT);
-        if (!lower.endsWith(".png") && !lower.endsWith(".jpg") && !lower.endsWith(".jpeg")) {
-            throw new SceneException(file, t.get("texture").line, "'" + key + ".texture' must name a .png, .jpg or .jpeg image, got '" + name + "'");
-        }
+        String name = v.string(v.require(t, "texture", node), key + ".texture");       // PNG or JPEG: told by content when read
         double su = 1, sv = 1;
         if (t.containsKey("uvScale")) {
             double[] s = v.numbers(t.get("uvScale"), key + ".uvScale", 2);
