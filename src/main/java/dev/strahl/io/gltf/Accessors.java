@@ -124,17 +124,10 @@ final class Accessors {
      * claim any count in a few bytes of JSON, so the claim is checked against the heap first.
      */
     private static void checkHeap(GltfJson a, int count, int n) throws SceneException {
-        long need = 12L * count * n;
-        Runtime rt = Runtime.getRuntime();
-        long free = rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
-        if (need > free) {
-            System.gc();                      // what is in use may be mostly garbage: measure once more
-            free = rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
-        }
-        if (need > free) {
-            throw a.error("count " + count + " (" + n + " components each" + (a.has("bufferView") ? "" : ", no bufferView: zeros")
-                    + ") needs " + ImageLimits.bytes(need) + ", but the Java heap has " + ImageLimits.bytes(Math.max(0, free))
-                    + " free of at most " + ImageLimits.bytes(rt.maxMemory()) + ": too large, or a bomb");
+        String shortfall = ImageLimits.heapShortfall(12L * count * n);
+        if (shortfall != null) {
+            throw a.error("count " + count + " (" + n + " components each" + (a.has("bufferView") ? "" : ", no bufferView: zeros") + ") "
+                    + shortfall);
         }
     }
 

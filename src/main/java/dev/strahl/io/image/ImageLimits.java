@@ -28,16 +28,29 @@ public final class ImageLimits {
      */
     public static void checkAllocation(Path file, long width, long height, int channels, long extraBytes) throws ImageFormatException {
         checkArraySize(file, width, height, channels);
-        long need = width * height * channels * Float.BYTES + extraBytes;
-        if (need > free()) {
-            System.gc();                      // what is in use may be mostly garbage: measure once more
-            long free = free();
-            if (need > free) {
-                throw new ImageFormatException(file, String.format(Locale.ROOT, "a %dx%d image with %d channel(s) needs %s, but the"
-                        + " Java heap has %s free of at most %s: give Java more memory (java -Xmx...)", width, height, channels,
-                        bytes(need), bytes(free), bytes(Runtime.getRuntime().maxMemory())));
-            }
+        String shortfall = heapShortfall(width * height * channels * Float.BYTES + extraBytes);
+        if (shortfall != null) {
+            throw new ImageFormatException(file, String.format(Locale.ROOT, "a %dx%d image with %d channel(s) %s", width, height,
+                    channels, shortfall));
         }
+    }
+
+    /**
+     * Whether {@code need} bytes fit in the heap that is free (measured once more after a garbage
+     * collection if they seem not to: what is in use may be mostly garbage).
+     *
+     * @param need bytes about to be allocated
+     * @return null if they fit, else the end of a message: "needs 2.1 GiB, but the Java heap has 1.9
+     *         GiB free of at most 2.0 GiB: give Java more memory (java -Xmx...)"
+     */
+    public static String heapShortfall(long need) {
+        if (need <= free()) {
+            return null;
+        }
+        System.gc();
+        long free = free();
+        return need <= free ? null : String.format(Locale.ROOT, "needs %s, but the Java heap has %s free of at most %s: give Java"
+                + " more memory (java -Xmx...)", bytes(need), bytes(Math.max(0, free)), bytes(Runtime.getRuntime().maxMemory()));
     }
 
     /**
