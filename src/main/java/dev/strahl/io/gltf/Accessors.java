@@ -124,6 +124,9 @@ final class Accessors {
      * claim any count in a few bytes of JSON, so the claim is checked against the heap first.
      */
     private static void checkHeap(GltfJson a, int count, int n) throws SceneException {
+        if ((long) count * n > ImageLimits.MAX_ARRAY) {
+            throw a.error("count " + count + " of " + n + " components each is more values than one array holds");
+        }
         String shortfall = ImageLimits.heapShortfall(12L * count * n);
         if (shortfall != null) {
             throw a.error("count " + count + " (" + n + " components each" + (a.has("bufferView") ? "" : ", no bufferView: zeros") + ") "
