@@ -1,7 +1,7 @@
 package dev.strahl.light;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.texture.Texture;
 import java.util.Objects;
 import org.joml.Vector2dc;
@@ -37,6 +37,15 @@ public final class Emission {
     /** A constant radiance (black: not a light). */
     public static Emission of(Rgb radiance) {
         return radiance.isBlack() ? BLACK : new Emission(radiance, null, null, 0);
+    }
+
+    /** A constant radiance per material (the tests' area lights). */
+    static Emission[] constants(Rgb... radiance) {
+        Emission[] out = new Emission[radiance.length];
+        for (int m = 0; m < out.length; m++) {
+            out[m] = of(radiance[m]);
+        }
+        return out;
     }
 
     /**
