@@ -1,7 +1,6 @@
 package dev.strahl.io;
 
-import dev.strahl.film.Film;
-import dev.strahl.film.Tonemap;
+import dev.strahl.color.DisplayEncoding;
 import dev.strahl.image.Image;
 import dev.strahl.image.ToneMapping;
 import dev.strahl.io.exr.ExrCompression;
@@ -112,7 +111,7 @@ public final class ImageWriters {
         }
         AtomicFile.write(out, os -> {
             if (format == Format.PNG) {
-                PngWriter.write(Tonemap.toBufferedImage(img, options.exposure(), options.toneMapping()), os);
+                PngWriter.write(DisplayEncoding.toBufferedImage(img, options.exposure(), options.toneMapping()), os);
             } else {
                 PfmWriter.write(img, os);
             }
@@ -169,22 +168,6 @@ public final class ImageWriters {
             }
             dest.add(new ExrWriter.Channel(names[c], v, type));
         }
-    }
-
-    /**
-     * Writes the current mean image of a film ({@link Film#toImage()}); otherwise as
-     * {@link #write(Image, Path)}.
-     *
-     * @param film the film, possibly still being rendered into
-     * @param out  the file to write, ending in {@code .png} or {@code .pfm}
-     * @throws IllegalArgumentException if the extension is not a supported format (nothing is written)
-     * @throws IOException              if the directory of {@code out} does not exist or the file cannot
-     *                                  be written; {@code out} is then unchanged
-     */
-    public static void write(Film film, Path out) throws IOException {
-        Objects.requireNonNull(film, "film");
-        formatOf(out);                       // refuse a bad name before copying the film
-        write(film.toImage(), out);
     }
 
     /**

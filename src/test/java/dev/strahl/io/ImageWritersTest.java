@@ -8,7 +8,7 @@ import static dev.strahl.io.exr.ExrPixelType.FLOAT;
 import static dev.strahl.io.exr.ExrPixelType.HALF;
 
 import dev.strahl.film.Film;
-import dev.strahl.film.Tonemap;
+import dev.strahl.color.DisplayEncoding;
 import dev.strahl.image.ToneMapping;
 import dev.strahl.io.exr.ExrCompression;
 import dev.strahl.io.exr.ExrHeader;
@@ -105,7 +105,7 @@ class ImageWritersTest {
         film.add(film.pixelIndex(0, 0), 3, 2, 1);
         film.add(film.pixelIndex(2, 1), 0.5, 0.25, 8);
         Path out = dir.resolve("film.pfm");
-        ImageWriters.write(film, out);
+        ImageWriters.write(film.toImage(), out);
         assertThat(PfmReader.read(out)).isEqualTo(film.toImage());
     }
 
@@ -126,7 +126,7 @@ class ImageWritersTest {
                 .isExactlyInstanceOf(IllegalArgumentException.class)
                 .hasMessage("unknown image format '.xyz' of " + out + ": use .png, .pfm or .exr");
         Path bare = dir.resolve("out");
-        assertThatThrownBy(() -> ImageWriters.write(new Film(1, 1), bare))
+        assertThatThrownBy(() -> ImageWriters.write(new Film(1, 1).toImage(), bare))
                 .isExactlyInstanceOf(IllegalArgumentException.class)
                 .hasMessageContaining("no extension");
         assertThat(filesIn(dir)).isEmpty();
@@ -298,9 +298,9 @@ class ImageWritersTest {
         int a = ImageIO.read(aces.toFile()).getRGB(0, 0);
         assertThat(c & 0xFFFFFF).isEqualTo(0xFFFF89);                   // 4 and 1 clamp to 255, 0.25 -> 137
         // ACES at −1 EV: 2 -> 0.908 -> 245, 0.5 -> 0.616 -> 205, 0.125 -> 0.167 -> 114
-        assertThat((a >> 16) & 0xFF).isEqualTo(Tonemap.toSrgb8(Tonemap.aces(2)));
-        assertThat((a >> 8) & 0xFF).isEqualTo(Tonemap.toSrgb8(Tonemap.aces(0.5)));
-        assertThat(a & 0xFF).isEqualTo(Tonemap.toSrgb8(Tonemap.aces(0.125)));
+        assertThat((a >> 16) & 0xFF).isEqualTo(DisplayEncoding.toSrgb8(DisplayEncoding.aces(2)));
+        assertThat((a >> 8) & 0xFF).isEqualTo(DisplayEncoding.toSrgb8(DisplayEncoding.aces(0.5)));
+        assertThat(a & 0xFF).isEqualTo(DisplayEncoding.toSrgb8(DisplayEncoding.aces(0.125)));
         Path pfm = dir.resolve("linear.pfm");
         ImageWriters.write(RenderBuffers.of(img), pfm, new ImageWriters.Options(ToneMapping.AGX, 3, false, true));
         assertThat(PfmReader.read(pfm)).isEqualTo(img);
