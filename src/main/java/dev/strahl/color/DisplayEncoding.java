@@ -1,4 +1,4 @@
-package dev.strahl.film;
+package dev.strahl.color;
 
 import dev.strahl.image.Image;
 import dev.strahl.image.ToneMapping;
@@ -11,10 +11,7 @@ import java.awt.image.DataBufferInt;
  * with one of the tone curves of {@link ToneMapping} (clamping by default: values above 1 saturate
  * to white).
  */
-public final class Tonemap {
-
-    /** Linear value below which the sRGB OETF is the straight line 12.92·x (IEC 61966-2-1). */
-    private static final double KNEE = 0.0031308;
+public final class DisplayEncoding {
 
     // --- the 8-bit lookup behind encode8 -------------------------------------------------------
     // pow() per channel is too slow for the viewer. The code of x is the number of transitions
@@ -24,7 +21,7 @@ public final class Tonemap {
     // buckets are narrow enough (at most 0.88 codes wide, just below 1) to hold at most one
     // transition, so a bucket stores the code of its smallest value and that transition.
     // The result is identical to toSrgb8 for every input, not an approximation, and the lookup is
-    // branch-free; TonemapTest checks it around every transition.
+    // branch-free; DisplayEncodingTest checks it around every transition.
 
     private static final int MANTISSA_BITS = 7;
     private static final int SHIFT = 52 - MANTISSA_BITS;
@@ -72,36 +69,18 @@ public final class Tonemap {
         }
     }
 
-    private Tonemap() {
+    private DisplayEncoding() {
     }
 
     /**
-     * The sRGB opto-electronic transfer function (IEC 61966-2-1): V = 12.92·L for L ≤ 0.0031308,
-     * else V = 1.055·L^(1/2.4) − 0.055, with L clamped to [0, 1] first.
-     *
-     * @param linear linear radiance (1 = display white)
-     * @return the encoded value in [0, 1]; 0 for NaN and for negative input, 1 for L ≥ 1
-     */
-    public static double srgbEncode(double linear) {
-        if (!(linear > 0)) {
-            return 0;                        // NaN, negatives, −0
-        }
-        if (linear >= 1) {
-            return 1;
-        }
-        double v = linear <= KNEE ? 12.92 * linear : 1.055 * Math.pow(linear, 1 / 2.4) - 0.055;
-        return Math.min(1.0, v);            // 1.055 − 0.055 may round a hair above 1
-    }
-
-    /**
-     * The 8-bit sRGB code of a linear value: round(255 · {@link #srgbEncode}(linear)), rounding
+     * The 8-bit sRGB code of a linear value: round(255 · {@link Srgb#encode}(linear)), rounding
      * halves up.
      *
      * @param linear linear radiance (1 = display white)
      * @return the code in [0, 255]
      */
     public static int toSrgb8(double linear) {
-        return (int) Math.round(255 * srgbEncode(linear));
+        return (int) Math.round(255 * Srgb.encode(linear));
     }
 
     /** Same result as {@link #toSrgb8} for every input, through the lookup table (no pow). */

@@ -1,4 +1,4 @@
-package dev.strahl.math;
+package dev.strahl.color;
 
 import dev.strahl.image.Rgb;
 

@@ -1,6 +1,6 @@
 package dev.strahl.material;
 
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.image.Rgb;
 import org.joml.Vector2d;
 import org.joml.Vector2dc;

@@ -3,6 +3,7 @@ package dev.strahl.render;
 import dev.strahl.scene.Camera;
 import dev.strahl.io.image.AtomicFile;
 import dev.strahl.film.Film;
+import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.world.World;
 import dev.strahl.scene.Scene;
 import java.io.BufferedInputStream;
@@ -81,7 +82,7 @@ final class Checkpoint {
 
     /** Bytes per pixel: the count, the r, g, b sums, the squared luminance and any feature sums. */
     private int pixelBytes() {
-        return 4 + 4 * 8 + (features ? Film.FEATURES * 8 : 0);
+        return 4 + 4 * 8 + (features ? FeatureTracer.CHANNELS * 8 : 0);
     }
 
     /**

@@ -6,7 +6,7 @@ import dev.strahl.geometry.Ray;
 import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Parallel;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.sampling.IndependentSampler;
 import dev.strahl.sampling.Sample2D;
 import dev.strahl.sampling.Sampler;

@@ -1,7 +1,7 @@
 package dev.strahl.texture;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 
 /**
  * A BSDF parameter over the surface: a colour ({@link #rgb}) or a number ({@link #value}) at texture

@@ -1,7 +1,7 @@
 package dev.strahl.world;
 
 import dev.strahl.geometry.SurfacePoint;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.texture.Texture;
 import org.joml.Vector2dc;
 import org.joml.Vector3d;

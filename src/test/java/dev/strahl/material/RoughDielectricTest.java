@@ -3,7 +3,7 @@ package dev.strahl.material;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.sampling.Warp;
 import dev.strahl.testing.BsdfAssert;
 import dev.strahl.testing.ChiSquare;

@@ -6,7 +6,7 @@ import dev.strahl.geometry.Ray;
 import dev.strahl.image.Image;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.io.SceneLoader;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.sampling.Sampler;
 import dev.strahl.scene.Scene;
 import dev.strahl.testing.Renders;

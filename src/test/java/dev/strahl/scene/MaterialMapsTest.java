@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import dev.strahl.image.Rgb;
 import dev.strahl.light.Emission;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.texture.Channel;
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;

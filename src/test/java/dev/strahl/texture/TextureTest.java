@@ -1,10 +1,11 @@
 package dev.strahl.texture;
 
+import dev.strahl.color.Srgb;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -1,6 +1,6 @@
 package dev.strahl.io.image;
 
-import dev.strahl.film.Tonemap;
+import dev.strahl.color.DisplayEncoding;
 import dev.strahl.image.Image;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -11,7 +11,7 @@ import javax.imageio.stream.MemoryCacheImageOutputStream;
 
 /**
  * Writes an 8-bit sRGB PNG: linear radiance clamped to [0, 1] and encoded with the sRGB transfer
- * function ({@link Tonemap#toBufferedImage} at exposure 0), through the JDK's own PNG encoder.
+ * function ({@link DisplayEncoding#toBufferedImage} at exposure 0), through the JDK's own PNG encoder.
  */
 public final class PngWriter {
 
@@ -20,7 +20,7 @@ public final class PngWriter {
 
     /** Writes {@code img} to {@code out}; does not close {@code out}. */
     public static void write(Image img, OutputStream out) throws IOException {
-        write(Tonemap.toBufferedImage(img, 0), out);
+        write(DisplayEncoding.toBufferedImage(img, 0), out);
     }
 
     /** Writes an 8-bit image already tone-mapped and encoded to {@code out}; does not close {@code out}. */

@@ -7,7 +7,7 @@ import static org.assertj.core.api.Assertions.within;
 import dev.strahl.image.Rgb;
 import dev.strahl.io.SceneLoader;
 import dev.strahl.material.Principled;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.scene.Material;
 import dev.strahl.scene.Scene;
 import dev.strahl.texture.ImageTexture;
