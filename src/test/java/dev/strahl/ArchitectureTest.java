@@ -41,7 +41,7 @@ class ArchitectureTest {
 
     /** The layers bottom to top; each may use only those before it. */
     private static final String[] LAYERS = {"image", "color", "math", "sampling", "texture", "geometry", "material", "accel", "light", "camera",
-        "io.image", "io.exr", "denoise", "world", "integrator", "photon", "film", "scene", "units", "render", "io.text", "io.obj", "io.ply", "io.gltf", "io.mesh", "io.json", "io",
+        "files", "codec", "codec.exr", "denoise", "world", "integrator", "photon", "film", "scene", "units", "render", "io.text", "io.obj", "io.ply", "io.gltf", "io.mesh", "io.json", "io",
         "cluster", "bench", "viewer", "cli"};
 
     @ArchTest
@@ -65,8 +65,8 @@ class ArchitectureTest {
     @ArchTest
     static final ArchRule theSceneModelKnowsNoFileFormat = noClasses().that().resideInAPackage("dev.strahl.scene")
             .should().dependOnClassesThat().resideInAnyPackage("dev.strahl.io", "dev.strahl.io.text..", "dev.strahl.io.obj..", "dev.strahl.io.ply..", "dev.strahl.io.gltf..", "dev.strahl.io.mesh..",
-                    "dev.strahl.io.json..", "dev.strahl.io.exr..")
-            .because("file formats build scenes through the scene API, never the other way round (texture images, read by io.image, are"
+                    "dev.strahl.io.json..", "dev.strahl.codec.exr..")
+            .because("file formats build scenes through the scene API, never the other way round (texture images, read by codec, are"
                     + " the one file content a material holds)");
 
     @ArchTest

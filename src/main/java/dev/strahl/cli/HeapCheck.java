@@ -1,7 +1,7 @@
 package dev.strahl.cli;
 
 import dev.strahl.film.Film;
-import dev.strahl.io.image.ImageLimits;
+import dev.strahl.codec.ImageLimits;
 import java.util.Locale;
 import java.util.function.LongSupplier;
 

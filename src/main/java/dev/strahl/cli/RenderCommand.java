@@ -4,7 +4,7 @@ import dev.strahl.image.Image;
 import dev.strahl.image.ToneMapping;
 import dev.strahl.io.ImageWriters;
 import dev.strahl.io.SceneLoader;
-import dev.strahl.io.image.ImageLimits;
+import dev.strahl.codec.ImageLimits;
 import dev.strahl.io.json.EnvironmentMaps;
 import dev.strahl.io.json.SceneFile;
 import dev.strahl.io.json.SceneSettings;

@@ -1,6 +1,6 @@
 package dev.strahl.cluster;
 
-import dev.strahl.io.image.FileReads;
+import dev.strahl.files.FileReads;
 import dev.strahl.io.json.SceneFile;
 import dev.strahl.scene.Camera;
 import java.io.ByteArrayInputStream;

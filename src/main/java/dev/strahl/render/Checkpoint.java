@@ -1,7 +1,7 @@
 package dev.strahl.render;
 
 import dev.strahl.scene.Camera;
-import dev.strahl.io.image.AtomicFile;
+import dev.strahl.files.AtomicFile;
 import dev.strahl.film.Film;
 import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.world.World;

@@ -2,7 +2,7 @@ package dev.strahl.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.io.image.PfmReader;
+import dev.strahl.codec.PfmReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;

@@ -3,7 +3,7 @@ package dev.strahl.cli;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import dev.strahl.io.image.ImageLimits;
+import dev.strahl.codec.ImageLimits;
 import dev.strahl.film.Film;
 import org.junit.jupiter.api.Test;
 

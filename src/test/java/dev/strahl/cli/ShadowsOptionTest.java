@@ -4,7 +4,7 @@ import static dev.strahl.cli.RenderCommandTest.CORNELL;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import dev.strahl.image.Image;
-import dev.strahl.io.image.PfmReader;
+import dev.strahl.codec.PfmReader;
 import dev.strahl.viewer.ViewerOptions;
 import java.io.IOException;
 import java.nio.file.Files;

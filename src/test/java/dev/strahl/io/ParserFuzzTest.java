@@ -2,11 +2,11 @@ package dev.strahl.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.io.exr.ExrReader;
+import dev.strahl.codec.exr.ExrReader;
 import dev.strahl.io.gltf.GltfFuzzSeeds;
-import dev.strahl.io.image.HdrReader;
-import dev.strahl.io.image.ImageFormatException;
-import dev.strahl.io.image.TextureImages;
+import dev.strahl.codec.HdrReader;
+import dev.strahl.codec.ImageFormatException;
+import dev.strahl.codec.TextureImages;
 import dev.strahl.io.obj.MtlReader;
 import dev.strahl.scene.SceneException;
 import dev.strahl.testing.Fuzzer;

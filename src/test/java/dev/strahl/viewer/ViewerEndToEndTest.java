@@ -232,7 +232,7 @@ class ViewerEndToEndTest {
             Path saved = dir.resolve("denoised.pfm");
             SwingUtilities.invokeAndWait(() -> ui.files.saveImage(viewer.presenter().pick(), saved));
             waitFor("the saved file", 10, () -> Files.exists(saved));
-            assertThat(dev.strahl.io.image.PfmReader.read(saved)).as("saving writes the denoised image").isEqualTo(shown.frame().image());
+            assertThat(dev.strahl.codec.PfmReader.read(saved)).as("saving writes the denoised image").isEqualTo(shown.frame().image());
 
             pressKey(robot, ui, java.awt.event.KeyEvent.VK_N);
             waitFor("Denoise off", 5, () -> !viewer.denoiser().enabled());

@@ -82,7 +82,7 @@ public final class JsonSceneReader {
     static SceneDescription parse(Path file) throws SceneException {
         String text;
         try {
-            dev.strahl.io.image.FileReads.note(file);
+            dev.strahl.files.FileReads.note(file);
             text = Files.readString(file, StandardCharsets.UTF_8);
         } catch (CharacterCodingException e) {
             throw new SceneException(file, TextLines.lineOfInvalidUtf8(file, 1), "not a text scene file (invalid UTF-8)");

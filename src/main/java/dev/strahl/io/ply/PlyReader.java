@@ -70,7 +70,7 @@ public final class PlyReader {
         if (Files.isDirectory(file)) {
             throw new SceneException(file, "is a directory, not a PLY file");
         }
-        dev.strahl.io.image.FileReads.note(file);
+        dev.strahl.files.FileReads.note(file);
         try (FileChannel channel = FileChannel.open(file, StandardOpenOption.READ)) {
             PlyInput in = new PlyInput(channel, BUFFER);
             in.fill(BUFFER);

@@ -113,7 +113,7 @@ public final class TextLines implements AutoCloseable {
         }
         InputStream in;
         try {
-            dev.strahl.io.image.FileReads.note(file);
+            dev.strahl.files.FileReads.note(file);
             in = Files.newInputStream(file);
         } catch (NoSuchFileException e) {
             throw new SceneException(file, "file not found", e);
