@@ -1,7 +1,7 @@
 package dev.strahl.material;
 
 import dev.strahl.color.MutableRgb;
-import dev.strahl.texture.Texture;
+import dev.strahl.texture.TextureLookup;
 import java.util.Objects;
 import org.joml.Vector2dc;
 import org.joml.Vector3d;
@@ -32,7 +32,7 @@ import org.joml.Vector3dc;
  * @param eta   index of refraction of the inside relative to the outside, positive
  * @param alpha GGX roughness α (a scalar texture), clamped below to {@link Ggx#MIN_ALPHA}
  */
-public record RoughDielectric(double eta, Texture alpha) implements Bsdf {
+public record RoughDielectric(double eta, TextureLookup alpha) implements Bsdf {
 
     /**
      * Checks the index and the roughness.
@@ -51,7 +51,7 @@ public record RoughDielectric(double eta, Texture alpha) implements Bsdf {
     }
 
     /** Smooth glass ({@link Dielectric}) if α is the constant 0, rough glass otherwise. */
-    public static Bsdf of(double eta, Texture alpha) {
+    public static Bsdf of(double eta, TextureLookup alpha) {
         if (alpha.isConstant() && alpha.value(0, 0) == 0) {
             return new Dielectric(eta);
         }

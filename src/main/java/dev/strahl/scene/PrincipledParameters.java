@@ -11,16 +11,16 @@ import java.util.Objects;
  */
 abstract class PrincipledParameters {
     final String name;
-    dev.strahl.texture.Texture baseColor = dev.strahl.texture.Texture.of(Rgb.WHITE);
-    dev.strahl.texture.Texture metallic = dev.strahl.texture.Texture.of(1);
-    dev.strahl.texture.Texture roughness = dev.strahl.texture.Texture.of(1);
-    dev.strahl.texture.Texture specular = dev.strahl.texture.Texture.of(1);
-    dev.strahl.texture.Texture specularColor = dev.strahl.texture.Texture.of(Rgb.WHITE);
-    dev.strahl.texture.Texture transmission = dev.strahl.texture.Texture.of(0);
+    dev.strahl.texture.TextureLookup baseColor = dev.strahl.texture.TextureLookup.of(Rgb.WHITE);
+    dev.strahl.texture.TextureLookup metallic = dev.strahl.texture.TextureLookup.of(1);
+    dev.strahl.texture.TextureLookup roughness = dev.strahl.texture.TextureLookup.of(1);
+    dev.strahl.texture.TextureLookup specular = dev.strahl.texture.TextureLookup.of(1);
+    dev.strahl.texture.TextureLookup specularColor = dev.strahl.texture.TextureLookup.of(Rgb.WHITE);
+    dev.strahl.texture.TextureLookup transmission = dev.strahl.texture.TextureLookup.of(0);
     double ior = 1.5;
     /** Le for constant emission; the strength (grey) with {@link #emissionTexture}. */
     Rgb emission = Rgb.BLACK;
-    dev.strahl.texture.Texture emissionTexture;
+    dev.strahl.texture.TextureLookup emissionTexture;
 
     PrincipledParameters(String name) {
         this.name = Objects.requireNonNull(name, "name");
@@ -37,7 +37,7 @@ abstract class PrincipledParameters {
      * @return this builder
      */
     public Material.PrincipledBuilder baseColor(Rgb colour) {
-        baseColor = dev.strahl.texture.Texture.of(Surface.unit(colour, "baseColor", name));
+        baseColor = dev.strahl.texture.TextureLookup.of(Surface.unit(colour, "baseColor", name));
         return self();
     }
 
@@ -59,7 +59,7 @@ abstract class PrincipledParameters {
      * @return this builder
      */
     public Material.PrincipledBuilder metallic(double value) {
-        metallic = dev.strahl.texture.Texture.of(Surface.unit(value, "metallic", name));
+        metallic = dev.strahl.texture.TextureLookup.of(Surface.unit(value, "metallic", name));
         return self();
     }
 
@@ -81,7 +81,7 @@ abstract class PrincipledParameters {
      * @return this builder
      */
     public Material.PrincipledBuilder roughness(double value) {
-        roughness = dev.strahl.texture.Texture.of(Surface.unit(value, "roughness", name));
+        roughness = dev.strahl.texture.TextureLookup.of(Surface.unit(value, "roughness", name));
         return self();
     }
 
@@ -115,7 +115,7 @@ abstract class PrincipledParameters {
      * @return this builder
      */
     public Material.PrincipledBuilder specular(double value) {
-        specular = dev.strahl.texture.Texture.of(Surface.unit(value, "specular", name));
+        specular = dev.strahl.texture.TextureLookup.of(Surface.unit(value, "specular", name));
         return self();
     }
 
@@ -137,7 +137,7 @@ abstract class PrincipledParameters {
      * @return this builder
      */
     public Material.PrincipledBuilder specularColor(Rgb colour) {
-        specularColor = dev.strahl.texture.Texture.of(Surface.nonNegative(colour, "specularColor", name));
+        specularColor = dev.strahl.texture.TextureLookup.of(Surface.nonNegative(colour, "specularColor", name));
         return self();
     }
 
@@ -159,7 +159,7 @@ abstract class PrincipledParameters {
      * @return this builder
      */
     public Material.PrincipledBuilder transmission(double value) {
-        transmission = dev.strahl.texture.Texture.of(Surface.unit(value, "transmission", name));
+        transmission = dev.strahl.texture.TextureLookup.of(Surface.unit(value, "transmission", name));
         return self();
     }
 

@@ -10,7 +10,7 @@ import java.util.Objects;
  * @param colour the colour, linear RGB
  * @param number the scalar value
  */
-public record ConstantTexture(Rgb colour, double number) implements Texture {
+public record ConstantTexture(Rgb colour, double number) implements TextureLookup {
 
     /** Checks that the colour is given and the number finite. */
     public ConstantTexture {

@@ -17,7 +17,7 @@ import java.util.Objects;
  * @param transform the texture-coordinate transform
  * @param channel   the channel {@link #value} reads
  */
-public record ImageTexture(Bitmap bitmap, Wrap wrap, UvTransform transform, Channel channel) implements Texture {
+public record ImageTexture(Bitmap bitmap, Wrap wrap, UvTransform transform, Channel channel) implements TextureLookup {
 
     /** Checks for nulls. */
     public ImageTexture {

@@ -4,11 +4,12 @@ import dev.strahl.image.Rgb;
 import dev.strahl.color.MutableRgb;
 
 /**
- * A BSDF parameter over the surface: a colour ({@link #rgb}) or a number ({@link #value}) at texture
+ * A texture as the BSDFs read it (the API's {@code dev.strahl.scene.Texture} describes one; its
+ * {@code colour()}, {@code scalar()} and {@code data()} make this): a BSDF parameter over the surface, a colour ({@link #rgb}) or a number ({@link #value}) at texture
  * coordinates (u, v): a constant, an image, or one of them times a factor ({@link ScaledTexture}).
  * Immutable and shared between threads; lookups allocate nothing.
  */
-public sealed interface Texture permits ConstantTexture, ImageTexture, ScaledTexture {
+public sealed interface TextureLookup permits ConstantTexture, ImageTexture, ScaledTexture {
 
     /** The linear RGB value at (u, v), into {@code dest}. */
     void rgb(double u, double v, MutableRgb dest);
@@ -28,12 +29,12 @@ public sealed interface Texture permits ConstantTexture, ImageTexture, ScaledTex
     }
 
     /** A constant colour; its scalar value is the colour's mean. */
-    static Texture of(Rgb colour) {
+    static TextureLookup of(Rgb colour) {
         return new ConstantTexture(colour, (colour.r() + colour.g() + colour.b()) / 3);
     }
 
     /** A constant number (its colour is grey). */
-    static Texture of(double value) {
+    static TextureLookup of(double value) {
         return new ConstantTexture(Rgb.gray(value), value);
     }
 }
