@@ -260,12 +260,12 @@ final class RenderCommand implements Callable<Integer> {
             s = s.withEnvironmentMap(EnvironmentMaps.read(lens.envmap), 1, 0);
         }
         settings = loaded.settings().applyTo(settings, SceneFileOptions.given(spec.commandLine().getParseResult()));
-        written = settings.aovs();
+        written = settings.output().aovs();
         if (denoise) {
             settings = settings.withAovs(EnumSet.allOf(Aov.class));      // the denoiser's guides, written or not
         }
-        if (settings.width() != width || settings.height() != height) {
-            HeapCheck.checkFilm(settings.width(), settings.height());          // the scene file's size
+        if (settings.output().width() != width || settings.output().height() != height) {
+            HeapCheck.checkFilm(settings.output().width(), settings.output().height());          // the scene file's size
         }
         if (!quiet) {
             for (String note : s.notes()) {
@@ -312,9 +312,11 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     private RenderSettings settings() {
-        return new RenderSettings(width, height, spp, transport.maxDepth, seed, threads, transport.hemisphere, cullBackFaces, 0,
-                transport.integrator, transport.lightSamples, timeLimit == null ? Duration.ZERO : timeLimit, new PhotonParameters(
-                transport.photons, transport.photonRadius), accel == Accel.NONE, schedule == Schedule.STRIPES, transport.shadows(), aovs());
+        return new RenderSettings(new RenderSettings.Output(width, height, aovs()), new RenderSettings.Sampling(spp, seed),
+                new RenderSettings.Transport(transport.integrator, transport.maxDepth, transport.lightSamples, transport.hemisphere,
+                        cullBackFaces, transport.shadows(), new PhotonParameters(transport.photons, transport.photonRadius)),
+                new RenderSettings.Execution(threads, 0, timeLimit == null ? Duration.ZERO : timeLimit, accel == Accel.NONE,
+                        schedule == Schedule.STRIPES));
     }
 
     /** The feature buffers asked for with --aov (checked), or none. */
@@ -412,12 +414,12 @@ final class RenderCommand implements Callable<Integer> {
         if (cluster == null) {
             return null;
         }
-        if (settings.integrator() == dev.strahl.render.IntegratorKind.PHOTON) {
+        if (settings.transport().integrator() == dev.strahl.render.IntegratorKind.PHOTON) {
             throw new IllegalArgumentException("--cluster: the photon mapper cannot render on a cluster (each sample needs the photon map of the whole scene)");
         }
         try {
             RenderCluster members = RenderCluster.builder().join(cluster.toArray(String[]::new)).bind(bind).port(port).clusterName(clusterName)
-                    .threads(settings.threads()).joinTimeout(Duration.ofSeconds(10))
+                    .threads(settings.execution().threads()).joinTimeout(Duration.ofSeconds(10))
                     .log(quiet ? null : line -> {
                         synchronized (err) {
                             err.println("strahl: cluster: " + line);
@@ -503,16 +505,16 @@ final class RenderCommand implements Callable<Integer> {
         long invalid = stats.invalidSamples();
         if (irq.interrupted()) {
             err.println(String.format(Locale.ROOT, "strahl: interrupted at %d of %d spp after %.2f s: wrote %s%s",
-                    stats.samplesPerPixel(), settings.samplesPerPixel(), stats.seconds(), output,
+                    stats.samplesPerPixel(), settings.sampling().samplesPerPixel(), stats.seconds(), output,
                     savedCheckpoint ? "; continue with --resume " + checkpointFile : ""));
         } else if (!quiet) {
-            if (stats.samplesPerPixel() < settings.samplesPerPixel()) {
+            if (stats.samplesPerPixel() < settings.sampling().samplesPerPixel()) {
                 err.println("strahl: note: the time limit of " + limitText(timeLimit)
-                        + " ended the render at " + stats.samplesPerPixel() + " of " + settings.samplesPerPixel() + " spp"
+                        + " ended the render at " + stats.samplesPerPixel() + " of " + settings.sampling().samplesPerPixel() + " spp"
                         + (savedCheckpoint ? "; continue with --resume " + checkpointFile : ""));
             }
             err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %d spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
-                    settings.integrator().id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
+                    settings.transport().integrator().id(), settings.output().width(), settings.output().height(), stats.samplesPerPixel(), stats.seconds(),
                     Units.si(stats.samplesPerSecond()), Units.si(stats.raysPerSecond()), stats.threads(), output));
             if (denoise) {
                 err.println(String.format(Locale.ROOT, "strahl: denoised with %s in %.2f s", oidn != null ? "oidnDenoise" : "strahl's denoiser",

@@ -103,7 +103,7 @@ public final class RenderCluster implements AutoCloseable {
         Objects.requireNonNull(sceneFile, "sceneFile");
         Objects.requireNonNull(settings, "settings");
         Objects.requireNonNull(listener, "listener");
-        if (settings.integrator() == IntegratorKind.PHOTON) {
+        if (settings.transport().integrator() == IntegratorKind.PHOTON) {
             throw new IllegalArgumentException("the photon mapper cannot render on a cluster (each sample needs the photon map of the whole scene)");
         }
         byte[] digest = Checkpoint.of(scene, settings).sceneDigestBytes();

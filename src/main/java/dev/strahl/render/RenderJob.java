@@ -65,8 +65,8 @@ public final class RenderJob implements AutoCloseable {
                       Checkpoint.Restored restored, Function<Film, PassRunner> cluster) {
         this.settings = Objects.requireNonNull(settings, "settings");
         this.listener = Objects.requireNonNull(listener, "listener");
-        boolean features = !settings.aovs().isEmpty();
-        this.film = restored != null ? restored.film() : new Film(settings.width(), settings.height(), features);
+        boolean features = !settings.output().aovs().isEmpty();
+        this.film = restored != null ? restored.film() : new Film(settings.output().width(), settings.output().height(), features);
         this.integrator = Objects.requireNonNull(integrator, "integrator");
         this.scene = Objects.requireNonNull(scene, "scene");
         this.identity = identity;
@@ -74,14 +74,14 @@ public final class RenderJob implements AutoCloseable {
         this.earlierSeconds = restored != null ? restored.seconds() : 0;
         Camera c = scene.camera();
         var rays = new CameraRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), c.aperture(), c.focusDistance(),
-                settings.width(), settings.height());
+                settings.output().width(), settings.output().height());
         World world = World.of(scene);
         int number = JOB_NUMBER.incrementAndGet();
         this.workers = cluster != null ? cluster.apply(film)
-                : new RenderWorkers(film, rays, integrator, features ? () -> new FeatureTracer(world, settings.cullBackFaces()) : null,
-                        settings.seed(), settings.effectiveThreads(), settings.stripes(), "strahl-render-" + number);
-        this.completedSpp = this.earlierSpp = Math.min(film.minSampleCount(), settings.samplesPerPixel());   // 0, unless restored
-        this.passes = new PassBuffers(film, settings.aovs());
+                : new RenderWorkers(film, rays, integrator, features ? () -> new FeatureTracer(world, settings.transport().cullBackFaces()) : null,
+                        settings.sampling().seed(), settings.execution().effectiveThreads(), settings.execution().stripes(), "strahl-render-" + number);
+        this.completedSpp = this.earlierSpp = Math.min(film.minSampleCount(), settings.sampling().samplesPerPixel());   // 0, unless restored
+        this.passes = new PassBuffers(film, settings.output().aovs());
         this.restoredSamples = film.totalSamples();
     }
 
@@ -198,7 +198,7 @@ public final class RenderJob implements AutoCloseable {
      * @return a number in [0, 1]
      */
     public double progress() {
-        double total = (double) settings.samplesPerPixel() * settings.width() * settings.height();
+        double total = (double) settings.sampling().samplesPerPixel() * settings.output().width() * settings.output().height();
         return Math.min(1, (restoredSamples + workers.samplesDone()) / total);
     }
 
@@ -398,7 +398,7 @@ public final class RenderJob implements AutoCloseable {
 
     private void run() {
         try {
-            int spp = settings.samplesPerPixel();
+            int spp = settings.sampling().samplesPerPixel();
             boolean prepares = integrator.preparesEachSample();
             int start = film.minSampleCount();
             if (restoredSamples > 0) {
@@ -406,10 +406,10 @@ public final class RenderJob implements AutoCloseable {
             }
             int pass = 0;
             while (start < spp && !workers.cancelled()) {
-                int size = prepares ? 1 : settings.samplesPerPass() > 0 ? settings.samplesPerPass() : workers.passSize(pass);
+                int size = prepares ? 1 : settings.execution().samplesPerPass() > 0 ? settings.execution().samplesPerPass() : workers.passSize(pass);
                 int end = Math.min(spp, start + size);
                 if (prepares) {
-                    integrator.prepareSample(settings.seed(), start, workers.parallel());
+                    integrator.prepareSample(settings.sampling().seed(), start, workers.parallel());
                     if (workers.cancelled()) {
                         break;
                     }
@@ -425,7 +425,7 @@ public final class RenderJob implements AutoCloseable {
                 listener.passFinished(new RenderListener.Pass(pass + 1, end, workers.samplesDone(), elapsedSeconds()), image);
                 start = end;
                 pass++;
-                if (!settings.timeLimit().isZero() && elapsedSeconds() >= settings.timeLimit().toNanos() * 1e-9) {
+                if (!settings.execution().timeLimit().isZero() && elapsedSeconds() >= settings.execution().timeLimit().toNanos() * 1e-9) {
                     break;                             // the pass that crossed the time limit is kept
                 }
             }

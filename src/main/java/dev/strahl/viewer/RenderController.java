@@ -206,7 +206,7 @@ final class RenderController {
      * @return the new focus distance, or NaN if nothing was hit
      */
     synchronized double focusAt(double fx, double fy) {
-        double d = FocusPicker.focusDistance(scene, camera.toCamera(), fx, fy, (double) settings.width() / settings.height());
+        double d = FocusPicker.focusDistance(scene, camera.toCamera(), fx, fy, (double) settings.output().width() / settings.output().height());
         if (d > 0) {
             focusDistance = d;
             renderAgain();
@@ -234,7 +234,7 @@ final class RenderController {
 
     /** The film follows the window: a new size previews like a camera move. */
     synchronized void resize(int width, int height) {
-        if (width == settings.width() && height == settings.height()) {
+        if (width == settings.output().width() && height == settings.output().height()) {
             return;
         }
         settings = settings.withSize(width, height);
@@ -259,10 +259,10 @@ final class RenderController {
 
     synchronized Status status() {
         long samples = job != null ? job.samplesDone() : 0;
-        int w = preview ? previewSize(settings.width()) : settings.width();
-        int h = preview ? previewSize(settings.height()) : settings.height();
-        return new Status(state, preview, samplesPerPixel, stopAt, clock.seconds(), samples, w, h, settings.integrator(),
-                settings.maxDepth(), settings.hemisphere(), generation);
+        int w = preview ? previewSize(settings.output().width()) : settings.output().width();
+        int h = preview ? previewSize(settings.output().height()) : settings.output().height();
+        return new Status(state, preview, samplesPerPixel, stopAt, clock.seconds(), samples, w, h, settings.transport().integrator(),
+                settings.transport().maxDepth(), settings.transport().hemisphere(), generation);
     }
 
     synchronized OrbitCamera camera() {
@@ -340,7 +340,7 @@ final class RenderController {
         }
         RenderSettings s = settings.withTimeLimit(java.time.Duration.ZERO);
         if (previewJob) {
-            s = s.withSize(previewSize(s.width()), previewSize(s.height())).withAovs(Set.of());   // never denoised
+            s = s.withSize(previewSize(s.output().width()), previewSize(s.output().height())).withAovs(Set.of());   // never denoised
         }
         s = s.withSamplesPerPixel(Integer.MAX_VALUE).withSamplesPerPass(1);
         long g = generation;

@@ -163,7 +163,7 @@ class ViewerEndToEndTest {
             assertThat(s.integrator()).as("--integrator still wins").isEqualTo(IntegratorKind.PATH);
             assertThat(s.maxDepth()).isEqualTo(2);
             assertThat(s.hemisphere()).as("b.json says nothing: the option's value, not a.json's").isEqualTo(HemisphereSampling.COSINE);
-            assertThat(c.settings().lightSamples()).isEqualTo(2);
+            assertThat(c.settings().transport().lightSamples()).isEqualTo(2);
             assertThat(onEdt(ui.actions.maxDepth::value)).isEqualTo(2);
             assertThat(onEdt(ui.actions.hemisphere::value)).isEqualTo(HemisphereSampling.COSINE);
             assertThat(onEdt(ui.frame::getTitle)).endsWith("b.json");
@@ -206,13 +206,13 @@ class ViewerEndToEndTest {
             Robot robot = new Robot();
             waitFor("a full-resolution pass", 20, () -> !c.status().preview() && c.status().samplesPerPixel() >= 1);
             long generation = c.status().generation();
-            assertThat(c.settings().aovs()).isEmpty();
+            assertThat(c.settings().output().aovs()).isEmpty();
 
             pressKey(robot, ui, java.awt.event.KeyEvent.VK_N);
             waitFor("Denoise on", 5, () -> viewer.denoiser().enabled());
             assertThat(onEdt(() -> ui.actions.denoise.getValue(javax.swing.Action.SELECTED_KEY))).isEqualTo(true);
             assertThat(c.status().generation()).as("restarted with the guides").isGreaterThan(generation);
-            assertThat(c.settings().aovs()).containsAll(LiveDenoiser.GUIDES);
+            assertThat(c.settings().output().aovs()).containsAll(LiveDenoiser.GUIDES);
             waitFor("the denoised image at the stop-at count, 8 spp", 30, () -> {
                 FramePresenter.Shown s = viewer.presenter().shown();
                 return s != null && s.denoised() && s.frame().samplesPerPixel() == 8;

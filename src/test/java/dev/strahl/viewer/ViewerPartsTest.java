@@ -79,9 +79,9 @@ class ViewerPartsTest {
     @Test
     void optionsAreCheckedWhenMade() {
         ViewerOptions d = ViewerOptions.defaults();
-        assertThat(d.renderSettings().samplesPerPass()).isEqualTo(1);
+        assertThat(d.renderSettings().execution().samplesPerPass()).isEqualTo(1);
         assertThat(d.integrator()).isEqualTo(IntegratorKind.PATH);
-        assertThat(d.renderSettings().integrator()).isEqualTo(IntegratorKind.PATH);
+        assertThat(d.renderSettings().transport().integrator()).isEqualTo(IntegratorKind.PATH);
         assertThatThrownBy(() -> new ViewerOptions(null, 0, 512, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of()))
                 .hasMessageContaining("image size");
         assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, -1, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of()))
@@ -95,17 +95,17 @@ class ViewerPartsTest {
     @Test
     void aSceneFilesSettingsReplaceTheOptionsNotGiven() throws Exception {
         RenderSettings s = options(Set.of()).settingsFor(FILE);
-        assertThat(s.width()).isEqualTo(320);
-        assertThat(s.height()).isEqualTo(160);
-        assertThat(s.integrator()).isEqualTo(IntegratorKind.DIRECT);
-        assertThat(s.maxDepth()).isEqualTo(3);
-        assertThat(s.seed()).isEqualTo(42);
-        assertThat(s.lightSamples()).isEqualTo(4);
-        assertThat(s.hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
-        assertThat(s.threads()).as("not a scene-file key").isEqualTo(2);
-        assertThat(s.samplesPerPass()).isEqualTo(1);
-        assertThat(s.samplesPerPixel()).as("the file's spp is not the viewer's stop-at count")
-                .isEqualTo(options(Set.of()).renderSettings().samplesPerPixel());
+        assertThat(s.output().width()).isEqualTo(320);
+        assertThat(s.output().height()).isEqualTo(160);
+        assertThat(s.transport().integrator()).isEqualTo(IntegratorKind.DIRECT);
+        assertThat(s.transport().maxDepth()).isEqualTo(3);
+        assertThat(s.sampling().seed()).isEqualTo(42);
+        assertThat(s.transport().lightSamples()).isEqualTo(4);
+        assertThat(s.transport().hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
+        assertThat(s.execution().threads()).as("not a scene-file key").isEqualTo(2);
+        assertThat(s.execution().samplesPerPass()).isEqualTo(1);
+        assertThat(s.sampling().samplesPerPixel()).as("the file's spp is not the viewer's stop-at count")
+                .isEqualTo(options(Set.of()).renderSettings().sampling().samplesPerPixel());
         assertThat(options(Set.of()).settingsFor(SceneSettings.NONE)).as("a file that says nothing")
                 .isEqualTo(options(Set.of()).renderSettings());
     }
@@ -116,21 +116,21 @@ class ViewerPartsTest {
         assertThat(all).isEqualTo(options(Set.of()).renderSettings());
 
         RenderSettings widthOnly = options(Set.of(Setting.WIDTH)).settingsFor(FILE);
-        assertThat(widthOnly.width()).isEqualTo(200);
-        assertThat(widthOnly.height()).as("the file's height with the given width, as render does").isEqualTo(160);
-        assertThat(widthOnly.integrator()).isEqualTo(IntegratorKind.DIRECT);
-        assertThat(options(Set.of(Setting.HEIGHT)).settingsFor(FILE).width()).isEqualTo(320);
-        assertThat(options(Set.of(Setting.HEIGHT)).settingsFor(FILE).height()).isEqualTo(100);
+        assertThat(widthOnly.output().width()).isEqualTo(200);
+        assertThat(widthOnly.output().height()).as("the file's height with the given width, as render does").isEqualTo(160);
+        assertThat(widthOnly.transport().integrator()).isEqualTo(IntegratorKind.DIRECT);
+        assertThat(options(Set.of(Setting.HEIGHT)).settingsFor(FILE).output().width()).isEqualTo(320);
+        assertThat(options(Set.of(Setting.HEIGHT)).settingsFor(FILE).output().height()).isEqualTo(100);
 
         // Each one alone: that setting from the option, every other one from the file
         RenderSettings fromFile = options(Set.of()).settingsFor(FILE);
         RenderSettings fromOptions = options(Set.of()).renderSettings();
-        assertThat(options(Set.of(Setting.MAX_DEPTH)).settingsFor(FILE)).isEqualTo(fromFile.withMaxDepth(fromOptions.maxDepth()));
-        assertThat(options(Set.of(Setting.HEMISPHERE)).settingsFor(FILE)).isEqualTo(fromFile.withHemisphere(fromOptions.hemisphere()));
-        assertThat(options(Set.of(Setting.SEED)).settingsFor(FILE)).isEqualTo(fromFile.withSeed(fromOptions.seed()));
-        assertThat(options(Set.of(Setting.INTEGRATOR)).settingsFor(FILE)).isEqualTo(fromFile.withIntegrator(fromOptions.integrator()));
+        assertThat(options(Set.of(Setting.MAX_DEPTH)).settingsFor(FILE)).isEqualTo(fromFile.withMaxDepth(fromOptions.transport().maxDepth()));
+        assertThat(options(Set.of(Setting.HEMISPHERE)).settingsFor(FILE)).isEqualTo(fromFile.withHemisphere(fromOptions.transport().hemisphere()));
+        assertThat(options(Set.of(Setting.SEED)).settingsFor(FILE)).isEqualTo(fromFile.withSeed(fromOptions.sampling().seed()));
+        assertThat(options(Set.of(Setting.INTEGRATOR)).settingsFor(FILE)).isEqualTo(fromFile.withIntegrator(fromOptions.transport().integrator()));
         assertThat(options(Set.of(Setting.LIGHT_SAMPLES)).settingsFor(FILE))
-                .isEqualTo(fromFile.withLightSamples(fromOptions.lightSamples()));
+                .isEqualTo(fromFile.withLightSamples(fromOptions.transport().lightSamples()));
     }
 
     @Test
@@ -145,11 +145,11 @@ class ViewerPartsTest {
         List<Dimension> checked = new ArrayList<>();
         SceneFiles.Opened opened = SceneFiles.open(file, ViewerOptions.defaults(), (w, h) -> checked.add(new Dimension(w, h)));
         assertThat(opened.file()).isEqualTo(file);
-        assertThat(opened.settings().width()).isEqualTo(96);
-        assertThat(opened.settings().height()).isEqualTo(48);
-        assertThat(opened.settings().integrator()).isEqualTo(IntegratorKind.DIRECT);
-        assertThat(opened.settings().maxDepth()).isEqualTo(7);
-        assertThat(opened.settings().samplesPerPixel()).as("the viewer renders on: not the file's spp").isNotEqualTo(3);
+        assertThat(opened.settings().output().width()).isEqualTo(96);
+        assertThat(opened.settings().output().height()).isEqualTo(48);
+        assertThat(opened.settings().transport().integrator()).isEqualTo(IntegratorKind.DIRECT);
+        assertThat(opened.settings().transport().maxDepth()).isEqualTo(7);
+        assertThat(opened.settings().sampling().samplesPerPixel()).as("the viewer renders on: not the file's spp").isNotEqualTo(3);
         assertThat(checked).as("the film check sees the size the settings ask for").containsExactly(new Dimension(96, 48));
     }
 
@@ -167,7 +167,7 @@ class ViewerPartsTest {
         };
         assertThatThrownBy(() -> SceneFiles.open(huge, ViewerOptions.defaults(), atMost4k))
                 .isInstanceOf(IllegalArgumentException.class).hasMessage("a 30000x20000 image is too large");
-        assertThat(SceneFiles.open(huge, options(Set.of(Setting.WIDTH, Setting.HEIGHT)), atMost4k).settings().width())
+        assertThat(SceneFiles.open(huge, options(Set.of(Setting.WIDTH, Setting.HEIGHT)), atMost4k).settings().output().width())
                 .as("--width and --height given win over the file's film, and pass").isEqualTo(200);
         assertThatThrownBy(() -> SceneFiles.open(huge, options(Set.of(Setting.WIDTH)), atMost4k))
                 .as("--width alone keeps the file's height").hasMessage("a 200x20000 image is too large");
@@ -175,7 +175,7 @@ class ViewerPartsTest {
                 Theme.LIGHT, Set.of(Setting.WIDTH, Setting.HEIGHT));
         assertThatThrownBy(() -> SceneFiles.open(huge, wide, atMost4k)).as("as --width 8000 --height 100")
                 .hasMessage("a 8000x100 image is too large");
-        assertThat(SceneFiles.open(huge, ViewerOptions.defaults(), Viewer.FilmCheck.NONE).settings().width()).isEqualTo(30000);
+        assertThat(SceneFiles.open(huge, ViewerOptions.defaults(), Viewer.FilmCheck.NONE).settings().output().width()).isEqualTo(30000);
     }
 
     @Test

@@ -18,11 +18,11 @@ class ViewerShadowsTest {
     @Test
     void shadowsAreOnUnlessTurnedOff() {
         assertThat(ViewerOptions.defaults().shadows()).isTrue();
-        assertThat(ViewerOptions.defaults().renderSettings().shadows()).isTrue();
-        assertThat(options(true).renderSettings().shadows()).isTrue();
-        assertThat(options(false).renderSettings().shadows()).isFalse();
+        assertThat(ViewerOptions.defaults().renderSettings().transport().shadows()).isTrue();
+        assertThat(options(true).renderSettings().transport().shadows()).isTrue();
+        assertThat(options(false).renderSettings().transport().shadows()).isFalse();
         SceneSettings file = new SceneSettings(32, 32, 8, 3, 1L, IntegratorKind.WHITTED, 2, null, null, null);
-        assertThat(options(false).settingsFor(file)).extracting(s -> s.integrator(), s -> s.shadows())
+        assertThat(options(false).settingsFor(file)).extracting(s -> s.transport().integrator(), s -> s.transport().shadows())
                 .containsExactly(IntegratorKind.WHITTED, false);
     }
 }
