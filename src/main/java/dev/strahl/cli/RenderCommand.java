@@ -495,7 +495,7 @@ final class RenderCommand implements Callable<Integer> {
         }
         if (statsFile != null) {
             try {
-                StatsFile.write(statsFile, stats, settings, loadSeconds, bvhSeconds, s.textureBytes(), StatsFile.figures(members));
+                StatsFile.write(statsFile, stats, settings, loadSeconds, bvhSeconds, s.textureBytes());
             } catch (IOException e) {
                 throw new RenderFailure("cannot write " + statsFile + ": " + e.getMessage(), e);
             }

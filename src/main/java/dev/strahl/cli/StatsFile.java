@@ -3,10 +3,8 @@ package dev.strahl.cli;
 import com.fasterxml.jackson.core.JsonGenerator;
 import dev.strahl.io.json.JsonFile;
 import dev.strahl.render.Aov;
-import dev.strahl.render.RenderCluster;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
-import dev.strahl.units.MemberFigures;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -22,17 +20,10 @@ import java.util.Set;
 final class StatsFile {
     private StatsFile() {}
 
-    /** The figures per member of a cluster render; none without a cluster ({@code cluster} null). */
-    static List<MemberFigures> figures(RenderCluster cluster) {
-        return cluster == null ? List.of() : MemberFigures.of(cluster);
-    }
-
-    /**
-     * With {@code members}: a cluster render's figures per member ({@code MemberFigures.of(cluster)}),
-     * an object each with numbers (docs/cluster.md); none for a local render.
-     */
-    static void write(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhBuildSeconds, long textureBytes,
-                      List<MemberFigures> members) throws IOException {
+    /** A cluster render's figures per member ({@link RenderStats#members()}) are an object each with numbers (docs/cluster.md). */
+    static void write(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhBuildSeconds, long textureBytes)
+            throws IOException {
+        List<RenderStats.Member> members = stats.members();
         JsonFile.write(file, json -> {
             json.writeStartObject();
             json.writeNumberField("seconds", stats.seconds());
@@ -48,7 +39,7 @@ final class StatsFile {
             json.writeNumberField("load_seconds", loadSeconds);
             if (!members.isEmpty()) {
                 json.writeArrayFieldStart("members");
-                for (MemberFigures m : members) {
+                for (RenderStats.Member m : members) {
                     json.writeStartObject();
                     json.writeStringField("member", m.member());
                     json.writeBooleanField("coordinator", m.coordinator());

@@ -4,6 +4,7 @@ import dev.strahl.film.Film;
 import dev.strahl.integrator.Parallel;
 import dev.strahl.units.JobChannel;
 import dev.strahl.units.WorkUnit;
+import java.util.List;
 import java.util.concurrent.CompletionException;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.atomic.AtomicLong;
@@ -40,6 +41,11 @@ final class ClusterPasses implements PassRunner {
     ClusterPasses(Film film, JobChannel channel) {
         this.film = film;
         this.channel = channel;
+    }
+
+    @Override
+    public List<RenderStats.Member> members() {
+        return channel.figures(RenderStats.Member::new);
     }
 
     @Override

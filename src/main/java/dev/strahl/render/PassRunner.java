@@ -1,6 +1,7 @@
 package dev.strahl.render;
 
 import dev.strahl.integrator.Parallel;
+import java.util.List;
 import java.util.concurrent.ExecutionException;
 
 /**
@@ -37,6 +38,11 @@ interface PassRunner {
     /** Seconds, summed over threads, that threads waited at the ends of passes for the others (0 where not measured: a cluster). */
     default double idleSeconds() {
         return 0;
+    }
+
+    /** What each member of a cluster did for the job so far; none for the job's own threads. */
+    default List<RenderStats.Member> members() {
+        return List.of();
     }
 
     /** Threads that render (of all members, for a cluster). */

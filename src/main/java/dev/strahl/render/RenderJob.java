@@ -422,14 +422,14 @@ public final class RenderJob implements AutoCloseable {
                 completedSpp = end;
                 Image image = film.toImage();
                 passes.ended(image);
-                listener.passFinished(new RenderListener.Pass(pass + 1, end, workers.samplesDone(), elapsedSeconds()), image);
-                start = end;
                 pass++;
+                listener.passFinished(stats(pass), image);
+                start = end;
                 if (!settings.execution().timeLimit().isZero() && elapsedSeconds() >= settings.execution().timeLimit().toNanos() * 1e-9) {
                     break;                             // the pass that crossed the time limit is kept
                 }
             }
-            RenderStats stats = stats();
+            RenderStats stats = stats(pass);
             listener.finished(stats);
             result.complete(stats);
         } catch (ExecutionException e) {
@@ -446,8 +446,9 @@ public final class RenderJob implements AutoCloseable {
         return pass == 0 ? 1 : Math.min(MAX_AUTO_PASS, 1 << Math.min(pass - 1, 4));
     }
 
-    private RenderStats stats() {
+    /** The figures after {@code passCount} passes of this job. */
+    private RenderStats stats(int passCount) {
         return new RenderStats(elapsedSeconds(), workers.samplesDone(), workers.rayCount(), completedSpp, workers.threads(), workers.cancelled(),
-                invalidSamples(), workers.idleSeconds());
+                invalidSamples(), workers.idleSeconds(), passCount, workers.members());
     }
 }

@@ -59,21 +59,21 @@ class EmbeddingTest {
 
     @Test
     void theListenerHearsEveryPassWithItsFiguresAndTheSnapshotIsTheLastPass() throws Exception {
-        List<RenderListener.Pass> passes = new CopyOnWriteArrayList<>();
+        List<RenderStats> passes = new CopyOnWriteArrayList<>();
         List<Image> images = new CopyOnWriteArrayList<>();
         RenderSettings s = RenderSettings.defaults().withSize(20, 20).withSamplesPerPixel(16).withSeed(4);
         try (RenderJob job = RenderJob.start(inCode(), s, new RenderListener() {
             @Override
-            public void passFinished(Pass pass, Image image) {
-                passes.add(pass);
+            public void passFinished(RenderStats soFar, Image image) {
+                passes.add(soFar);
                 images.add(image);
             }
         })) {
             job.awaitCompletion();
             assertThat(job.snapshot()).isEqualTo(images.get(images.size() - 1)).isEqualTo(job.film().toImage());
         }
-        assertThat(passes).extracting(RenderListener.Pass::samplesPerPixel).containsExactly(1, 2, 4, 8, 16);
-        assertThat(passes).extracting(RenderListener.Pass::number).containsExactly(1, 2, 3, 4, 5);
+        assertThat(passes).extracting(RenderStats::samplesPerPixel).containsExactly(1, 2, 4, 8, 16);
+        assertThat(passes).extracting(RenderStats::passes).containsExactly(1, 2, 3, 4, 5);
         assertThat(passes.get(4).samples()).isEqualTo(16L * 20 * 20);
         assertThat(passes).allSatisfy(p -> assertThat(p.samplesPerSecond()).isPositive());
     }
