@@ -194,7 +194,7 @@ final class RenderCommand implements Callable<Integer> {
 
     private double loadSeconds;
     private double bvhSeconds;
-    private ImageWriters.Options writeOptions;
+    private ImageWriters writer;
     private OidnDenoiser oidn;
     /** The feature buffers to write (those the denoiser needs are rendered also when not written). */
     private Set<Aov> written = Set.of();
@@ -231,7 +231,7 @@ final class RenderCommand implements Callable<Integer> {
     private int run(PrintWriter err, Interrupts irq) throws SceneException, CheckpointException, InterruptedException {
         RenderSettings settings = settings();
         checkClusterOptions();
-        writeOptions = writeOptions();
+        writer = writer();
         if (!denoiserName.equals("strahl") && !denoiserName.equals("oidn")) {
             throw new IllegalArgumentException("--denoiser must be strahl or oidn, got '" + denoiserName + "'");
         }
@@ -325,7 +325,7 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     /** The PNG's tone curve and exposure, the EXR's type and compression, from the options (checked). */
-    private ImageWriters.Options writeOptions() {
+    private ImageWriters writer() {
         ToneMapping curve;
         try {
             curve = ToneMapping.of(tonemap);
@@ -341,7 +341,8 @@ final class RenderCommand implements Callable<Integer> {
         if (!exrCompression.equals("zip") && !exrCompression.equals("none")) {
             throw new IllegalArgumentException("--exr-compression must be zip or none, got '" + exrCompression + "'");
         }
-        return new ImageWriters.Options(curve, exposure, exrType.equals("float"), exrCompression.equals("zip"));
+        return ImageWriters.defaults().withToneMapping(curve).withExposure(exposure).withExrFloat(exrType.equals("float"))
+                .withExrZip(exrCompression.equals("zip"));
     }
 
     /**
@@ -489,7 +490,7 @@ final class RenderCommand implements Callable<Integer> {
         buffers = new RenderBuffers(buffers.color(), buffers.variance(), written.contains(Aov.ALBEDO) ? buffers.albedo() : null,
                 written.contains(Aov.NORMAL) ? buffers.normal() : null, written.contains(Aov.DEPTH) ? buffers.depth() : null);
         try {
-            ImageWriters.write(buffers, output, writeOptions);
+            writer.write(buffers, output);
         } catch (IOException | UncheckedIOException e) {
             throw new RenderFailure("cannot write " + output + ": " + e.getMessage(), e);
         }

@@ -332,7 +332,7 @@ public final class RenderJob implements AutoCloseable {
 
     /**
      * Waits for the render to end and returns its image with the per-pixel variance and the
-     * feature buffers of the settings ({@link RenderSettings#aovs()}): what a {@link Denoiser}
+     * feature buffers of the settings ({@link RenderSettings.Output#aovs()}): what a {@link Denoiser}
      * and the EXR output take.
      *
      * @return the buffers

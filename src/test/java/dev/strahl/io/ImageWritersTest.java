@@ -213,7 +213,7 @@ class ImageWritersTest {
     void exrHoldsTheImageAndItsFeatureBuffersInOneFileWithTheNamesOfTheLayers() throws IOException {
         RenderBuffers b = buffers(5, 3);
         Path out = dir.resolve("out.exr");
-        ImageWriters.write(b, out, ImageWriters.Options.DEFAULT);
+        ImageWriters.defaults().write(b, out);
         ExrReader.ExrImage read = ExrReader.readFile(out);
         assertThat(read.header().compression()).isEqualTo(ExrCompression.ZIP);
         assertThat(read.header().channels()).extracting(ExrHeader.Channel::name)
@@ -239,7 +239,7 @@ class ImageWritersTest {
         }
         // float samples, no compression: every value exactly
         Path flat = dir.resolve("flat.exr");
-        ImageWriters.write(b, flat, new ImageWriters.Options(ToneMapping.CLAMP, 0, true, false));
+        ImageWriters.defaults().withExrFloat(true).withExrZip(false).write(b, flat);
         ExrReader.ExrImage f = ExrReader.readFile(flat);
         assertThat(f.header().compression()).isEqualTo(ExrCompression.NONE);
         assertThat(f.header().channels()).extracting(ExrHeader.Channel::type).containsOnly(FLOAT);
@@ -263,7 +263,7 @@ class ImageWritersTest {
         assumeTrue(available, "python3 with the OpenEXR package is not installed");
         RenderBuffers b = buffers(4, 2);
         Path out = dir.resolve("layers.exr");
-        ImageWriters.write(b, out, ImageWriters.Options.DEFAULT);
+        ImageWriters.defaults().write(b, out);
         Process p = new ProcessBuilder("python3", "docs/anchors/exr_dump.py", out.toString()).redirectErrorStream(true).start();
         String dump = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
         assertThat(p.waitFor()).as(dump).isZero();
@@ -280,7 +280,7 @@ class ImageWritersTest {
     void featureBuffersGoBesideAPngOrPfmAsPfmFiles() throws IOException {
         RenderBuffers b = buffers(3, 2);
         Path png = dir.resolve("shot.png");
-        ImageWriters.write(new RenderBuffers(b.color(), b.variance(), b.albedo(), null, b.depth()), png, ImageWriters.Options.DEFAULT);
+        ImageWriters.defaults().write(new RenderBuffers(b.color(), b.variance(), b.albedo(), null, b.depth()), png);
         assertThat(filesIn(dir)).containsExactly("shot.albedo.pfm", "shot.depth.pfm", "shot.png");
         assertThat(PfmReader.read(dir.resolve("shot.albedo.pfm"))).isEqualTo(b.albedo());
         assertThat(PfmReader.read(dir.resolve("shot.depth.pfm"))).isEqualTo(b.depth());
@@ -292,8 +292,8 @@ class ImageWritersTest {
         Image img = new Image(1, 1, new float[] {4, 1, 0.25f});
         Path clamp = dir.resolve("clamp.png");
         Path aces = dir.resolve("aces.png");
-        ImageWriters.write(RenderBuffers.of(img), clamp, ImageWriters.Options.DEFAULT);
-        ImageWriters.write(RenderBuffers.of(img), aces, new ImageWriters.Options(ToneMapping.ACES, -1, false, true));
+        ImageWriters.defaults().write(RenderBuffers.of(img), clamp);
+        ImageWriters.defaults().withToneMapping(ToneMapping.ACES).withExposure(-1).write(RenderBuffers.of(img), aces);
         int c = ImageIO.read(clamp.toFile()).getRGB(0, 0);
         int a = ImageIO.read(aces.toFile()).getRGB(0, 0);
         assertThat(c & 0xFFFFFF).isEqualTo(0xFFFF89);                   // 4 and 1 clamp to 255, 0.25 -> 137
@@ -302,7 +302,7 @@ class ImageWritersTest {
         assertThat((a >> 8) & 0xFF).isEqualTo(DisplayEncoding.toSrgb8(DisplayEncoding.aces(0.5)));
         assertThat(a & 0xFF).isEqualTo(DisplayEncoding.toSrgb8(DisplayEncoding.aces(0.125)));
         Path pfm = dir.resolve("linear.pfm");
-        ImageWriters.write(RenderBuffers.of(img), pfm, new ImageWriters.Options(ToneMapping.AGX, 3, false, true));
+        ImageWriters.defaults().withToneMapping(ToneMapping.AGX).withExposure(3).write(RenderBuffers.of(img), pfm);
         assertThat(PfmReader.read(pfm)).isEqualTo(img);
     }
 }
