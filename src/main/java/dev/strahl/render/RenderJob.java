@@ -5,7 +5,6 @@ import dev.strahl.film.Film;
 import dev.strahl.image.Image;
 import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
-import dev.strahl.scene.Camera;
 import dev.strahl.scene.Scene;
 import dev.strahl.world.World;
 import java.io.IOException;
@@ -72,9 +71,7 @@ public final class RenderJob implements AutoCloseable {
         this.identity = identity;
         this.earlierInvalid = restored != null ? restored.invalidSamples() : 0;
         this.earlierSeconds = restored != null ? restored.seconds() : 0;
-        Camera c = scene.camera();
-        var rays = new CameraRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), c.aperture(), c.focusDistance(),
-                settings.output().width(), settings.output().height());
+        var rays = CameraRays.of(scene.camera(), settings.output().width(), settings.output().height());
         World world = World.of(scene);
         int number = JOB_NUMBER.incrementAndGet();
         this.workers = cluster != null ? cluster.apply(film)

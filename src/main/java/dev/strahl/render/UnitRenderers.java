@@ -4,7 +4,6 @@ import dev.strahl.camera.CameraRays;
 import dev.strahl.film.Film;
 import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
-import dev.strahl.scene.Camera;
 import dev.strahl.scene.Scene;
 import dev.strahl.units.UnitRenderer;
 import dev.strahl.units.UnitService;
@@ -36,8 +35,7 @@ final class UnitRenderers implements UnitService {
         if (integrator.preparesEachSample()) {
             throw new IllegalArgumentException("the " + d.settings.transport().integrator().id() + " integrator cannot render on a cluster");
         }
-        Camera c = scene.camera();
-        var rays = new CameraRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), c.aperture(), c.focusDistance(), d.settings.output().width(), d.settings.output().height());
+        var rays = CameraRays.of(scene.camera(), d.settings.output().width(), d.settings.output().height());
         World world = World.of(scene);
         Supplier<FeatureTracer> features = d.settings.output().aovs().isEmpty() ? null : () -> new FeatureTracer(world, d.settings.transport().cullBackFaces());
         return new Renderer(integrator, features, rays, d.settings.sampling().seed(), d.stratified);
