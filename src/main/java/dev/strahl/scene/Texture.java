@@ -1,5 +1,6 @@
 package dev.strahl.scene;
 
+import dev.strahl.texture.TextureLookup;
 import dev.strahl.image.Rgb;
 import dev.strahl.texture.Bitmap;
 import dev.strahl.texture.Channel;
@@ -273,9 +274,9 @@ public final class Texture {
     }
 
     /** The texture as a colour: sRGB-decoded texels unless linear (a one-channel texture: its grey value), times the factor. */
-    dev.strahl.texture.TextureLookup colour() {
+    TextureLookup colour() {
         if (constant != null) {
-            return dev.strahl.texture.TextureLookup.of(constant);
+            return TextureLookup.of(constant);
         }
         if (channel != null) {
             return withFactor(new ImageTexture(bitmap, wrap, transform, channel), Channel.LUMINANCE);
@@ -284,15 +285,15 @@ public final class Texture {
     }
 
     /** The texture as linear data (normal maps): the texels as stored, never sRGB-decoded, times the factor. */
-    dev.strahl.texture.TextureLookup data() {
+    TextureLookup data() {
         if (constant != null) {
-            return dev.strahl.texture.TextureLookup.of(constant);
+            return TextureLookup.of(constant);
         }
         return withFactor(new ImageTexture(bitmap, wrap, transform, channel != null ? channel : Channel.LUMINANCE), Channel.LUMINANCE);
     }
 
     /** The texture as a number from a channel of the linear texels (its own channel if it has one), times the factor. */
-    dev.strahl.texture.TextureLookup scalar(Channel channel) {
+    TextureLookup scalar(Channel channel) {
         if (constant != null) {
             return new ConstantTexture(constant, channelOf(constant, channel));
         }
@@ -304,7 +305,7 @@ public final class Texture {
      * that channel's factor, or (a luminance, or a one-channel texture, whose number is its grey
      * value) by the factor's luminance.
      */
-    private dev.strahl.texture.TextureLookup withFactor(dev.strahl.texture.TextureLookup t, Channel read) {
+    private TextureLookup withFactor(TextureLookup t, Channel read) {
         if (factor == null) {
             return t;
         }

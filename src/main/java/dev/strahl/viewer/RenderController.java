@@ -206,7 +206,7 @@ final class RenderController {
      * @return the new focus distance, or NaN if nothing was hit
      */
     synchronized double focusAt(double fx, double fy) {
-        double d = FocusPicker.focusDistance(scene, camera.toCamera(), fx, fy, (double) settings.output().width() / settings.output().height());
+        double d = scene.focusDistance(camera.toCamera(), fx, fy, (double) settings.output().width() / settings.output().height());
         if (d > 0) {
             focusDistance = d;
             renderAgain();

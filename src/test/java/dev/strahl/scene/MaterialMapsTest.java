@@ -1,5 +1,6 @@
 package dev.strahl.scene;
 
+import dev.strahl.texture.TextureLookup;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -38,11 +39,11 @@ class MaterialMapsTest {
         assertThat(rgb.hasAlpha()).isFalse();
         assertThat(Texture.constant(0.3).hasAlpha()).isFalse();
         // Texel centres at u = 1/4 and 3/4 (clamped so the bilinear lookup reads one texel).
-        dev.strahl.texture.TextureLookup a = rgba.alpha().clamped().scalar(Channel.LUMINANCE);
+        TextureLookup a = rgba.alpha().clamped().scalar(Channel.LUMINANCE);
         assertEquals(0, a.value(0.1, 0.5), 1e-6);
         assertEquals(1, a.value(0.9, 0.5), 1e-6);
         assertEquals(0.5, a.mean().r(), 1e-6, "an alpha texture's mean is its alpha's");
-        dev.strahl.texture.TextureLookup none = rgb.alpha().scalar(Channel.LUMINANCE);
+        TextureLookup none = rgb.alpha().scalar(Channel.LUMINANCE);
         assertEquals(1, none.value(0.1, 0.5), 0);
         assertThat(Texture.constant(0.2).alpha()).isEqualTo(Texture.constant(1));
         MutableRgb c = new MutableRgb();

@@ -1,14 +1,10 @@
-package dev.strahl.viewer;
+package dev.strahl.scene;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import dev.strahl.image.Rgb;
 import dev.strahl.io.SceneLoader;
-import dev.strahl.scene.Camera;
-import dev.strahl.scene.Material;
-import dev.strahl.scene.Scene;
-import dev.strahl.scene.Texture;
 import java.nio.file.Path;
 import org.joml.Vector3d;
 import org.junit.jupiter.api.Test;
@@ -22,8 +18,8 @@ class FocusPickerTest {
         Camera c = scene.camera();
         double toCentre = c.lookFrom().distance(new Vector3d(0, 0, -0.5));
         // the centre ray runs along the viewing direction through the green sphere's centre (radius 0.5)
-        assertThat(FocusPicker.focusDistance(scene, c, 0.5, 0.5, 1)).isCloseTo(toCentre - 0.5, within(1e-9));
-        assertThat(FocusPicker.focusDistance(scene, c, 0.02, 0.02, 1)).isNaN();
+        assertThat(scene.focusDistance(c, 0.5, 0.5, 1)).isCloseTo(toCentre - 0.5, within(1e-9));
+        assertThat(scene.focusDistance(c, 0.02, 0.02, 1)).isNaN();
     }
 
     @Test
@@ -31,7 +27,7 @@ class FocusPickerTest {
         Scene scene = SceneLoader.load(Path.of("src/test/resources/golden/thinlens.json"));
         Camera c = scene.camera();
         // the near red sphere, left of the centre: its distance along the view is less than along the ray
-        double d = FocusPicker.focusDistance(scene, c, 0.12, 0.62, 1);
+        double d = scene.focusDistance(c, 0.12, 0.62, 1);
         assertThat(d).isBetween(2.5, 3.6);
     }
 
@@ -47,8 +43,8 @@ class FocusPickerTest {
         Scene kept = Scene.builder().camera(c).environment(new Rgb(1, 1, 1))
                 .addSphere(new Vector3d(0, 0, 0), 1, grey)
                 .addSphere(new Vector3d(0, 0, 2.5), 0.5, grey.withAlphaCutout(Texture.constant(1), 0.5)).build();
-        assertThat(FocusPicker.focusDistance(solid, c, 0.5, 0.5, 1)).isCloseTo(4, within(1e-9));
-        assertThat(FocusPicker.focusDistance(cut, c, 0.5, 0.5, 1)).as("the cut-away sphere in front").isCloseTo(4, within(1e-9));
-        assertThat(FocusPicker.focusDistance(kept, c, 0.5, 0.5, 1)).as("the same sphere kept").isCloseTo(2, within(1e-9));
+        assertThat(solid.focusDistance(c, 0.5, 0.5, 1)).isCloseTo(4, within(1e-9));
+        assertThat(cut.focusDistance(c, 0.5, 0.5, 1)).as("the cut-away sphere in front").isCloseTo(4, within(1e-9));
+        assertThat(kept.focusDistance(c, 0.5, 0.5, 1)).as("the same sphere kept").isCloseTo(2, within(1e-9));
     }
 }

@@ -1,15 +1,13 @@
-package dev.strahl.viewer;
+package dev.strahl.scene;
 
 import dev.strahl.camera.CameraRays;
 import dev.strahl.geometry.Ray;
 import dev.strahl.integrator.Shading;
 import dev.strahl.integrator.Tracer;
-import dev.strahl.scene.Camera;
-import dev.strahl.scene.Scene;
 import dev.strahl.world.World;
 
 /**
- * What Ctrl+click focuses on: the first surface the pinhole ray through the clicked point hits,
+ * What {@link Scene#focusDistance} finds (the viewer's Ctrl+click): the first surface the pinhole ray through the clicked point hits,
  * found as the renderer finds it (the tracer, so an alpha cut-out's cut-away parts are passed
  * through, as the camera sees them), and its distance along the camera's viewing direction (the thin
  * lens's focus distance that makes that point sharp).
@@ -27,7 +25,7 @@ final class FocusPicker {
     static double focusDistance(Scene scene, Camera camera, double fx, double fy, double aspect) {
         int height = 1000;
         int width = Math.max(1, (int) Math.round(height * aspect));
-        CameraRays rays = new CameraRays(camera.lookFrom(), camera.lookAt(), camera.up(), camera.fovDegrees(), width, height);
+        CameraRays rays = CameraRays.pinholeOf(camera, width, height);
         Ray ray = new Ray();
         rays.generate(fx * width, fy * height, ray);
         World world = World.of(scene);
