@@ -69,9 +69,9 @@ class ShadowsOptionTest {
 
     @Test
     void viewCarriesItIntoTheViewerOptions() {
-        assertThat(ViewCommandTest.parse("view", "s.json").shadows()).isTrue();
+        assertThat(ViewCommandTest.parse("view", "s.json").settings().transport().shadows()).isTrue();
         ViewerOptions off = ViewCommandTest.parse("view", "s.json", "--shadows", "off");
-        assertThat(off.shadows()).isFalse();
+        assertThat(off.settings().transport().shadows()).isFalse();
         assertThat(off.given()).as("not a scene file's setting").isEmpty();
     }
 }

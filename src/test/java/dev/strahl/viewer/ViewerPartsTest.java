@@ -32,7 +32,8 @@ class ViewerPartsTest {
     Path dir;
 
     static ViewerOptions options(Set<Setting> given) {
-        return new ViewerOptions(null, 200, 100, 256, 5, HemisphereSampling.COSINE, 2, 9, IntegratorKind.WHITTED, 2, Theme.LIGHT, given);
+        return new ViewerOptions(null, RenderSettings.defaults().withSize(200, 100).withMaxDepth(5).withThreads(2).withSeed(9).withIntegrator(IntegratorKind.WHITTED).withLightSamples(2),
+                256, Theme.LIGHT, given, SceneOverrides.NONE);
     }
 
     @Test
@@ -80,15 +81,19 @@ class ViewerPartsTest {
     void optionsAreCheckedWhenMade() {
         ViewerOptions d = ViewerOptions.defaults();
         assertThat(d.renderSettings().execution().samplesPerPass()).isEqualTo(1);
-        assertThat(d.integrator()).isEqualTo(IntegratorKind.PATH);
+        assertThat(d.settings().transport().integrator()).isEqualTo(IntegratorKind.PATH);
         assertThat(d.renderSettings().transport().integrator()).isEqualTo(IntegratorKind.PATH);
-        assertThatThrownBy(() -> new ViewerOptions(null, 0, 512, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of()))
+        assertThatThrownBy(() -> new ViewerOptions(null, RenderSettings.defaults().withSize(0, 512),
+                0, Theme.LIGHT, Set.of(), SceneOverrides.NONE))
                 .hasMessageContaining("image size");
-        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, -1, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of()))
+        assertThatThrownBy(() -> new ViewerOptions(null, RenderSettings.defaults().withSize(64, 64),
+                -1, Theme.LIGHT, Set.of(), SceneOverrides.NONE))
                 .hasMessageContaining("stop-at");
-        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, 0, 0, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of()))
+        assertThatThrownBy(() -> new ViewerOptions(null, RenderSettings.defaults().withSize(64, 64).withMaxDepth(0),
+                0, Theme.LIGHT, Set.of(), SceneOverrides.NONE))
                 .hasMessageContaining("max depth");
-        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.DIRECT, 0, Theme.LIGHT, Set.of()))
+        assertThatThrownBy(() -> new ViewerOptions(null, RenderSettings.defaults().withSize(64, 64).withIntegrator(IntegratorKind.DIRECT).withLightSamples(0),
+                0, Theme.LIGHT, Set.of(), SceneOverrides.NONE))
                 .hasMessageContaining("light samples");
     }
 
@@ -143,7 +148,7 @@ class ViewerPartsTest {
                   "shapes": [ { "type": "mesh", "file": "cornell-box.obj" } ] }
                 """);
         List<Dimension> checked = new ArrayList<>();
-        SceneFiles.Opened opened = SceneFiles.open(file, ViewerOptions.defaults(), (w, h) -> checked.add(new Dimension(w, h)));
+        SceneFiles.Opened opened = SceneFiles.open(file, ViewerOptions.defaults(), (w, h, features) -> checked.add(new Dimension(w, h)));
         assertThat(opened.file()).isEqualTo(file);
         assertThat(opened.settings().output().width()).isEqualTo(96);
         assertThat(opened.settings().output().height()).isEqualTo(48);
@@ -160,7 +165,7 @@ class ViewerPartsTest {
         Path huge = Files.writeString(dir.resolve("huge.json"), """
                 { "film": { "width": 30000, "height": 20000 }, "shapes": [ { "type": "mesh", "file": "cornell-box.obj" } ] }
                 """);
-        Viewer.FilmCheck atMost4k = (w, h) -> {
+        Viewer.FilmCheck atMost4k = (w, h, features) -> {
             if (w > 4096 || h > 4096) {
                 throw new IllegalArgumentException("a " + w + "x" + h + " image is too large");
             }
@@ -171,8 +176,8 @@ class ViewerPartsTest {
                 .as("--width and --height given win over the file's film, and pass").isEqualTo(200);
         assertThatThrownBy(() -> SceneFiles.open(huge, options(Set.of(Setting.WIDTH)), atMost4k))
                 .as("--width alone keeps the file's height").hasMessage("a 200x20000 image is too large");
-        ViewerOptions wide = new ViewerOptions(null, 8000, 100, 256, 5, HemisphereSampling.COSINE, 2, 9, IntegratorKind.WHITTED, 2,
-                Theme.LIGHT, Set.of(Setting.WIDTH, Setting.HEIGHT));
+        ViewerOptions wide = new ViewerOptions(null, RenderSettings.defaults().withSize(8000, 100).withMaxDepth(5).withThreads(2).withSeed(9).withIntegrator(IntegratorKind.WHITTED).withLightSamples(2),
+                256, Theme.LIGHT, Set.of(Setting.WIDTH, Setting.HEIGHT), SceneOverrides.NONE);
         assertThatThrownBy(() -> SceneFiles.open(huge, wide, atMost4k)).as("as --width 8000 --height 100")
                 .hasMessage("a 8000x100 image is too large");
         assertThat(SceneFiles.open(huge, ViewerOptions.defaults(), Viewer.FilmCheck.NONE).settings().output().width()).isEqualTo(30000);

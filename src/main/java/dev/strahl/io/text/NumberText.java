@@ -3,8 +3,8 @@ package dev.strahl.io.text;
 import java.util.Locale;
 
 /** Figures as the command line and the viewer print them. */
-public final class Units {
-    private Units() {}
+public final class NumberText {
+    private NumberText() {}
 
 
     /** "m:ss", or "h:mm:ss" from an hour on. */
