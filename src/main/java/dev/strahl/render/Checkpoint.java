@@ -317,7 +317,7 @@ final class Checkpoint {
         Map<String, Object> entries = new LinkedHashMap<>(SettingsCodec.entries(settings));
         entries.keySet().removeAll(NOT_IN_FINGERPRINT);
         // Not a setting but decides the samples as much: the sample mode of the JVM (-Dstrahl.sampler).
-        entries.put("sampler", RenderWorkers.stratifiedSampler() ? "stratified" : "independent");
+        entries.put("sampler", SampleLoop.stratifiedSampler() ? "stratified" : "independent");
         // Which buffers are written does not matter, whether the film keeps features does (its layout).
         entries.put("features", !settings.output().aovs().isEmpty());
         return SettingsCodec.text(entries);

@@ -52,6 +52,6 @@ interface PassRunner {
 
     /** Samples per pixel of automatic pass {@code pass} (from 0). */
     default int passSize(int pass) {
-        return RenderJob.autoPassSize(pass);
+        return PassLoop.autoPassSize(pass);
     }
 }

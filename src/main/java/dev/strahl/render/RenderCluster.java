@@ -102,7 +102,7 @@ public final class RenderCluster implements AutoCloseable {
         }
         byte[] digest = Checkpoint.of(scene, settings).sceneDigestBytes();
         JobChannel channel = backend.open(new JobSpec(sceneFile, scene.camera(),
-                UnitRenderers.encode(settings, RenderWorkers.stratifiedSampler()), digest, scene));
+                UnitRenderers.encode(settings, SampleLoop.stratifiedSampler()), digest, scene));
         try {
             return RenderJob.launch(scene, settings, listener, checkpoint, film -> new ClusterPasses(film, channel));
         } catch (CheckpointException | IOException | RuntimeException e) {

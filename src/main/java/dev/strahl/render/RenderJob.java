@@ -1,9 +1,7 @@
 package dev.strahl.render;
 
-import dev.strahl.camera.CameraRays;
 import dev.strahl.film.Film;
 import dev.strahl.image.Image;
-import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.scene.Scene;
 import dev.strahl.world.World;
@@ -37,7 +35,6 @@ import java.util.function.Function;
  * {@link #cancel()} stops it.
  */
 public final class RenderJob implements AutoCloseable {
-    private static final int MAX_AUTO_PASS = 16;
     private static final AtomicInteger JOB_NUMBER = new AtomicInteger();
 
     private final RenderSettings settings;
@@ -64,19 +61,15 @@ public final class RenderJob implements AutoCloseable {
                       Checkpoint.Restored restored, Function<Film, PassRunner> cluster) {
         this.settings = Objects.requireNonNull(settings, "settings");
         this.listener = Objects.requireNonNull(listener, "listener");
-        boolean features = !settings.output().aovs().isEmpty();
-        this.film = restored != null ? restored.film() : new Film(settings.output().width(), settings.output().height(), features);
+        this.film = restored != null ? restored.film()
+                : new Film(settings.output().width(), settings.output().height(), !settings.output().aovs().isEmpty());
         this.integrator = Objects.requireNonNull(integrator, "integrator");
         this.scene = Objects.requireNonNull(scene, "scene");
         this.identity = identity;
         this.earlierInvalid = restored != null ? restored.invalidSamples() : 0;
         this.earlierSeconds = restored != null ? restored.seconds() : 0;
-        var rays = CameraRays.of(scene.camera(), settings.output().width(), settings.output().height());
-        World world = World.of(scene);
         int number = JOB_NUMBER.incrementAndGet();
-        this.workers = cluster != null ? cluster.apply(film)
-                : new RenderWorkers(film, rays, integrator, features ? () -> new FeatureTracer(world, settings.transport().cullBackFaces()) : null,
-                        settings.sampling().seed(), settings.execution().effectiveThreads(), settings.execution().stripes(), "strahl-render-" + number);
+        this.workers = cluster != null ? cluster.apply(film) : RenderWorkers.of(scene, settings, film, integrator, "strahl-render-" + number);
         this.completedSpp = this.earlierSpp = Math.min(film.minSampleCount(), settings.sampling().samplesPerPixel());   // 0, unless restored
         this.passes = new PassBuffers(film, settings.output().aovs());
         this.restoredSamples = film.totalSamples();
@@ -394,53 +387,8 @@ public final class RenderJob implements AutoCloseable {
     }
 
     private void run() {
-        try {
-            int spp = settings.sampling().samplesPerPixel();
-            boolean prepares = integrator.preparesEachSample();
-            int start = film.minSampleCount();
-            if (restoredSamples > 0) {
-                passes.ended(film.toImage());              // what the restored film holds, until a pass ends
-            }
-            int pass = 0;
-            while (start < spp && !workers.cancelled()) {
-                int size = prepares ? 1 : settings.execution().samplesPerPass() > 0 ? settings.execution().samplesPerPass() : workers.passSize(pass);
-                int end = Math.min(spp, start + size);
-                if (prepares) {
-                    integrator.prepareSample(settings.sampling().seed(), start, workers.parallel());
-                    if (workers.cancelled()) {
-                        break;
-                    }
-                }
-                passes.starting();
-                workers.renderPass(start, end);
-                if (workers.cancelled()) {
-                    break;
-                }
-                completedSpp = end;
-                Image image = film.toImage();
-                passes.ended(image);
-                pass++;
-                listener.passFinished(stats(pass), image);
-                start = end;
-                if (!settings.execution().timeLimit().isZero() && elapsedSeconds() >= settings.execution().timeLimit().toNanos() * 1e-9) {
-                    break;                             // the pass that crossed the time limit is kept
-                }
-            }
-            RenderStats stats = stats(pass);
-            listener.finished(stats);
-            result.complete(stats);
-        } catch (ExecutionException e) {
-            result.completeExceptionally(e.getCause());    // what failed on a render thread, not its wrapper
-        } catch (Throwable t) {
-            result.completeExceptionally(t);
-        } finally {
-            workers.shutdown();
-        }
-    }
-
-    /** Passes of 1, 1, 2, 4, 8 and then 16 samples per pixel: a first image at once, little overhead later. */
-    static int autoPassSize(int pass) {
-        return pass == 0 ? 1 : Math.min(MAX_AUTO_PASS, 1 << Math.min(pass - 1, 4));
+        new PassLoop(settings, integrator, workers, film, passes, listener)
+                .run(restoredSamples > 0, spp -> completedSpp = spp, this::stats, this::elapsedSeconds, result);
     }
 
     /** The figures after {@code passCount} passes of this job. */

@@ -18,7 +18,7 @@ import java.util.function.Supplier;
 /**
  * The render package's side of a cluster member: makes the renderer of a job's work units from
  * the scene the member loaded and the settings the coordinator sent. A unit is rendered with the
- * very sample loop of the local passes ({@link RenderWorkers#sample}), going on from the state of
+ * very sample loop of the local passes ({@link SampleLoop#sample}), going on from the state of
  * its tile, so its sums are those of a local render.
  */
 final class UnitRenderers implements UnitService {
@@ -69,7 +69,7 @@ final class UnitRenderers implements UnitService {
         private final CameraRays rays;
         private final long seed;
         private final boolean stratified;
-        private final ConcurrentLinkedQueue<RenderWorkers.WorkerState> idle = new ConcurrentLinkedQueue<>();
+        private final ConcurrentLinkedQueue<SampleLoop.WorkerState> idle = new ConcurrentLinkedQueue<>();
 
         Renderer(Integrator integrator, Supplier<FeatureTracer> features, CameraRays rays, long seed, boolean stratified) {
             this.integrator = integrator;
@@ -81,9 +81,9 @@ final class UnitRenderers implements UnitService {
 
         @Override
         public void render(WorkUnit unit) {
-            RenderWorkers.WorkerState w = idle.poll();
+            SampleLoop.WorkerState w = idle.poll();
             if (w == null) {
-                w = new RenderWorkers.WorkerState(0, integrator.newWorker(), RenderWorkers.newSampler(stratified, seed),
+                w = new SampleLoop.WorkerState(0, integrator.newWorker(), SampleLoop.newSampler(stratified, seed),
                         features != null ? features.get() : null);
             }
             try {
@@ -104,7 +104,7 @@ final class UnitRenderers implements UnitService {
                         System.arraycopy(sums, perPixel * i, state, 0, perPixel);
                         tile.restorePixel(tx, ty, counts[i], state);
                         int s0 = Math.max(unit.firstSample(), counts[i]);
-                        invalid += RenderWorkers.samplePixel(w, rays, seed, tile, tile.pixelIndex(tx, ty), unit.x0() + tx, unit.y0() + ty,
+                        invalid += SampleLoop.samplePixel(w, rays, seed, tile, tile.pixelIndex(tx, ty), unit.x0() + tx, unit.y0() + ty,
                                 s0, unit.endSample());
                         counts[i] = tile.pixelState(tx, ty, state);
                         System.arraycopy(state, 0, sums, perPixel * i, perPixel);
