@@ -58,21 +58,21 @@ public final class PfmReader {
             head.flip();
             Header hd = Header.parse(head, size, file);
             float[] rgb = new float[(int) (3 * hd.pixels())];
-            ch.position(hd.dataOffset);
+            ch.position(hd.dataOffset());
             readPixels(ch, hd, rgb, file);
-            return new Image(hd.width, hd.height, rgb);
+            return new Image(hd.width(), hd.height(), rgb);
         }
     }
 
     /** Reads the pixel data in chunks, turning the bottom-up rows top-down and gray into rgb. */
     private static void readPixels(FileChannel ch, Header hd, float[] rgb, Path file) throws IOException {
-        int rowFloats = hd.channels * hd.width;
-        int step = 3 / hd.channels;          // destination floats per source float
+        int rowFloats = hd.channels() * hd.width();
+        int step = 3 / hd.channels();          // destination floats per source float
         long remaining = hd.dataBytes();
-        ByteBuffer buf = ByteBuffer.allocate((int) Math.min(remaining, CHUNK_BYTES)).order(hd.order);
+        ByteBuffer buf = ByteBuffer.allocate((int) Math.min(remaining, CHUNK_BYTES)).order(hd.order());
         float[] chunk = new float[buf.capacity() / Float.BYTES];
-        int y = hd.height - 1;
-        int dst = 3 * y * hd.width;
+        int y = hd.height() - 1;
+        int dst = 3 * y * hd.width();
         int inRow = 0;
         while (remaining > 0) {
             buf.clear().limit((int) Math.min(remaining, buf.capacity()));
@@ -92,7 +92,7 @@ public final class PfmReader {
                 if (++inRow == rowFloats) {  // next file row is the image row above
                     inRow = 0;
                     y--;
-                    dst = 3 * y * hd.width;
+                    dst = 3 * y * hd.width();
                 }
             }
         }
@@ -112,20 +112,7 @@ public final class PfmReader {
     }
 
     /** The parsed header; {@code dataOffset} is where the pixels start. */
-    private static final class Header {
-        final int channels;
-        final int width;
-        final int height;
-        final ByteOrder order;
-        final long dataOffset;
-
-        private Header(int channels, int width, int height, ByteOrder order, long dataOffset) {
-            this.channels = channels;
-            this.width = width;
-            this.height = height;
-            this.order = order;
-            this.dataOffset = dataOffset;
-        }
+    private record Header(int channels, int width, int height, ByteOrder order, long dataOffset) {
 
         long pixels() {
             return (long) width * height;

@@ -48,14 +48,11 @@ public record Principled(TextureLookup baseColor, TextureLookup metallic, Textur
     /** Smallest probability of a lobe that may be non-zero. */
     private static final double FLOOR = 0.05;
 
-    /** Checks for nulls and the index of refraction. */
+    /** Checks that every parameter has its texture (a constant or an image) and the index of refraction. */
     public Principled {
-        Objects.requireNonNull(baseColor, "baseColor");
-        Objects.requireNonNull(metallic, "metallic");
-        Objects.requireNonNull(roughness, "roughness");
-        Objects.requireNonNull(specular, "specular");
-        Objects.requireNonNull(specularColor, "specularColor");
-        Objects.requireNonNull(transmission, "transmission");
+        for (TextureLookup parameter : new TextureLookup[] {baseColor, metallic, roughness, specular, specularColor, transmission}) {
+            Objects.requireNonNull(parameter, "a principled parameter without texture");
+        }
         if (!(ior > 0) || !Double.isFinite(ior)) {
             throw new IllegalArgumentException("index of refraction must be a positive finite number, got " + ior);
         }
@@ -190,13 +187,7 @@ public record Principled(TextureLookup baseColor, TextureLookup metallic, Textur
         }
         out.delta = false;
         out.eta = 1;
-        out.pdf = pdf(uv, wo, out.wi);
-        if (!(out.pdf > 0) || !Double.isFinite(out.pdf)) {
-            return false;
-        }
-        eval(uv, wo, out.wi, out.weight);
-        out.weight.mul(Math.abs(out.wi.z) / out.pdf);
-        return out.weight.isFinite();
+        return weighByPdf(uv, wo, out);
     }
 
     private static double clamp01(double x) {

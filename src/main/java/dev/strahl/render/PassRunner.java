@@ -2,6 +2,7 @@ package dev.strahl.render;
 
 import dev.strahl.integrator.Parallel;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.ExecutionException;
 
 /**
@@ -29,9 +30,24 @@ interface PassRunner {
     /** While held: waits until nothing writes into the film. */
     void awaitStill() throws InterruptedException;
 
-    long samplesDone();
+    /** What the runner has counted: camera samples taken, and those that were NaN or infinite. */
+    Tally tally();
 
-    long invalidSamples();
+    /** Camera samples taken. */
+    default long samplesDone() {
+        return tally().samples.get();
+    }
+
+    /** Samples that were NaN or infinite (added as black). */
+    default long invalidSamples() {
+        return tally().invalid.get();
+    }
+
+    /** The counts of a runner, added to by its threads. */
+    final class Tally {
+        final AtomicLong samples = new AtomicLong();
+        final AtomicLong invalid = new AtomicLong();
+    }
 
     long rayCount();
 

@@ -36,8 +36,7 @@ final class RenderWorkers implements Parallel, PassRunner {
     private final CameraRays cameraRays;
     private final ExecutorService pool;
     private final SampleLoop.WorkerState[] workers;
-    private final AtomicLong samplesDone = new AtomicLong();
-    private final AtomicLong invalidSamples = new AtomicLong();
+    private final Tally tally = new Tally();
     /** Summed over threads and passes: how long a thread that had finished its part of a pass waited for the last one. */
     private final AtomicLong idleNanos = new AtomicLong();
     /** Teaching option: one stripe per thread instead of tiles. */
@@ -159,13 +158,8 @@ final class RenderWorkers implements Parallel, PassRunner {
     }
 
     @Override
-    public long samplesDone() {
-        return samplesDone.get();
-    }
-
-    @Override
-    public long invalidSamples() {
-        return invalidSamples.get();
+    public Tally tally() {
+        return tally;
     }
 
     @Override
@@ -316,10 +310,10 @@ final class RenderWorkers implements Parallel, PassRunner {
                 rowSamples += Math.max(0, endSample - s0);
                 invalid += SampleLoop.samplePixel(w, cameraRays, seed, film, pixel, x, y, s0, endSample);
             }
-            samplesDone.addAndGet(rowSamples);
+            tally.samples.addAndGet(rowSamples);
         }
         if (invalid > 0) {
-            invalidSamples.addAndGet(invalid);
+            tally.invalid.addAndGet(invalid);
         }
     }
 }

@@ -41,12 +41,8 @@ final class JsonMaterials {
     MaterialSpec material(String name, JsonNode node) throws SceneException {
         String key = "materials." + name;
         Map<String, JsonNode> m = v.object(node, key);
-        String type = v.string(v.require(m, "type", node), key + ".type");
+        String type = v.type(m, node, key, MATERIAL_KEYS.keySet(), "material", " for '" + key + "'", "");
         Set<String> keys = MATERIAL_KEYS.get(type);
-        if (keys == null) {
-            throw new SceneException(file, m.get("type").line, "unknown material type '" + type + "' for '" + key
-                    + "' (known: " + JsonValues.sorted(MATERIAL_KEYS.keySet()) + ")");
-        }
         if (m.containsKey("emission") && !keys.contains("emission")) {
             throw new SceneException(file, m.get("emission").line, "'" + key + ".emission': a " + type
                     + " material cannot emit light; emission is allowed on diffuse, glossy and principled materials (a one-sided area light)");

@@ -82,6 +82,16 @@ public final class JsonSceneReader {
         return file.toAbsolutePath().getParent();
     }
 
+    /** The file {@code fileNode} names (at {@code key}), relative to the scene file's folder. */
+    private Path fileAt(JsonNode fileNode, String key) throws SceneException {
+        String name = v.string(fileNode, key);
+        try {
+            return folder(file).resolve(name);
+        } catch (java.nio.file.InvalidPathException e) {
+            throw new SceneException(file, fileNode.line, "'" + key + "' is not a valid path: " + name);
+        }
+    }
+
     private SceneDescription scene(JsonNode root) throws SceneException {
         Map<String, JsonNode> top = v.object(root, "scene");
         v.allowOnly(top, "scene", TOP_KEYS);
@@ -115,24 +125,14 @@ public final class JsonSceneReader {
 
     private ShapeSpec shape(JsonNode node) throws SceneException {
         Map<String, JsonNode> s = v.object(node, "shapes[]");
-        String type = v.string(v.require(s, "type", node), "shapes[].type");
-        Set<String> keys = SHAPE_KEYS.get(type);
-        if (keys == null) {
-            throw new SceneException(file, s.get("type").line, "unknown shape type '" + type + "' (known: "
-                    + JsonValues.sorted(SHAPE_KEYS.keySet()) + ")");
-        }
-        v.allowOnly(s, "shapes[] of type " + type, keys);
+        String type = v.type(s, node, "shapes[]", SHAPE_KEYS.keySet(), "shape", "", "");
+        v.allowOnly(s, "shapes[] of type " + type, SHAPE_KEYS.get(type));
         Transform transform = s.containsKey("transform") ? TransformReader.read(v, s.get("transform")) : Transform.IDENTITY;
         switch (type) {
             case "mesh", "gltf": {
                 JsonNode fileNode = v.require(s, "file", node);
                 String name = v.string(fileNode, "shapes[].file");
-                Path mesh;
-                try {
-                    mesh = folder(file).resolve(name);
-                } catch (java.nio.file.InvalidPathException e) {
-                    throw new SceneException(file, fileNode.line, "'shapes[].file' is not a valid path: " + name);
-                }
+                Path mesh = fileAt(fileNode, "shapes[].file");
                 String lower = name.toLowerCase(Locale.ROOT);
                 if (type.equals("gltf") ? !lower.endsWith(".gltf") && !lower.endsWith(".glb") : !lower.endsWith(".obj") && !lower.endsWith(".ply")) {
                     throw new SceneException(file, fileNode.line, "'shapes[].file' must name " + (type.equals("gltf") ? "a .gltf or .glb" : "an .obj or .ply") + " file, got '" + name + "'");
@@ -224,21 +224,12 @@ public final class JsonSceneReader {
             return new EnvironmentSpec(v.color(node, "environment"), null, 1, 0);
         }
         Map<String, JsonNode> e = node.object();
-        String type = v.string(v.require(e, "type", node), "environment.type");
-        Set<String> keys = ENVIRONMENT_KEYS.get(type);
-        if (keys == null) {
-            throw new SceneException(file, e.get("type").line, "unknown environment type '" + type + "' (known: "
-                    + JsonValues.sorted(ENVIRONMENT_KEYS.keySet()) + "; or give a constant radiance as [r, g, b])");
-        }
-        v.allowOnly(e, "environment of type " + type, keys);
+        String type = v.type(e, node, "environment", ENVIRONMENT_KEYS.keySet(), "environment", "",
+                "; or give a constant radiance as [r, g, b]");
+        v.allowOnly(e, "environment of type " + type, ENVIRONMENT_KEYS.get(type));
         JsonNode fileNode = v.require(e, "file", node);
         String name = v.string(fileNode, "environment.file");
-        Path map;
-        try {
-            map = folder(file).resolve(name);
-        } catch (java.nio.file.InvalidPathException ex) {
-            throw new SceneException(file, fileNode.line, "'environment.file' is not a valid path: " + name);
-        }
+        Path map = fileAt(fileNode, "environment.file");
         if (!EnvironmentMaps.isSupported(name)) {
             throw new SceneException(file, fileNode.line, "'environment.file' must name an .hdr, .exr or .pfm image, got '" + name + "'");
         }
