@@ -3,6 +3,7 @@ package dev.strahl.io.json;
 import dev.strahl.io.json.SceneDescription.EnvironmentSpec;
 import dev.strahl.io.json.SceneDescription.MaterialSpec;
 import dev.strahl.io.json.SceneDescription.ShapeSpec;
+import dev.strahl.io.text.InputErrors;
 import dev.strahl.io.text.TextLines;
 import dev.strahl.render.HemisphereSampling;
 import dev.strahl.render.IntegratorKind;
@@ -33,6 +34,8 @@ import org.joml.Vector3d;
  * and missing mesh files are errors naming the file, the line and the key.
  */
 public final class JsonSceneReader {
+    /** This reader's errors, as io.text makes them. */
+    static final InputErrors<SceneException> ERRORS = InputErrors.of(SceneException::new, SceneException::new);
     /** The material types of the scene file and the keys each accepts. */
     static final Map<String, Set<String>> MATERIAL_KEYS = JsonMaterials.MATERIAL_KEYS;
     /** The shape types and the keys each accepts. */
@@ -73,7 +76,7 @@ public final class JsonSceneReader {
         } catch (CharacterCodingException e) {
             throw new SceneException(file, TextLines.lineOfInvalidUtf8(file, 1), "not a text scene file (invalid UTF-8)");
         } catch (IOException e) {
-            throw TextLines.cannotRead(file, e);
+            throw TextLines.cannotRead(ERRORS, file, e);
         }
         return new JsonSceneReader(file).scene(JsonNode.parse(file, text));
     }

@@ -1,5 +1,6 @@
 package dev.strahl.io.obj;
 
+import dev.strahl.io.text.InputErrors;
 import dev.strahl.io.text.HeapBudget;
 import dev.strahl.scene.SceneException;
 import dev.strahl.io.text.LineCursor;
@@ -36,6 +37,8 @@ import java.util.Set;
  * {@code file:line:}; no other exception escapes for any file content.
  */
 public final class ObjReader {
+    /** This reader's errors, as io.text makes them. */
+    static final InputErrors<SceneException> ERRORS = InputErrors.of(SceneException::new, SceneException::new);
 
     /**
      * Largest accepted |coordinate| of a position: products of four coordinates (squared lengths
@@ -44,8 +47,8 @@ public final class ObjReader {
     static final double MAX_COORDINATE = 1e18;
 
     private final Path obj;
-    private final TextLines lines;
-    private final LineCursor cur;
+    private final TextLines<SceneException> lines;
+    private final LineCursor<SceneException> cur;
     private final List<String> warnings = new ArrayList<>();
     private final Set<String> warnedKeywords = new HashSet<>();
 
@@ -70,17 +73,17 @@ public final class ObjReader {
 
     private final ObjMaterials materials;
 
-    private ObjReader(Path obj, TextLines lines) {
+    private ObjReader(Path obj, TextLines<SceneException> lines) {
         this.obj = obj;
         this.lines = lines;
-        this.cur = new LineCursor(obj);
+        this.cur = new LineCursor<>(obj, ERRORS);
         this.materials = new ObjMaterials(obj, warnings);
     }
 
     /** Reads {@code obj}; material libraries are resolved relative to its directory. */
     public static ObjModel read(Path obj) throws SceneException {
         // A file that is not UTF-8 is read again as Latin-1, its note first among the warnings.
-        return TextLines.read(obj, "OBJ", true, new ArrayList<>(), (lines, notes) -> {
+        return TextLines.read(obj, ERRORS, "OBJ", true, new ArrayList<>(), (lines, notes) -> {
             ObjReader reader = new ObjReader(obj, lines);
             reader.warnings.addAll(notes);
             return reader.parse();
