@@ -2,7 +2,7 @@ package dev.strahl.cli;
 
 import dev.strahl.codec.ImageLimits;
 import dev.strahl.io.ImageWriters;
-import dev.strahl.io.json.EnvironmentMaps;
+import dev.strahl.io.SceneLoader;
 import dev.strahl.io.json.SceneFile;
 import dev.strahl.render.Aov;
 import dev.strahl.render.CheckpointException;
@@ -168,7 +168,7 @@ final class RenderCommand implements Callable<Integer> {
         loadSeconds = (System.nanoTime() - loadStart) * 1e-9 - bvhSeconds;
         Scene s = loaded.scene().withCamera(camera.camera(loaded.scene().camera(), lens));
         if (environment.envmap != null) {
-            s = s.withEnvironmentMap(EnvironmentMaps.read(environment.envmap), 1, 0);
+            s = s.withEnvironmentMap(SceneLoader.readImage(environment.envmap), 1, 0);
         }
         settings = loaded.settings().applyTo(settings, SceneFileOptions.given(spec.commandLine().getParseResult()));
         outcome.keep(settings.output().aovs());
