@@ -1,6 +1,6 @@
 package dev.strahl.scene;
 
-import dev.strahl.io.image.Printable;
+import dev.strahl.codec.Printable;
 import java.nio.file.Path;
 
 /**

@@ -2,14 +2,14 @@ package dev.strahl.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.io.exr.ExrReader;
+import dev.strahl.codec.ChannelImage;
+import dev.strahl.codec.HdrReader;
+import dev.strahl.codec.ImageFormatException;
+import dev.strahl.codec.PfmReader;
+import dev.strahl.codec.TextureImages;
+import dev.strahl.codec.exr.ExrReader;
 import dev.strahl.io.gltf.GltfFuzzInputs;
 import dev.strahl.io.gltf.GltfFuzzSeeds;
-import dev.strahl.io.image.ChannelImage;
-import dev.strahl.io.image.HdrReader;
-import dev.strahl.io.image.ImageFormatException;
-import dev.strahl.io.image.PfmReader;
-import dev.strahl.io.image.TextureImages;
 import dev.strahl.io.obj.MtlReader;
 import dev.strahl.scene.SceneException;
 import dev.strahl.testing.Fuzzer;
@@ -23,8 +23,8 @@ import java.util.List;
 import java.util.stream.Stream;
 import net.jqwik.api.Arbitraries;
 import net.jqwik.api.Arbitrary;
-import net.jqwik.api.Tuple;
 import net.jqwik.api.Example;
+import net.jqwik.api.Tuple;
 import net.jqwik.api.lifecycle.AfterContainer;
 import net.jqwik.api.lifecycle.BeforeContainer;
 

@@ -1,7 +1,7 @@
 package dev.strahl.io;
 
+import dev.strahl.codec.PfmWriter;
 import dev.strahl.image.Image;
-import dev.strahl.io.image.PfmWriter;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.UncheckedIOException;

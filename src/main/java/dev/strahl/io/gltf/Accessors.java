@@ -1,6 +1,6 @@
 package dev.strahl.io.gltf;
 
-import dev.strahl.io.image.ImageLimits;
+import dev.strahl.codec.ImageLimits;
 import dev.strahl.scene.SceneException;
 import java.nio.ByteBuffer;
 import java.util.List;

@@ -1,6 +1,6 @@
 package dev.strahl.io.gltf;
 
-import dev.strahl.io.image.Printable;
+import dev.strahl.codec.Printable;
 import dev.strahl.scene.SceneException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;

@@ -2,11 +2,11 @@ package dev.strahl.io.gltf;
 
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonParser;
+import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.core.JsonToken;
 import com.fasterxml.jackson.core.StreamReadFeature;
 import com.fasterxml.jackson.core.exc.StreamConstraintsException;
-import com.fasterxml.jackson.core.JsonProcessingException;
-import dev.strahl.io.image.Printable;
+import dev.strahl.codec.Printable;
 import dev.strahl.io.text.JsonTypes;
 import dev.strahl.scene.SceneException;
 import java.io.IOException;

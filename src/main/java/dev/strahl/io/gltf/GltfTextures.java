@@ -1,7 +1,7 @@
 package dev.strahl.io.gltf;
 
-import dev.strahl.io.image.FileReads;
-import dev.strahl.io.image.Printable;
+import dev.strahl.codec.Printable;
+import dev.strahl.files.FileReads;
 import dev.strahl.scene.SceneException;
 import dev.strahl.scene.Texture;
 import java.io.IOException;
@@ -64,7 +64,7 @@ final class GltfTextures {
             if (s != tt) {
                 doc.noteOnce(sampler.path() + ": wrapS and wrapT differ; strahl wraps both axes alike, by wrapS");
             }
-            t = t.withWrap(wrap(sampler, s));
+            t = wrapped(t, sampler, s);
         }
         return transform == null ? t : transformed(t, transform);
     }
@@ -106,14 +106,14 @@ final class GltfTextures {
         return texCoord;
     }
 
-    private Texture.Wrap wrap(GltfJson sampler, int mode) throws SceneException {
+    private static Texture wrapped(Texture t, GltfJson sampler, int mode) throws SceneException {
         switch (mode) {
             case CLAMP_TO_EDGE:
-                return Texture.Wrap.CLAMP;
+                return t.clamped();
             case MIRRORED_REPEAT:
-                return Texture.Wrap.MIRRORED_REPEAT;
+                return t.mirrored();
             case REPEAT:
-                return Texture.Wrap.REPEAT;
+                return t;
             default:
                 throw sampler.error("unknown wrap mode " + mode + " (known: 33071 CLAMP_TO_EDGE, 33648 MIRRORED_REPEAT, 10497 REPEAT)");
         }

@@ -1,11 +1,11 @@
 package dev.strahl.io.json;
 
 import dev.strahl.image.Image;
-import dev.strahl.io.exr.ExrReader;
-import dev.strahl.io.image.HdrReader;
-import dev.strahl.io.image.ImageFormatException;
-import dev.strahl.io.image.ImageLimits;
-import dev.strahl.io.image.PfmReader;
+import dev.strahl.codec.exr.ExrReader;
+import dev.strahl.codec.HdrReader;
+import dev.strahl.codec.ImageFormatException;
+import dev.strahl.codec.ImageLimits;
+import dev.strahl.codec.PfmReader;
 import dev.strahl.scene.SceneException;
 import java.io.IOException;
 import java.nio.file.Files;

@@ -7,7 +7,7 @@ import static org.assertj.core.api.Assertions.within;
 import dev.strahl.image.Rgb;
 import dev.strahl.io.SceneLoader;
 import dev.strahl.material.Principled;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.scene.Material;
 import dev.strahl.scene.Scene;
 import dev.strahl.texture.ImageTexture;
@@ -110,7 +110,7 @@ class GltfMaterialsTest {
         SceneLoader.load(glb);
         assertThat(folders.get()).as("temporary folders").isEqualTo(before);
         java.util.Set<Path> recorded = new java.util.TreeSet<>();
-        dev.strahl.io.image.FileReads.recording(recorded, () -> SceneLoader.load(glb));
+        dev.strahl.files.FileReads.recording(recorded, () -> SceneLoader.load(glb));
         Path image = recorded.stream().filter(f -> f.getFileName().toString().equals("image0")).findFirst().orElseThrow();
         assertThat(image).as("kept for the cluster to ship").isRegularFile();
         Files.delete(image);
