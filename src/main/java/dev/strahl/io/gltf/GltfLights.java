@@ -76,6 +76,9 @@ final class GltfLights {
                         throw (spot != null ? spot : def).error("cone angles must satisfy 0 <= innerConeAngle < outerConeAngle <= pi/2, got "
                                 + inner + " and " + outer);
                     }
+                    if (Math.cos(outer) == 1) {          // narrower than a double's cosine tells apart from a ray
+                        throw spot.error("outerConeAngle " + outer + " is too narrow (its cosine is 1: the narrowest cone is about 1.5e-8)");
+                    }
                     break;
                 }
                 default:
