@@ -4,16 +4,17 @@ import dev.strahl.accel.Simd;
 import picocli.CommandLine.Option;
 
 /**
- * {@code --simd on|off} of render, view and bench: off takes the scalar ray kernel instead of the
+ * {@code --simd on|off}, in the "Execution" section of render, view, worker (through
+ * {@link ExecutionOptions}) and bench: off takes the scalar ray kernel instead of the
  * Vector API one, to compare the two (same images). It sets {@link Simd#PROPERTY} for the BVHs the
  * command builds, and puts it back when the command ends ({@link #apply}), so that commands run
  * one after another in one JVM (tests) do not inherit it. {@link SimdLauncher} does not start a
  * second JVM for {@code --simd off}.
  */
-final class SimdOption {
+class SimdOption {
     enum Mode { on, off }
 
-    @Option(names = "--simd", paramLabel = "on|off", defaultValue = "on",
+    @Option(names = "--simd", order = 9, paramLabel = "on|off", defaultValue = "on",
             description = "Ray kernel: on = SIMD (Vector API) where the JVM has it, off = the scalar twin (same images, to compare) (default: ${DEFAULT-VALUE}).")
     Mode mode = Mode.on;
 
