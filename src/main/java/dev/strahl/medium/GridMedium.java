@@ -91,7 +91,9 @@ public final class GridMedium implements Medium {
     }
 
     @Override
-    public double sampleScattering(Vector3dc o, Vector3dc d, double tMax, double u1, double u2, TrackingRandom random, MutableRgb weight) {
+    public double sampleScattering(Vector3dc o, Vector3dc d, double tMax, int channel, double u1, double u2, TrackingRandom random,
+                                   MutableRgb weight, MutableRgb ratio) {
+        ratio.set(1, 1, 1);                  // σt is grey: every channel samples alike
         random.seed(u1, u2);
         if (albedo.isBlack()) {
             weight.set(1, 1, 1);
@@ -167,6 +169,23 @@ public final class GridMedium implements Medium {
             return near ? Double.POSITIVE_INFINITY : Double.NEGATIVE_INFINITY;
         }
         return near ? lo : hi;
+    }
+
+    /** Feeds the grid's values into a fingerprint (a checkpoint's: a changed .vol file must not be resumed). */
+    public void digest(java.security.MessageDigest md) {
+        java.nio.ByteBuffer buf = java.nio.ByteBuffer.allocate(8 * 1024);
+        for (int k = 0; k < density.sizeZ(); k++) {
+            for (int j = 0; j < density.sizeY(); j++) {
+                for (int i = 0; i < density.sizeX(); i++) {
+                    if (buf.remaining() < 4) {
+                        md.update(buf.flip());
+                        buf.clear();
+                    }
+                    buf.putFloat((float) density.voxel(i, j, k));
+                }
+            }
+        }
+        md.update(buf.flip());
     }
 
     @Override

@@ -10,11 +10,13 @@ import org.joml.Vector3dc;
  *
  * <p><b>Chromatic extinction.</b> Where σt differs between channels, a distance sampled in
  * proportion to one channel's e^(−σt·t) would weigh the others by ratios of exponentials that grow
- * without bound (colour noise). So each segment picks a channel uniformly and samples its
- * exponential, and the weight divides by the density of the three strategies together, the mean
- * of the channels' densities: one-sample MIS with the balance heuristic over the channels (the
- * spectral MIS of Mitsuba's {@code volpathmis} and pbrt-v4, per segment). Every weight is then at
- * most 3·albedo. For a grey σt this is plain free-flight sampling, weight = albedo.
+ * without bound along a path (colour noise). So {@link #sampleScattering} samples the channel it is
+ * told (the path's hero channel, chosen once per path) and reports the ratios of the channels'
+ * densities to it; the path tracer divides by their mean over the whole path, which is one-sample
+ * MIS with the balance heuristic over the three channels' strategies (the spectral MIS of Mitsuba's
+ * {@code volpathmis} and pbrt-v4's {@code VolPathIntegrator}). Each channel's estimate is then at
+ * most 3 × what sampling that channel alone gives. For a grey σt this is plain free-flight
+ * sampling: weight = albedo, ratios 1.
  *
  * <p><b>Absorption only</b> (albedo 0 in every channel, tinted glass): nothing scatters, so no
  * distance is sampled; the light crosses every segment with weight T = e^(−σt·tMax), which has no
@@ -36,29 +38,35 @@ public record HomogeneousMedium(Rgb sigmaT, Rgb albedo, double g) implements Med
     }
 
     @Override
-    public double sampleScattering(Vector3dc o, Vector3dc d, double tMax, double u1, double u2, TrackingRandom random, MutableRgb weight) {
+    public double sampleScattering(Vector3dc o, Vector3dc d, double tMax, int channel, double u1, double u2, TrackingRandom random,
+                                   MutableRgb weight, MutableRgb ratio) {
         double sr = sigmaT.r(), sg = sigmaT.g(), sb = sigmaT.b();
-        if (!albedo.isBlack()) {
-            double chosen = u1 < 1.0 / 3 ? sr : u1 < 2.0 / 3 ? sg : sb;
-            double t = chosen > 0 ? -Math.log1p(-u2) / chosen : Double.POSITIVE_INFINITY;
-            if (t < tMax) {
-                double tr = Math.exp(-sr * t), tg = Math.exp(-sg * t), tb = Math.exp(-sb * t);
-                double pdf = (sr * tr + sg * tg + sb * tb) / 3;
-                if (!(pdf > 0)) {
-                    weight.setZero();
-                } else {
-                    weight.set(albedo.r() * sr * tr / pdf, albedo.g() * sg * tg / pdf, albedo.b() * sb * tb / pdf);
-                }
+        ratio.set(1, 1, 1);
+        if (albedo.isBlack()) {              // nothing scatters: cross with the transmittance, no sampling
+            weight.set(Medium.beerLambert(sr, tMax), Medium.beerLambert(sg, tMax), Medium.beerLambert(sb, tMax));
+            return Double.POSITIVE_INFINITY;
+        }
+        double hero = channel == 0 ? sr : channel == 1 ? sg : sb;
+        double t = hero > 0 ? -Math.log1p(-u2) / hero : Double.POSITIVE_INFINITY;
+        if (t < tMax) {
+            double tr = Math.exp(-sr * t), tg = Math.exp(-sg * t), tb = Math.exp(-sb * t);
+            double pdf = hero * (channel == 0 ? tr : channel == 1 ? tg : tb);
+            if (!(pdf > 0)) {
+                weight.setZero();
                 return t;
             }
+            ratio.set(sr * tr / pdf, sg * tg / pdf, sb * tb / pdf);
+            weight.set(albedo.r() * ratio.r, albedo.g() * ratio.g, albedo.b() * ratio.b);
+            return t;
         }
         double tr = Medium.beerLambert(sr, tMax), tg = Medium.beerLambert(sg, tMax), tb = Medium.beerLambert(sb, tMax);
-        double pass = albedo.isBlack() ? 1 : (tr + tg + tb) / 3;
+        double pass = channel == 0 ? tr : channel == 1 ? tg : tb;
         if (!(pass > 0)) {
             weight.setZero();
-        } else {
-            weight.set(tr / pass, tg / pass, tb / pass);
+            return Double.POSITIVE_INFINITY;
         }
+        ratio.set(tr / pass, tg / pass, tb / pass);
+        weight.set(ratio);
         return Double.POSITIVE_INFINITY;
     }
 

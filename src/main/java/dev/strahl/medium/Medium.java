@@ -30,10 +30,16 @@ public sealed interface Medium permits HomogeneousMedium, GridMedium {
      * (0, tMax), or {@link Double#POSITIVE_INFINITY} if the light crosses the whole segment; either
      * way sets {@code weight} to the factor the path throughput takes: T(t)·σs(t)/p(t) for a
      * scattering event, T(tMax)/P(reaching tMax) for a crossing (T the transmittance, p and P the
-     * sampling densities). Uses the two numbers (u1, u2) of the caller's sampler, and where the
-     * medium needs more (delta tracking), {@code random} seeded from them.
+     * densities with which the {@code channel} (0, 1, 2: r, g, b) of a chromatic extinction
+     * samples). {@code ratio} gets, per channel k, the density with which channel k would have
+     * sampled the same outcome over the one of {@code channel}: a path tracer that chooses the
+     * channel once per path (the hero channel) multiplies these up and divides its estimates by
+     * their mean, which is MIS over the channels (1 in every channel where σt is grey). Uses the
+     * caller's pair (u1, u2) and, where more numbers are needed (delta tracking), {@code random}
+     * seeded from them.
      */
-    double sampleScattering(Vector3dc o, Vector3dc d, double tMax, double u1, double u2, TrackingRandom random, MutableRgb weight);
+    double sampleScattering(Vector3dc o, Vector3dc d, double tMax, int channel, double u1, double u2, TrackingRandom random, MutableRgb weight,
+                            MutableRgb ratio);
 
     /**
      * Multiplies {@code tr} by the transmittance of the segment (an unbiased estimate of it where

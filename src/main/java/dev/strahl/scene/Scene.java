@@ -2,15 +2,12 @@ package dev.strahl.scene;
 
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.GeometryBuilder;
-import dev.strahl.geometry.MeshTopology;
 import dev.strahl.geometry.Sphere;
 import dev.strahl.image.Image;
 import dev.strahl.image.Rgb;
 import dev.strahl.light.Emission;
 import dev.strahl.light.Environment;
 import dev.strahl.light.PunctualLight;
-import dev.strahl.material.Bsdf;
-import dev.strahl.world.SurfaceMaps;
 import dev.strahl.world.World;
 import java.util.ArrayList;
 import java.util.IdentityHashMap;
@@ -70,7 +67,7 @@ public final class Scene {
     }
 
     /**
-     * The materials, each once, in the order they were first used.
+     * The materials in the order they were first used, each once (once per medium boundary, {@link Builder#mediumBoundary}).
      *
      * @return an unmodifiable list
      */
@@ -85,16 +82,7 @@ public final class Scene {
      * @return 0 without image textures
      */
     public long textureBytes() {
-        java.util.Set<dev.strahl.texture.Bitmap> seen = java.util.Collections.newSetFromMap(new IdentityHashMap<>());
-        long bytes = 0;
-        for (Material m : materials) {
-            for (dev.strahl.texture.Bitmap b : m.images()) {
-                if (seen.add(b)) {
-                    bytes += b.byteSize();
-                }
-            }
-        }
-        return bytes;
+        return SceneParts.textureBytes(materials);
     }
 
     /**
@@ -114,13 +102,7 @@ public final class Scene {
      * @return an unmodifiable list
      */
     public List<String> notes() {
-        if (!studioSky) {
-            return notes;
-        }
-        List<String> all = new ArrayList<>(notes);
-        all.add(framed ? "the scene has no light and no camera: lighting it with " + StudioSky.DESCRIPTION + " and framing it from "
-                + Camera.FRAMING_DESCRIPTION : "the scene has no light: lighting it with " + StudioSky.DESCRIPTION);
-        return List.copyOf(all);
+        return studioSky ? SceneParts.withStudioNote(notes, framed) : notes;
     }
 
     /**
@@ -144,7 +126,7 @@ public final class Scene {
      * @return a scene sharing everything else with this one
      */
     public Scene withEnvironmentMap(Image map, double scale, double rotateDegrees) {
-        Environment env = Builder.mapOf(map, scale, rotateDegrees);
+        Environment env = SceneParts.mapOf(map, scale, rotateDegrees);
         return new Scene(world.withEnvironment(env), materials, camera, notes, false, framed);
     }
 
@@ -155,6 +137,7 @@ public final class Scene {
         private final Map<Material, Integer> materialIndex = new IdentityHashMap<>();
         private final List<String> notes = new ArrayList<>();
         private final List<PunctualLight> punctual = new ArrayList<>();
+        private final SceneMedia media = new SceneMedia();
         private Camera camera;
         private Environment environment;
 
@@ -162,10 +145,12 @@ public final class Scene {
 
         private int indexOf(Material m) {
             Objects.requireNonNull(m, "material");
-            return materialIndex.computeIfAbsent(m, k -> {
-                materials.add(k);
-                return materials.size() - 1;
-            });
+            return media.bounding() ? media.slot(m, () -> add(m)) : materialIndex.computeIfAbsent(m, this::add);
+        }
+
+        private int add(Material m) {
+            materials.add(m);
+            return materials.size() - 1;
         }
 
         /**
@@ -202,30 +187,7 @@ public final class Scene {
          * @return this builder
          */
         public Builder addMesh(TriangleMesh mesh, int[] materialOfTriangle, List<Material> palette) {
-            if (materialOfTriangle.length != mesh.triangleCount()) {
-                throw new IllegalArgumentException("need one material per triangle: " + materialOfTriangle.length + " for " + mesh.triangleCount());
-            }
-            int[] global = new int[palette.size()];
-            for (int i = 0; i < palette.size(); i++) {
-                global[i] = indexOf(palette.get(i));
-            }
-            boolean[] closed = MeshTopology.closedOutwardGroups(mesh.positionsUnsafe(), mesh.indicesUnsafe(), materialOfTriangle, palette.size());
-            int[] materialsOut = new int[mesh.triangleCount()];
-            byte[] flags = new byte[mesh.triangleCount()];
-            for (int t = 0; t < materialsOut.length; t++) {
-                int local = materialOfTriangle[t];
-                if (local < 0 || local >= palette.size()) {
-                    throw new IllegalArgumentException("triangle " + t + " refers to material " + local + " of " + palette.size());
-                }
-                materialsOut[t] = global[local];
-                flags[t] = closed[local] ? Geometry.CLOSED : 0;
-            }
-            int before = geometry.degenerateCount();
-            geometry.addMesh(mesh.positionsUnsafe(), mesh.indicesUnsafe(), mesh.normalsUnsafe(), mesh.uvsUnsafe(), materialsOut, flags);
-            int skipped = geometry.degenerateCount() - before;
-            if (skipped > 0) {
-                notes.add("skipped " + skipped + " degenerate triangle" + (skipped == 1 ? "" : "s") + " (zero area)");
-            }
+            SceneParts.addMesh(geometry, mesh, materialOfTriangle, palette.stream().mapToInt(this::indexOf).toArray(), notes);
             return this;
         }
 
@@ -299,13 +261,8 @@ public final class Scene {
          * @throws IllegalArgumentException if the map is too small or the scale or rotation is not finite
          */
         public Builder environmentMap(Image map, double scale, double rotateDegrees) {
-            this.environment = mapOf(map, scale, rotateDegrees);
+            this.environment = SceneParts.mapOf(map, scale, rotateDegrees);
             return this;
-        }
-
-        static Environment mapOf(Image map, double scale, double rotateDegrees) {
-            Objects.requireNonNull(map, "map");
-            return Environment.map(map.width(), map.height(), map.rgb(), scale, rotateDegrees, "map");
         }
 
         /**
@@ -352,6 +309,67 @@ public final class Scene {
         }
 
         /**
+         * Defines a homogeneous medium (Mitsuba 3's {@code homogeneous} with an {@code hg} phase function).
+         *
+         * @param name   the medium's name, new
+         * @param sigmaT extinction per scene unit in each channel, ≥ 0
+         * @param albedo single-scattering albedo σs/σt in each channel, in [0, 1] (0: it only absorbs)
+         * @param g      Henyey–Greenstein asymmetry in (−1, 1): positive scatters forwards
+         * @return this builder
+         * @throws IllegalArgumentException for a value out of range or a name defined before
+         */
+        public Builder homogeneousMedium(String name, Rgb sigmaT, Rgb albedo, double g) {
+            media.homogeneous(name, sigmaT, albedo, g);
+            return this;
+        }
+
+        /**
+         * Defines a medium of extinction {@code scale} × the density grid of a Mitsuba {@code .vol}
+         * file (version 3, float32, one channel) filling a box, as Mitsuba 3's {@code gridvolume}:
+         * voxel (i, j, k) at ((i + ½)/X, (j + ½)/Y, (k + ½)/Z) of the box, trilinear, clamped at the border.
+         *
+         * @param name   the medium's name, new
+         * @param file   the {@code .vol} file
+         * @param min    the box's lower corner, or null (with {@code max}) for the box in the file's header
+         * @param max    the box's upper corner
+         * @param scale  extinction per unit of density and scene unit, ≥ 0
+         * @param albedo single-scattering albedo in each channel, in [0, 1]
+         * @param g      Henyey–Greenstein asymmetry in (−1, 1)
+         * @return this builder
+         * @throws SceneException if the file holds no valid grid (one line naming it)
+         */
+        public Builder gridMedium(String name, java.nio.file.Path file, Vector3dc min, Vector3dc max, double scale, Rgb albedo, double g)
+                throws SceneException {
+            media.grid(name, file, min, max, scale, albedo, g);
+            return this;
+        }
+
+        /**
+         * Makes the shapes added from now on boundaries between media: a ray that crosses into one
+         * (against its geometric normal) travels on in {@code interior}, one that leaves it in
+         * {@code exterior}. {@code (null, null)} ends it: later shapes leave a ray in its medium.
+         *
+         * @param interior a medium defined before, or null for vacuum
+         * @param exterior a medium defined before, or null for vacuum
+         * @return this builder
+         */
+        public Builder mediumBoundary(String interior, String exterior) {
+            media.boundary(interior, exterior);
+            return this;
+        }
+
+        /**
+         * The medium the camera is in (default: vacuum).
+         *
+         * @param name a medium defined before, or null for vacuum
+         * @return this builder
+         */
+        public Builder cameraMedium(String name) {
+            media.camera(name);
+            return this;
+        }
+
+        /**
          * Adds a remark for the user (e.g. from a loader); start a warning with {@code "warning: "}.
          *
          * @param note one line
@@ -369,31 +387,14 @@ public final class Scene {
          */
         public Scene build() {
             Geometry g = geometry.build();
-            Bsdf[] bsdfs = new Bsdf[materials.size()];
-            Emission[] emission = new Emission[materials.size()];
-            SurfaceMaps[] maps = new SurfaceMaps[materials.size()];
-            for (int i = 0; i < bsdfs.length; i++) {
-                Surface surface = materials.get(i).surface();
-                bsdfs[i] = surface.bsdf();
-                emission[i] = surface.emissionTable();
-                maps[i] = surface.maps();
-            }
-            boolean studio = environment == null && punctual.isEmpty() && !anyEmits(g, emission);
+            Emission[] emission = SceneParts.emission(materials);
+            boolean studio = environment == null && punctual.isEmpty() && !SceneParts.anyEmits(g, emission);
             Environment env = environment != null ? environment : studio ? StudioSky.environment() : Environment.BLACK;
-            World world = World.build(g, bsdfs, emission, maps, env, punctual);
-            // A bare model (no light) is an object: shown from above at three quarters. A scene with
-            // its own lights is often a room made to be seen from its open front (the Cornell Box): +Z.
+            World world = World.build(g, SceneParts.bsdfs(materials), emission, SceneParts.maps(materials), env, punctual)
+                    .withMedia(media.build(SceneParts.bsdfs(materials)));
+            // A bare model (no light) is shown from above at three quarters, a scene with lights (a room) from its open front, +Z.
             Camera cam = camera != null ? camera : studio ? Camera.framing(world.bounds(), 40) : Camera.frontFraming(world.bounds(), 40);
             return new Scene(world, List.copyOf(materials), cam, List.copyOf(notes), studio, camera == null);
-        }
-
-        private static boolean anyEmits(Geometry g, Emission[] emission) {
-            for (int prim = 0; prim < g.primitiveCount(); prim++) {
-                if (!emission[g.material(prim)].isBlack()) {
-                    return true;
-                }
-            }
-            return false;
         }
     }
 }

@@ -87,7 +87,7 @@ class GridMediumTest {
         MutableRgb w = new MutableRgb();
         int n = 200_000, crossed = 0, inside = 0;
         for (int i = 0; i < n; i++) {
-            double t = m.sampleScattering(o, d, tMax, u.nextDouble(), u.nextDouble(), random, w);
+            double t = m.sampleScattering(o, d, tMax, 1, u.nextDouble(), u.nextDouble(), random, w, new MutableRgb());
             if (t == Double.POSITIVE_INFINITY) {
                 crossed++;
                 assertThat(w.r).isEqualTo(1);
@@ -109,7 +109,7 @@ class GridMediumTest {
     void aRayThatMissesTheBoxCrossesUntouched() {
         GridMedium m = medium(ALBEDO);
         MutableRgb w = new MutableRgb();
-        assertThat(m.sampleScattering(new Vector3d(-3, 0.25, 2.5), new Vector3d(0, 1, 0), 100, 0.5, 0.5, new TrackingRandom(), w)).isInfinite();
+        assertThat(m.sampleScattering(new Vector3d(-3, 0.25, 2.5), new Vector3d(0, 1, 0), 100, 0, 0.5, 0.5, new TrackingRandom(), w, new MutableRgb())).isInfinite();
         assertThat(w.r).isEqualTo(1);
         MutableRgb tr = new MutableRgb(1, 1, 1);
         m.transmittance(new Vector3d(-3, 0.25, 2.5), new Vector3d(-1, 0, 0), 100, new TrackingRandom(), tr);
@@ -126,7 +126,7 @@ class GridMediumTest {
         int n = 100_000;
         double sum = 0, sumSq = 0;
         for (int i = 0; i < n; i++) {
-            assertThat(m.sampleScattering(o, d, 10, u.nextDouble(), u.nextDouble(), random, w)).isInfinite();
+            assertThat(m.sampleScattering(o, d, 10, 2, u.nextDouble(), u.nextDouble(), random, w, new MutableRgb())).isInfinite();
             sum += w.r;
             sumSq += w.r * w.r;
         }

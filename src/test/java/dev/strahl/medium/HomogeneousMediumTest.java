@@ -12,10 +12,12 @@ import org.junit.jupiter.api.Test;
 
 /**
  * A homogeneous medium against Beer–Lambert: the transmittance of a slab is e^(−σt·d) per
- * channel, and free-flight sampling with the channels' MIS is unbiased for both things a path
- * needs from it — the light that crosses the slab (E[weight; crossed] = e^(−σt·d)) and the light
- * scattered in any stretch [a, b] of it (E[weight; scattered in [a, b]] = ∫ σs e^(−σt·t) dt) —
- * with weights bounded by 3 × albedo, also for a strongly chromatic σt.
+ * channel, and free-flight sampling of a uniformly chosen hero channel, its weight divided by the
+ * mean of the channels' density ratios (MIS over the channels, as the path tracer does), is
+ * unbiased for both things a path needs from it — the light that crosses the slab
+ * (E[weight; crossed] = e^(−σt·d)) and the light scattered in any stretch [a, b] of it
+ * (E[weight; scattered in [a, b]] = ∫ σs e^(−σt·t) dt) — with weights bounded by 3 × albedo, also
+ * for a strongly chromatic σt.
  */
 class HomogeneousMediumTest {
     private static final Vector3d O = new Vector3d(0.2, -1, 3);
@@ -47,10 +49,11 @@ class HomogeneousMediumTest {
         int n = 400_000;
         SplittableRandom random = new SplittableRandom(11);
         double[] crossed = new double[3], crossedSq = new double[3], scattered = new double[3], scatteredSq = new double[3];
-        MutableRgb w = new MutableRgb();
+        MutableRgb w = new MutableRgb(), ratio = new MutableRgb();
         double maxWeight = 0;
         for (int i = 0; i < n; i++) {
-            double t = m.sampleScattering(O, D, slab, random.nextDouble(), random.nextDouble(), new TrackingRandom(), w);
+            double t = m.sampleScattering(O, D, slab, random.nextInt(3), random.nextDouble(), random.nextDouble(), new TrackingRandom(), w, ratio);
+            w.mul(3 / (ratio.r + ratio.g + ratio.b));
             double[] c = {w.r, w.g, w.b};
             maxWeight = Math.max(maxWeight, w.max());
             for (int k = 0; k < 3; k++) {
@@ -73,16 +76,23 @@ class HomogeneousMediumTest {
                     .isCloseTo(expectScatter, within(4 * standardError(scattered[k], scatteredSq[k], n)));
         }
         assertThat(maxWeight).as("MIS over the channels bounds the weights").isLessThanOrEqualTo(3 * 0.9 + 1e-12);
+        // without the MIS, one hero channel's weights for the others grow without bound: e^((2.4 - 0.25) t) for blue under red
+        m.sampleScattering(O, D, 1e9, 0, 0.5, 0.999999, new TrackingRandom(), w, ratio);
+        assertThat(w.b).isGreaterThan(100);
+        w.mul(3 / (ratio.r + ratio.g + ratio.b));
+        assertThat(w.b).isLessThanOrEqualTo(3 * 0.8 + 1e-12);
     }
 
     @Test
     void aGreyMediumScattersWithWeightAlbedoAndCrossesWithWeightOne() {
         HomogeneousMedium m = new HomogeneousMedium(Rgb.gray(1.5), ALBEDO, 0.5);
-        MutableRgb w = new MutableRgb();
+        MutableRgb w = new MutableRgb(), ratio = new MutableRgb();
         SplittableRandom random = new SplittableRandom(2);
         int crossings = 0, n = 100_000;
         for (int i = 0; i < n; i++) {
-            double t = m.sampleScattering(O, D, 0.8, random.nextDouble(), random.nextDouble(), new TrackingRandom(), w);
+            double t = m.sampleScattering(O, D, 0.8, random.nextInt(3), random.nextDouble(), random.nextDouble(), new TrackingRandom(), w, ratio);
+            assertThat(ratio.r).isEqualTo(1);
+            assertThat(ratio.b).isEqualTo(1);
             if (t == Double.POSITIVE_INFINITY) {
                 crossings++;
                 assertThat(w.r).isCloseTo(1, within(1e-12));
@@ -99,8 +109,9 @@ class HomogeneousMediumTest {
     @Test
     void anAbsorbingMediumIsCrossedWithItsTransmittanceAndNoNoise() {
         HomogeneousMedium m = new HomogeneousMedium(SIGMA, Rgb.BLACK, 0);
-        MutableRgb w = new MutableRgb();
-        assertThat(m.sampleScattering(O, D, 0.6, 0.1, 0.999, new TrackingRandom(), w)).isInfinite();
+        MutableRgb w = new MutableRgb(), ratio = new MutableRgb();
+        assertThat(m.sampleScattering(O, D, 0.6, 2, 0.1, 0.999, new TrackingRandom(), w, ratio)).isInfinite();
+        assertThat(ratio.g).isEqualTo(1);
         assertThat(w.r).isCloseTo(Math.exp(-2.4 * 0.6), within(1e-15));
         assertThat(w.b).isCloseTo(Math.exp(-0.25 * 0.6), within(1e-15));
     }

@@ -46,16 +46,16 @@ public final class JsonSceneReader {
             "glossy", Set.of("type", "diffuse", "specular", "exponent", "emission"),
             "conductor", Set.of("type", "preset", "eta", "k", "alpha"),
             "principled", Set.of("type", "baseColor", "metallic", "roughness", "specular", "specularColor", "transmission", "ior", "emission",
-                    "emissionStrength"));
+                    "emissionStrength"), "null", Set.of("type"));
     /** The keys of a texture that stands in for a colour or a number. */
     static final Set<String> TEXTURE_KEYS = Set.of("texture", "uvScale", "linear");
     /** The shape types and the keys each accepts. */
     static final Map<String, Set<String>> SHAPE_KEYS = Map.of(
-            "sphere", Set.of("type", "center", "radius", "material", "transform"),
-            "mesh", Set.of("type", "file", "material", "transform"), "gltf", Set.of("type", "file", "transform"),
-            "triangles", Set.of("type", "positions", "indices", "normals", "uvs", "material", "transform"));
-    static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment", "lights");
-    static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov", "aperture", "focusDistance");
+            "sphere", Set.of("type", "center", "radius", "material", "transform", "interior", "exterior"),
+            "mesh", Set.of("type", "file", "material", "transform", "interior", "exterior"), "gltf", Set.of("type", "file", "transform", "interior", "exterior"),
+            "triangles", Set.of("type", "positions", "indices", "normals", "uvs", "material", "transform", "interior", "exterior"));
+    static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment", "lights", "media");
+    static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov", "aperture", "focusDistance", "medium");
     /** The environment types (the object form; an array is a constant radiance) and their keys. */
     static final Map<String, Set<String>> ENVIRONMENT_KEYS = Map.of("envmap", Set.of("type", "file", "scale", "rotate"));
     static final Set<String> FILM_KEYS = Set.of("width", "height", "aovs");
@@ -110,9 +110,11 @@ public final class JsonSceneReader {
         if (list.isEmpty()) {
             throw new SceneException(file, shapesNode.line, "'shapes' is empty: the scene has no geometry");
         }
+        SceneFileMedia.Reader media = new SceneFileMedia.Reader(top.get("media"), v, folder(file));
         List<ShapeSpec> shapes = new ArrayList<>();
         for (JsonNode shape : list) {
             shapes.add(shape(shape));
+            media.shape(shape);
         }
         for (var use : materialUses) {
             if (!materials.containsKey(use.getKey())) {
@@ -122,7 +124,8 @@ public final class JsonSceneReader {
         Camera camera = top.containsKey("camera") ? camera(top.get("camera")) : null;
         EnvironmentSpec environment = top.containsKey("environment") ? environment(top.get("environment")) : null;
         SceneSettings settings = settings(top.get("film"), top.get("integrator"));
-        return new SceneDescription(camera, settings, materials, shapes, environment, SceneLights.parse(top.get("lights"), v));
+        return new SceneDescription(camera, settings, materials, shapes, environment, SceneLights.parse(top.get("lights"), v),
+                media.result(top.get("camera")));
     }
 
     // ---- materials -----------------------------------------------------------------------------
@@ -142,6 +145,8 @@ public final class JsonSceneReader {
         }
         v.allowOnly(m, key + " of type " + type, keys);
         switch (type) {
+            case "null":
+                return new SceneDescription.Null();
             case "mirror":
                 return new SceneDescription.Mirror(m.containsKey("reflectance") ? v.unitColor(m.get("reflectance"), key + ".reflectance") : Rgb.WHITE);
             case "dielectric":
@@ -174,7 +179,7 @@ public final class JsonSceneReader {
                         numberParam(m, "metallic", key, 1, 0, 1), numberParam(m, "roughness", key, 1, 0, 1),
                         numberParam(m, "specular", key, 1, 0, 1), colorParam(m, "specularColor", key, Rgb.WHITE, false),
                         numberParam(m, "transmission", key, 0, 0, 1), ior(m, key), emission(m, key),
-                        m.containsKey("emissionStrength") ? nonNegative(m.get("emissionStrength"), key + ".emissionStrength") : 1);
+                        m.containsKey("emissionStrength") ? v.nonNegative(m.get("emissionStrength"), key + ".emissionStrength") : 1);
             case "glossy": {
                 Rgb kd = m.containsKey("diffuse") ? v.unitColor(m.get("diffuse"), key + ".diffuse") : Rgb.BLACK;
                 Rgb ks = v.unitColor(v.require(m, "specular", node), key + ".specular");
@@ -198,14 +203,6 @@ public final class JsonSceneReader {
             throw new SceneException(file, m.get("ior").line, "'" + key + ".ior' must be positive, got " + JsonValues.format(ior));
         }
         return ior;
-    }
-
-    private double nonNegative(JsonNode node, String key) throws SceneException {
-        double x = v.number(node, key);
-        if (!(x >= 0)) {
-            throw new SceneException(file, node.line, "'" + key + "' must be >= 0, got " + JsonValues.format(x));
-        }
-        return x;
     }
 
     /** A colour (in [0, 1] if {@code unit}) or a texture object; {@code fallback} without the key. */
