@@ -2,7 +2,7 @@
 """Mitsuba 3 references of strahl's participating-media golden tests (MediaGoldenTest), 128 x 128.
 
     python3 docs/anchors/media_refs.py scenes  [OUT]            strahl's scene files and smoke.vol only
-    python3 docs/anchors/media_refs.py refs    [OUT] [SPP]      + Mitsuba's references NAME_128.pfm
+    python3 docs/anchors/media_refs.py refs    [OUT] [SPP] [NAME...]  + Mitsuba's references NAME_128.pfm
     python3 docs/anchors/media_refs.py noise   DIR [SPP] [RUNS] Mitsuba at SPP (default 1024), RUNS seeds:
                                                                  NAME_SPP_sK.pfm, to measure its own error
     python3 docs/anchors/media_refs.py grid    [OUT]            Mitsuba's gridvolume looked up at points:
@@ -14,8 +14,8 @@ strahl's scene files and Mitsuba's scenes are written from the same numbers belo
 cannot drift. Every scene goes through strahl's scene-file interface for media (docs/media.md):
 
   fog.json        a Cornell-like room (2 x 2 x 2, open towards the camera, light (17, 12, 4) in the
-                  ceiling, a tall and a short box) whose inside is a `null` box of homogeneous fog
-                  (sigmaT 0.6, albedo 0.85, g 0.5); the camera looks in from outside the fog
+                  ceiling, a tall and a short box) whose inside, light included, is a `null` box of
+                  homogeneous fog (sigmaT 0.6, albedo 0.85, g 0.5); the camera looks in from outside
   tint.json       a glass sphere (ior 1.5) filled with an absorbing medium (sigmaT (1, 0.375, 0.104)
                   x scale 2.4, albedo 0) on a grey floor, under a sky and an area light
   subsurface.json the same sphere filled with a scattering medium (sigmaT (8, 10, 14), albedo
@@ -89,8 +89,9 @@ def fog_scene():
         mesh(quad([-0.25, 1.99, 0.25], [-0.25, 1.99, -0.25], [0.25, 1.99, -0.25], [0.25, 1.99, 0.25]), "light"),
         mesh(turned_box([-0.35, 0, -0.3], [0.6, 1.2, 0.6], 18), "white"),
         mesh(turned_box([0.35, 0, 0.35], [0.6, 0.6, 0.6], -17), "white"),
-        # the fog: inside the room, below the light, its floor under the room's floor
-        mesh(box([-0.99, -0.01, -0.99], [0.99, 1.98, 0.99]), "boundary", interior="fog"),
+        # the fog: inside the room, its floor under the room's floor, its top between the light and the ceiling (see
+        # docs/media.md: with the light above the top, Mitsuba's shadow rays through the top are blocked by the light)
+        mesh(box([-0.99, -0.01, -0.99], [0.99, 1.995, 0.99]), "boundary", interior="fog"),
     ]
     return dict(
         camera=dict(lookFrom=[0, 1, 3.9], lookAt=[0, 1, 0], fov=40),
@@ -175,7 +176,15 @@ def strahl_json(scene):
     for key in ("lights", "environment"):
         if key in scene:
             out[key] = scene[key]
-    return json.dumps(out, indent=1)
+    # one line per top-level key and per shape, so that the tests' mutants can replace a value as text
+    dump = lambda v: json.dumps(v, separators=(", ", ": "))
+    lines = []
+    for k, v in out.items():
+        if k == "shapes":
+            lines.append(' "shapes": [\n' + ",\n".join("  " + dump(x) for x in v) + "\n ]")
+        else:
+            lines.append(f' "{k}": {dump(v)}')
+    return "{\n" + ",\n".join(lines) + "\n}"
 
 
 def write_scenes(out):
@@ -269,12 +278,12 @@ def write_pfm(path, img):
     print(f"{path}: mean {img.mean(axis=(0, 1))}", flush=True)
 
 
-def render(out, spp, seeds, suffix):
+def render(out, spp, seeds, suffix, names=None):
     import mitsuba as mi
     mi.set_variant("llvm_ad_rgb")
     write_scenes(out)
     with tempfile.TemporaryDirectory() as tmp:
-        for name in SCENES:
+        for name in names or SCENES:
             scene = mitsuba_scene(name, spp, out, tmp)
             for seed in seeds:
                 # in passes of at most 1024 spp (the LLVM back end's memory grows with spp x pixels)
@@ -319,7 +328,7 @@ def main():
         grid_lookups(out)
     elif what == "refs":
         spp = int(sys.argv[3]) if len(sys.argv) > 3 else 16384
-        render(out, spp, [1], lambda name, seed: f"{name}_128.pfm")
+        render(out, spp, [1], lambda name, seed: f"{name}_128.pfm", sys.argv[4:])
     elif what == "noise":
         spp = int(sys.argv[3]) if len(sys.argv) > 3 else 1024
         runs = int(sys.argv[4]) if len(sys.argv) > 4 else 4

@@ -94,7 +94,7 @@ final class RenderController {
         this.aperture = scene.camera().aperture();
         this.focusDistance = scene.camera().focusDistance();
         this.camera = home;
-        this.settings = Objects.requireNonNull(settings, "settings");
+        this.settings = SceneIntegrators.supported(scene, Objects.requireNonNull(settings, "settings"));
         this.stopAt = ViewerOptions.checkStopAt(stopAt);
         this.starter = starter;
         this.sink = sink;
@@ -170,7 +170,7 @@ final class RenderController {
     }
 
     synchronized void setIntegrator(IntegratorKind integrator) {
-        changeSettings(settings.withIntegrator(integrator));
+        changeSettings(SceneIntegrators.supported(scene, settings.withIntegrator(integrator)));
     }
 
     /** The feature buffers full-resolution jobs keep (View → Denoise adds its guides); previews keep none. */
@@ -191,7 +191,7 @@ final class RenderController {
      */
     synchronized void setScene(Scene newScene, RenderSettings newSettings) {
         scene = Objects.requireNonNull(newScene, "scene");
-        settings = Objects.requireNonNull(newSettings, "settings");
+        settings = SceneIntegrators.supported(newScene, Objects.requireNonNull(newSettings, "settings"));
         home = OrbitCamera.of(newScene.camera());
         camera = home;
         aperture = newScene.camera().aperture();
