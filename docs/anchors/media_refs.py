@@ -3,10 +3,12 @@
 
     python3 docs/anchors/media_refs.py scenes  [OUT]            strahl's scene files and smoke.vol only
     python3 docs/anchors/media_refs.py refs    [OUT] [SPP] [NAME...]  + Mitsuba's references NAME_128.pfm
-    python3 docs/anchors/media_refs.py noise   DIR [SPP] [RUNS] Mitsuba at SPP (default 1024), RUNS seeds:
+    python3 docs/anchors/media_refs.py noise   DIR [SPP] [RUNS] [NAME...]  Mitsuba at SPP (default 1024), RUNS seeds:
                                                                  NAME_SPP_sK.pfm, to measure its own error
     python3 docs/anchors/media_refs.py grid    [OUT]            Mitsuba's gridvolume looked up at points:
                                                                  grid-lookups.txt (GridConventionTest)
+    python3 docs/anchors/media_refs.py nullcheck [SPP]         Mitsuba's volpath with a null box around the
+                                                                 room's light or below it (docs/media.md)
         OUT defaults to src/test/resources/golden/media, SPP of the references to 16384.
         Needs mitsuba 3.9.1 (variant llvm_ad_rgb; scalar_rgb for the lookups) and numpy.
 
@@ -319,11 +321,51 @@ def grid_lookups(out):
     print("wrote", os.path.join(out, "grid-lookups.txt"), "mitsuba", mi.__version__)
 
 
+def null_check(spp):
+    """Mitsuba's volpath with an invisible (null) box in the room: the box's top below the light
+    (shadow rays cross it just before they reach the light), above the light, and below it again
+    with the light's own surface null. Prints each image's mean against the room without a box."""
+    import mitsuba as mi
+    mi.set_variant("llvm_ad_rgb")
+
+    def room(top=None, null_lamp=False):
+        def make():
+            sc = fog_scene()
+            sc["media"] = {}
+            sc["shapes"] = sc["shapes"][:-1]
+            if top is not None:
+                sc["shapes"].append(mesh(box([-0.99, -0.01, -0.99], [0.99, top, 0.99]), "boundary"))
+            if null_lamp:
+                sc["materials"]["light"] = dict(sc["materials"]["light"], null=True)
+            return sc
+        return make
+
+    plain = mitsuba_bsdf
+
+    def bsdf(m):
+        return {"type": "null"} if m.get("null") else plain(m)
+
+    globals()["mitsuba_bsdf"] = bsdf
+    variants = {"no box": room(), "box top 1.98 (light above it)": room(1.98), "box top 1.9": room(1.9),
+                "box top 1.995 (light inside)": room(1.995), "no box, null lamp surface": room(None, True),
+                "box top 1.98, null lamp surface": room(1.98, True)}
+    with tempfile.TemporaryDirectory() as tmp:
+        means = {}
+        for name, make in variants.items():
+            SCENES["check"] = make
+            means[name] = np.array(mi.render(mitsuba_scene("check", spp, tmp, tmp), seed=3)).mean(axis=(0, 1))
+        for name, m in means.items():
+            base = means["no box, null lamp surface" if "null lamp" in name else "no box"]
+            print(f"{name:36s} mean {np.round(m, 5)}  vs no box {np.round(m / base - 1, 4)}")
+
+
 def main():
     what = sys.argv[1] if len(sys.argv) > 1 else "refs"
     out = sys.argv[2] if len(sys.argv) > 2 else OUT_DEFAULT
     if what == "scenes":
         write_scenes(out)
+    elif what == "nullcheck":
+        null_check(int(sys.argv[2]) if len(sys.argv) > 2 else 256)
     elif what == "grid":
         grid_lookups(out)
     elif what == "refs":
@@ -332,7 +374,7 @@ def main():
     elif what == "noise":
         spp = int(sys.argv[3]) if len(sys.argv) > 3 else 1024
         runs = int(sys.argv[4]) if len(sys.argv) > 4 else 4
-        render(out, spp, range(101, 101 + runs), lambda name, seed: f"{name}_{spp}_s{seed}.pfm")
+        render(out, spp, range(101, 101 + runs), lambda name, seed: f"{name}_{spp}_s{seed}.pfm", sys.argv[5:])
     else:
         sys.exit(__doc__)
 
