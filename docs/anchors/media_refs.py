@@ -7,6 +7,7 @@
                                                                  NAME_SPP_sK.pfm, to measure its own error
     python3 docs/anchors/media_refs.py grid    [OUT]            Mitsuba's gridvolume looked up at points:
                                                                  grid-lookups.txt (GridConventionTest)
+    python3 docs/anchors/media_refs.py compare REF.pfm IMG.pfm...  relMSE, means and worst block against REF
     python3 docs/anchors/media_refs.py nullcheck [SPP]         Mitsuba's volpath with a null box around the
                                                                  room's light or below it (docs/media.md)
         OUT defaults to src/test/resources/golden/media, SPP of the references to 16384.
@@ -209,10 +210,10 @@ def mitsuba_medium(m, folder):
     phase = {"type": "hg", "g": float(m.get("g", 0))}
     if m["type"] == "homogeneous":
         # Mitsuba's rgb texture takes values in [0, 1] only: sigmaT / its largest channel, that channel into the scale
-        sigma = np.broadcast_to(np.array(m["sigmaT"], float), 3)
+        sigma = np.broadcast_to(np.array(m.get("sigmaT", 1), float), 3)      # strahl's defaults are Mitsuba's
         peak = float(sigma.max()) or 1.0
         return {"type": "homogeneous", "sigma_t": rgb((sigma / peak).tolist()), "scale": float(m.get("scale", 1)) * peak,
-                "albedo": rgb(m.get("albedo", 0)), "phase": phase}
+                "albedo": rgb(m.get("albedo", 0.75)), "phase": phase}
     lo, hi = np.array(m["bounds"][0], float), np.array(m["bounds"][1], float)
     grid = {"type": "gridvolume", "filename": os.path.join(folder, m["file"]),
             "to_world": mi.ScalarTransform4f().translate(lo.tolist()).scale((hi - lo).tolist())}
@@ -321,6 +322,28 @@ def grid_lookups(out):
     print("wrote", os.path.join(out, "grid-lookups.txt"), "mitsuba", mi.__version__)
 
 
+def read_pfm(path):
+    with open(path, "rb") as f:
+        kind, size, scale = f.readline().strip(), f.readline().split(), float(f.readline())
+        data = np.frombuffer(f.read(), dtype="<f4" if scale < 0 else ">f4")
+    w, h = int(size[0]), int(size[1])
+    return data.reshape(h, w, 3 if kind == b"PF" else 1)[::-1].astype(np.float64)
+
+
+def compare(ref_path, paths, block=16):
+    """relMSE = mean((x - ref)^2 / (ref^2 + 0.01)) (strahl's Image.relMse), the image means, and the
+    worst block's relative difference (r + g + b, as MediaGoldenTest without its floor)."""
+    ref = read_pfm(ref_path)
+    n = ref.shape[0] // block
+    for p in paths:
+        img = read_pfm(p)
+        rel = np.mean((img - ref) ** 2 / (ref ** 2 + 0.01))
+        a, r = (x.reshape(n, block, n, block, 3).sum(axis=(1, 3)) for x in (img, ref))
+        worst = (np.abs(a - r).sum(axis=2) / (r.sum(axis=2) + 0.05 * r.sum() / (n * n))).max()
+        means = img.mean(axis=(0, 1)) / ref.mean(axis=(0, 1)) - 1
+        print(f"{p}: relMSE {rel:.3g}, means {np.round(100 * means, 2)} %, worst {block}x{block} block {100 * worst:.2f} %")
+
+
 def null_check(spp):
     """Mitsuba's volpath with an invisible (null) box in the room: the box's top below the light
     (shadow rays cross it just before they reach the light), above the light, and below it again
@@ -364,6 +387,8 @@ def main():
     out = sys.argv[2] if len(sys.argv) > 2 else OUT_DEFAULT
     if what == "scenes":
         write_scenes(out)
+    elif what == "compare":
+        compare(sys.argv[2], sys.argv[3:])
     elif what == "nullcheck":
         null_check(int(sys.argv[2]) if len(sys.argv) > 2 else 256)
     elif what == "grid":

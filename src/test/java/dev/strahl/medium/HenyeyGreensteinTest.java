@@ -30,7 +30,7 @@ class HenyeyGreensteinTest {
             double pdf = HenyeyGreenstein.sample(g, WO, u1, u2, frame, wi);
             assertThat(pdf).isCloseTo(HenyeyGreenstein.pdf(g, WO, wi), within(1e-9 * pdf));
             return true;
-        }, wi -> HenyeyGreenstein.pdf(g, WO, wi), 400_000, 7, 20, 40, 32).assertAccepted(ALPHA);
+        }, wi -> HenyeyGreenstein.pdf(g, WO, wi), 200_000, 7, 20, 40, 32).assertAccepted(ALPHA);
     }
 
     @Test

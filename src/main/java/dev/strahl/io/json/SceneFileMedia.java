@@ -27,6 +27,9 @@ final class SceneFileMedia {
             "homogeneous", Set.of("type", "sigmaT", "scale", "albedo", "g"),
             "grid", Set.of("type", "file", "bounds", "scale", "albedo", "g"));
 
+    /** Mitsuba 3's default single-scattering albedo (its {@code homogeneous} and {@code heterogeneous}); σt defaults to its 1. */
+    static final double DEFAULT_ALBEDO = 0.75;
+
     private SceneFileMedia() {}
 
     /**
@@ -105,7 +108,7 @@ final class SceneFileMedia {
         }
         v.allowOnly(m, key + " of type " + type, keys);
         double scale = m.containsKey("scale") ? v.nonNegative(m.get("scale"), key + ".scale") : 1;
-        Rgb albedo = m.containsKey("albedo") ? colourOrNumber(m.get("albedo"), key + ".albedo", v, true) : Rgb.BLACK;
+        Rgb albedo = m.containsKey("albedo") ? colourOrNumber(m.get("albedo"), key + ".albedo", v, true) : Rgb.gray(DEFAULT_ALBEDO);
         double g = 0;
         if (m.containsKey("g")) {
             g = v.number(m.get("g"), key + ".g");
@@ -114,9 +117,9 @@ final class SceneFileMedia {
             }
         }
         if (type.equals("homogeneous")) {
-            Rgb sigmaT = colourOrNumber(v.require(m, "sigmaT", node), key + ".sigmaT", v, false);
+            Rgb sigmaT = m.containsKey("sigmaT") ? colourOrNumber(m.get("sigmaT"), key + ".sigmaT", v, false) : Rgb.WHITE;
             if (!Double.isFinite(sigmaT.max() * scale)) {
-                throw v.error(m.get("sigmaT"), "'" + key + ".sigmaT' times 'scale' must be finite, got " + sigmaT + " x " + JsonValues.format(scale));
+                throw v.error(m.containsKey("sigmaT") ? m.get("sigmaT") : node, "'" + key + ".sigmaT' times 'scale' must be finite, got " + sigmaT + " x " + JsonValues.format(scale));
             }
             return new Medium(type, sigmaT, null, null, null, scale, albedo, g);
         }

@@ -40,7 +40,8 @@ class MediaSceneFileTest {
                 "tint":  { "type": "homogeneous", "sigmaT": [1.0, 0.375, 0.104], "scale": 2.4, "albedo": 0 },
                 "smoke": { "type": "grid", "file": "smoke.vol", "bounds": [[-0.5, 0, -0.5], [0.5, 1, 0.5]],
                            "scale": 9, "albedo": 0.9, "g": 0.3 },
-                "haze":  { "type": "grid", "file": "smoke.vol" }
+                "haze":  { "type": "grid", "file": "smoke.vol" },
+                "air":   { "type": "homogeneous" }
               },
               "materials": { "boundary": { "type": "null" }, "glass": { "type": "dielectric", "ior": 1.5 },
                              "white": { "type": "diffuse", "albedo": [0.7, 0.7, 0.7] } },
@@ -72,7 +73,8 @@ class MediaSceneFileTest {
         smokeVol();
         Scene scene = SceneLoader.load(write("media.json", SCENE));
         Media media = World.of(scene).media();
-        assertThat(media.count()).isEqualTo(4);
+        assertThat(media.count()).isEqualTo(5);
+        assertThat(media.medium(4)).as("Mitsuba's defaults: sigma_t 1, albedo 0.75, isotropic").isEqualTo(new HomogeneousMedium(Rgb.WHITE, Rgb.gray(0.75), 0));
         assertThat(media.medium(0)).isEqualTo(new HomogeneousMedium(Rgb.gray(0.6), Rgb.gray(0.85), 0.4));
         assertThat(media.medium(1)).isEqualTo(new HomogeneousMedium(new Rgb(2.4, 0.375 * 2.4, 0.104 * 2.4), Rgb.BLACK, 0));
         GridMedium smoke = (GridMedium) media.medium(2);
@@ -82,6 +84,7 @@ class MediaSceneFileTest {
         GridMedium haze = (GridMedium) media.medium(3);
         assertThat(haze.sigmaT(0.5, 1.5, 0.5)).as("voxel (1, 1, 1) of the header's box, scale 1").isEqualTo(7, org.assertj.core.api.Assertions.within(1e-9));
         assertThat(haze.g()).isZero();
+        assertThat(haze.albedo()).as("Mitsuba's default albedo").isEqualTo(Rgb.gray(0.75));
         assertThat(media.camera()).isZero();
         int boundary = material(scene, "boundary");
         assertThat(media.isInvisible(boundary)).isTrue();
@@ -120,7 +123,6 @@ class MediaSceneFileTest {
                 medium("{ \"type\": \"homogeneous\", \"sigmaT\": 1, \"g\": 1 }", "'media.m.g' (the phase function's asymmetry) must lie in (-1, 1), got 1"),
                 medium("{ \"type\": \"homogeneous\", \"sigmaT\": 1, \"g\": -1.5 }", "must lie in (-1, 1), got -1.5"),
                 medium("{ \"type\": \"homogeneous\", \"sigmaT\": 1, \"scale\": -2 }", "'media.m.scale' must be >= 0, got -2"),
-                medium("{ \"type\": \"homogeneous\" }", "missing required key 'sigmaT'"),
                 medium("{ \"type\": \"homogeneous\", \"sigmaT\": 1, \"density\": 2 }", "unknown key 'density'"),
                 medium("{ \"type\": \"fog\", \"sigmaT\": 1 }", "unknown medium type 'fog' for 'media.m' (known: grid, homogeneous)"),
                 medium("{ \"type\": \"grid\" }", "missing required key 'file'"),
