@@ -10,9 +10,11 @@ import org.joml.Vector3dc;
  * {@code gridvolume} mapped onto the box by its {@code to_world}); outside the box the extinction
  * is 0. σt is the same in every channel, the albedo may be coloured.
  *
- * <p><b>Sampling: delta tracking</b> (Woodcock et al. 1965; pbrt-v4 §14.2) against the majorant
- * σ̄ = scale × the grid's largest value: tentative collisions follow e^(−σ̄·t), and one at x is
- * real with probability σt(x)/σ̄, else the walk goes on. That samples the first real collision
+ * <p><b>Sampling: delta tracking</b> (Woodcock et al. 1965; pbrt-v4 §14.2) against a majorant
+ * σ̄ ≥ σt: tentative collisions follow e^(−σ̄·t), and one at x is real with probability
+ * σt(x)/σ̄, else the walk goes on. σ̄ is constant over each brick of 8³ voxels (scale × the
+ * largest value lookups in the brick can return, {@link MajorantGrid}), so empty space costs no
+ * collisions and a dense brick does not slow down its sparse neighbours. That samples the first real collision
  * exactly in proportion to T(t)·σt(t), so a scattering event weighs σs/σt = the albedo and a
  * crossing weighs 1. A medium that only absorbs crosses every segment instead, weighted by a ratio
  * tracking estimate of its transmittance.
@@ -31,6 +33,8 @@ public final class GridMedium implements Medium {
     private final double[] lower, upper;
     private final double scale;
     private final double majorant;
+    private final MajorantGrid bricks;
+    private final double brickX, brickY, brickZ;      // bricks per scene unit along each axis
     private final Rgb albedo;
     private final double g;
 
@@ -63,6 +67,10 @@ public final class GridMedium implements Medium {
         this.invZ = 1 / (maxZ - minZ);
         this.scale = scale;
         this.majorant = scale * density.max();
+        this.bricks = new MajorantGrid(density);
+        this.brickX = invX * density.sizeX() / MajorantGrid.BRICK;
+        this.brickY = invY * density.sizeY() / MajorantGrid.BRICK;
+        this.brickZ = invZ * density.sizeZ() / MajorantGrid.BRICK;
         this.albedo = Medium.checkAlbedo(albedo);
         this.g = Medium.checkG(g);
     }
@@ -95,50 +103,91 @@ public final class GridMedium implements Medium {
                                    MutableRgb weight, MutableRgb ratio) {
         ratio.set(1, 1, 1);                  // σt is grey: every channel samples alike
         random.seed(u1, u2);
+        weight.set(1, 1, 1);
         if (albedo.isBlack()) {
-            weight.set(1, 1, 1);
             transmittance(o, d, tMax, random, weight);
             return Double.POSITIVE_INFINITY;
         }
-        weight.set(1, 1, 1);
-        double t0 = entry(o, d), t1 = Math.min(exit(o, d), tMax);
-        if (!(t0 < t1) || majorant == 0) {
-            return Double.POSITIVE_INFINITY;
+        double t = track(o, d, tMax, random, false);
+        if (t < Double.POSITIVE_INFINITY) {
+            weight.set(albedo);
         }
-        for (double t = t0; ; ) {
-            t -= Math.log1p(-random.next()) / majorant;
-            if (!(t < t1)) {
-                return Double.POSITIVE_INFINITY;
-            }
-            if (random.next() * majorant < sigmaTAt(o, d, t)) {
-                weight.set(albedo);
-                return t;
-            }
-        }
+        return t;
     }
 
     @Override
     public void transmittance(Vector3dc o, Vector3dc d, double tMax, TrackingRandom random, MutableRgb tr) {
-        double t0 = entry(o, d), t1 = Math.min(exit(o, d), tMax);
-        if (!(t0 < t1) || majorant == 0) {
-            return;
+        tr.mul(track(o, d, tMax, random, true));
+    }
+
+    /**
+     * Delta tracking ({@code ratio} false: returns the distance of the first real collision, or
+     * +∞) or ratio tracking ({@code ratio} true: returns the transmittance estimate) along the
+     * segment inside the box, brick by brick: a 3D DDA (Amanatides and Woo 1987) walks the bricks of
+     * the {@link MajorantGrid} the segment crosses, and within each the tentative collisions follow
+     * that brick's majorant; as the exponential forgets where it began, sampling restarts at every
+     * brick face, which is exact (pbrt-v4 §14.2.2, its majorant grid).
+     */
+    private double track(Vector3dc o, Vector3dc d, double tMax, TrackingRandom random, boolean ratio) {
+        double crossed = ratio ? 1 : Double.POSITIVE_INFINITY;
+        double t = entry(o, d), t1 = Math.min(exit(o, d), tMax);
+        if (!(t < t1) || majorant == 0) {
+            return crossed;
         }
+        // brick coordinates (a brick is one unit) at the entry, and their rates along the ray
+        double sx = (o.x() + t * d.x() - minX) * brickX, sy = (o.y() + t * d.y() - minY) * brickY, sz = (o.z() + t * d.z() - minZ) * brickZ;
+        double dx = d.x() * brickX, dy = d.y() * brickY, dz = d.z() * brickZ;
+        int cx = cell(sx, bricks.nx), cy = cell(sy, bricks.ny), cz = cell(sz, bricks.nz);
+        int stepX = dx > 0 ? 1 : -1, stepY = dy > 0 ? 1 : -1, stepZ = dz > 0 ? 1 : -1;
+        double nextX = dx == 0 ? Double.POSITIVE_INFINITY : t + (cx + (dx > 0 ? 1 : 0) - sx) / dx;
+        double nextY = dy == 0 ? Double.POSITIVE_INFINITY : t + (cy + (dy > 0 ? 1 : 0) - sy) / dy;
+        double nextZ = dz == 0 ? Double.POSITIVE_INFINITY : t + (cz + (dz > 0 ? 1 : 0) - sz) / dz;
+        double deltaX = Math.abs(1 / dx), deltaY = Math.abs(1 / dy), deltaZ = Math.abs(1 / dz);
         double estimate = 1;
-        for (double t = t0; ; ) {
-            t -= Math.log1p(-random.next()) / majorant;
-            if (!(t < t1)) {
-                break;
-            }
-            estimate *= 1 - sigmaTAt(o, d, t) / majorant;
-            if (estimate < ROULETTE_BELOW) {
-                if (!(random.next() * ROULETTE_BELOW < estimate)) {
-                    estimate = 0;
-                    break;
+        while (true) {
+            double end = Math.min(t1, Math.min(nextX, Math.min(nextY, nextZ)));
+            double m = scale * bricks.max(cx, cy, cz);
+            if (m > 0) {
+                for (double tc = t - Math.log1p(-random.next()) / m; tc < end; tc -= Math.log1p(-random.next()) / m) {
+                    double sigma = sigmaTAt(o, d, tc);
+                    if (!ratio) {
+                        if (random.next() * m < sigma) {
+                            return tc;
+                        }
+                        continue;
+                    }
+                    estimate *= 1 - sigma / m;
+                    if (estimate < ROULETTE_BELOW) {
+                        if (!(random.next() * ROULETTE_BELOW < estimate)) {
+                            return 0;
+                        }
+                        estimate = ROULETTE_BELOW;
+                    }
                 }
-                estimate = ROULETTE_BELOW;
+            }
+            if (!(end < t1)) {
+                return ratio ? estimate : crossed;
+            }
+            t = end;
+            if (nextX <= nextY && nextX <= nextZ) {
+                cx += stepX;
+                nextX += deltaX;
+            } else if (nextY <= nextZ) {
+                cy += stepY;
+                nextY += deltaY;
+            } else {
+                cz += stepZ;
+                nextZ += deltaZ;
+            }
+            if (cx < 0 || cy < 0 || cz < 0 || cx >= bricks.nx || cy >= bricks.ny || cz >= bricks.nz) {
+                return ratio ? estimate : crossed;        // out of the grid a hair before t1 (round-off)
             }
         }
-        tr.mul(estimate);
+    }
+
+    /** The brick of coordinate s, clamped to 0 .. count − 1. */
+    private static int cell(double s, int count) {
+        return s >= 0 ? Math.min((int) s, count - 1) : 0;
     }
 
     /** Where the ray enters the box (0 if it starts inside; +∞ if it misses). */

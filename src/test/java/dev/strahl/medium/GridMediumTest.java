@@ -133,6 +133,73 @@ class GridMediumTest {
         assertThat(sum / n).isCloseTo(Math.exp(-opticalDepth(7)), within(4 * HomogeneousMediumTest.standardError(sum, sumSq, n)));
     }
 
+    /** A 20×17×13 grid (3×3×2 bricks) of hashed values, with a block of empty voxels: the bricks' majorants matter. */
+    static DensityGrid bricky() {
+        float[] v = new float[20 * 17 * 13];
+        for (int k = 0; k < 13; k++) {
+            for (int j = 0; j < 17; j++) {
+                for (int i = 0; i < 20; i++) {
+                    int h = (i * 73856093) ^ (j * 19349663) ^ (k * 83492791);
+                    v[(k * 17 + j) * 20 + i] = i < 8 && j < 8 ? 0 : (h & 1023) / 1023f * (i >= 16 ? 4 : 1);
+                }
+            }
+        }
+        return new DensityGrid(20, 17, 13, v);
+    }
+
+    @Test
+    void theBricksMajorantsBoundEveryLookupInThem() {
+        DensityGrid g = bricky();
+        MajorantGrid bricks = new MajorantGrid(g);
+        assertThat(new int[] {bricks.nx, bricks.ny, bricks.nz}).containsExactly(3, 3, 2);
+        assertThat(bricks.max(0, 0, 0)).as("empty voxels and their ring only").isLessThan(0.999);
+        SplittableRandom r = new SplittableRandom(4);
+        for (int n = 0; n < 200_000; n++) {
+            double u = r.nextDouble(), v = r.nextDouble(), w = r.nextDouble();
+            int bi = Math.min((int) (u * 20 / 8), 2), bj = Math.min((int) (v * 17 / 8), 2), bk = Math.min((int) (w * 13 / 8), 1);
+            assertThat(g.eval(u, v, w)).isLessThanOrEqualTo(bricks.max(bi, bj, bk) + 1e-6);
+        }
+    }
+
+    @Test
+    void trackingBrickByBrickIsUnbiasedAlongRaysInEveryDirection() {
+        Vector3d min = new Vector3d(-1, -0.5, 0), max = new Vector3d(1, 1.2, 0.9);
+        GridMedium m = new GridMedium(bricky(), min, max, 2.2, ALBEDO, 0);
+        SplittableRandom r = new SplittableRandom(6);
+        Vector3d[][] rays = {
+            {new Vector3d(-3, 0.3, 0.45), new Vector3d(1, 0, 0)},                       // along x, through every brick column
+            {new Vector3d(0.5, 3, 0.2), new Vector3d(0, -1, 0)},
+            {new Vector3d(0.2, 0.1, 0.3), new Vector3d(-0.3, 0.5, 0.8).normalize()},    // starts inside
+            {new Vector3d(2, 2, 2), new Vector3d(-1, -0.9, -0.8).normalize()},          // corner to corner, backwards on every axis
+            {new Vector3d(-0.7, -2, 0.05), new Vector3d(0.1, 1, 0.02).normalize()}};
+        for (Vector3d[] ray : rays) {
+            Vector3d o = ray[0], d = ray[1];
+            double tMax = 6;
+            double depth = 0, steps = 200_000;
+            for (int i = 0; i < steps; i++) {
+                double t = (i + 0.5) * tMax / steps;
+                depth += m.sigmaT(o.x + t * d.x, o.y + t * d.y, o.z + t * d.z) * tMax / steps;
+            }
+            double expected = Math.exp(-depth);
+            TrackingRandom random = new TrackingRandom().seed(r.nextDouble(), r.nextDouble());
+            int n = 60_000, crossed = 0;
+            double sum = 0, sumSq = 0;
+            MutableRgb w = new MutableRgb();
+            for (int i = 0; i < n; i++) {
+                MutableRgb tr = new MutableRgb(1, 1, 1);
+                m.transmittance(o, d, tMax, random, tr);
+                sum += tr.r;
+                sumSq += tr.r * tr.r;
+                if (m.sampleScattering(o, d, tMax, 0, r.nextDouble(), r.nextDouble(), random, w, new MutableRgb()) == Double.POSITIVE_INFINITY) {
+                    crossed++;
+                }
+            }
+            assertThat(sum / n).as("ratio tracking along %s", d).isCloseTo(expected, within(4 * HomogeneousMediumTest.standardError(sum, sumSq, n) + 1e-4));
+            assertThat((double) crossed / n).as("delta tracking along %s", d)
+                    .isCloseTo(expected, within(4 * Math.sqrt(expected * (1 - expected) / n) + 1e-4));
+        }
+    }
+
     @Test
     void badBoundsAndScalesAreRefused() {
         assertThatThrownBy(() -> new GridMedium(RAMP, MAX, MIN, 1, ALBEDO, 0)).hasMessageContaining("min < max");
