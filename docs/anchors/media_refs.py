@@ -217,7 +217,7 @@ def mitsuba_medium(m, folder):
     lo, hi = np.array(m["bounds"][0], float), np.array(m["bounds"][1], float)
     grid = {"type": "gridvolume", "filename": os.path.join(folder, m["file"]),
             "to_world": mi.ScalarTransform4f().translate(lo.tolist()).scale((hi - lo).tolist())}
-    return {"type": "heterogeneous", "sigma_t": grid, "scale": float(m.get("scale", 1)), "albedo": rgb(m.get("albedo", 0)),
+    return {"type": "heterogeneous", "sigma_t": grid, "scale": float(m.get("scale", 1)), "albedo": rgb(m.get("albedo", 0.75)),
             "phase": phase}
 
 
