@@ -5,7 +5,7 @@ import dev.strahl.accel.TraversalStack;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.SurfacePoint;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.medium.TrackingRandom;
 import dev.strahl.world.Media;
 import dev.strahl.world.SurfaceMaps;

@@ -5,7 +5,7 @@ import dev.strahl.light.LightSample;
 import dev.strahl.light.LightSampler;
 import dev.strahl.material.Bsdf;
 import dev.strahl.math.MathUtil;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.medium.HenyeyGreenstein;
 import dev.strahl.sampling.Sample2D;
 import dev.strahl.sampling.Sampler;

@@ -7,7 +7,7 @@ import dev.strahl.material.Bsdf;
 import dev.strahl.material.BsdfSample;
 import dev.strahl.math.Frame;
 import dev.strahl.math.MathUtil;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.medium.HenyeyGreenstein;
 import dev.strahl.medium.Medium;
 import dev.strahl.medium.TrackingRandom;

@@ -1,7 +1,7 @@
 package dev.strahl.medium;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import org.joml.Vector3dc;
 
 /**

@@ -1,14 +1,14 @@
 package dev.strahl.medium;
 
-import dev.strahl.io.image.FileReads;
-import dev.strahl.io.image.ImageFormatException;
-import dev.strahl.io.image.ImageLimits;
+import dev.strahl.codec.ImageFormatException;
+import dev.strahl.codec.ImageLimits;
+import dev.strahl.codec.Printable;
+import dev.strahl.files.FileReads;
 import java.io.EOFException;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
@@ -25,7 +25,8 @@ import org.joml.Vector3dc;
  * zmin, xmax, ymax, zmax), then X·Y·Z·channels float32 values, x fastest, then y, then z. strahl
  * reads one channel (a density); Mitsuba's 3- and 6-channel files (colours) are refused, as are
  * other versions and encodings. Every size in the header is checked against the file's length and
- * the free heap before any voxel memory is allocated, so a corrupt or absurd header is a one-line
+ * the free heap ({@link ImageLimits#heapShortfall}, the readers' one heap check) before any voxel
+ * memory is allocated, so a corrupt or absurd header is a one-line
  * {@link ImageFormatException} naming the file, never an {@link OutOfMemoryError}. Bytes after the
  * values are ignored.
  *
@@ -63,7 +64,7 @@ public record VolFile(DensityGrid grid, Vector3dc min, Vector3dc max) {
             head.get(magic);
             if (magic[0] != 'V' || magic[1] != 'O' || magic[2] != 'L') {
                 throw new ImageFormatException(file, "not a Mitsuba volume file: it starts with '"
-                        + ImageFormatException.printable(new String(magic, StandardCharsets.ISO_8859_1)) + "', not 'VOL'");
+                        + Printable.bytes(magic, 0, magic.length) + "', not 'VOL'");
             }
             int version = head.get() & 0xff;
             if (version != 3) {
@@ -92,7 +93,10 @@ public record VolFile(DensityGrid grid, Vector3dc min, Vector3dc max) {
                 throw new ImageFormatException(file, String.format(Locale.ROOT, "truncated: a %dx%dx%d grid needs %d bytes after the"
                         + " header, the file holds %d", nx, ny, nz, bytes, size - HEADER_BYTES));
             }
-            checkHeap(file, nx, ny, nz, bytes);
+            String shortfall = ImageLimits.heapShortfall(bytes + Math.min(bytes, CHUNK_BYTES));
+            if (shortfall != null) {
+                throw new ImageFormatException(file, String.format(Locale.ROOT, "a %dx%dx%d grid %s", nx, ny, nz, shortfall));
+            }
             float[] values = new float[(int) (bytes / Float.BYTES)];
             readValues(ch, values, file);
             try {
@@ -101,23 +105,6 @@ public record VolFile(DensityGrid grid, Vector3dc min, Vector3dc max) {
                 throw new ImageFormatException(file, e.getMessage());
             }
         }
-    }
-
-    /** The grid's bytes within the free heap (measured again after a collection if it looks too small). */
-    private static void checkHeap(Path file, int nx, int ny, int nz, long need) throws ImageFormatException {
-        if (need > free()) {
-            System.gc();                      // what is in use may be mostly garbage: measure once more
-            if (need > free()) {
-                throw new ImageFormatException(file, String.format(Locale.ROOT, "a %dx%dx%d grid needs %s, but the Java heap has %s free"
-                        + " of at most %s: give Java more memory (java -Xmx...)", nx, ny, nz, ImageLimits.bytes(need), ImageLimits.bytes(free()),
-                        ImageLimits.bytes(Runtime.getRuntime().maxMemory())));
-            }
-        }
-    }
-
-    private static long free() {
-        Runtime rt = Runtime.getRuntime();
-        return rt.maxMemory() - (rt.totalMemory() - rt.freeMemory());
     }
 
     private static void readValues(FileChannel ch, float[] values, Path file) throws IOException {

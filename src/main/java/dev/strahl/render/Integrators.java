@@ -14,24 +14,25 @@ final class Integrators {
 
     static Integrator create(World scene, RenderSettings s) {
         // the teaching option --accel none: the same world, every ray against every primitive
-        World world = s.bruteForce() ? scene.bruteForce() : scene;
-        boolean uniform = s.hemisphere() == HemisphereSampling.UNIFORM;
+        World world = s.execution().bruteForce() ? scene.bruteForce() : scene;
+        boolean uniform = s.transport().hemisphere() == HemisphereSampling.UNIFORM;
         // the teaching option without shadows: next-event estimation takes every light sample as visible
-        PathTracer.Strategy path = s.shadows() ? PathTracer.Strategy.MIS : PathTracer.Strategy.UNOCCLUDED;
+        PathTracer.Strategy path = s.transport().shadows() ? PathTracer.Strategy.MIS : PathTracer.Strategy.UNOCCLUDED;
+        RenderSettings.Transport t = s.transport();
         if (world.media().any()) {                 // participating media or invisible surfaces: docs/media.md
-            return switch (s.integrator()) {
-                case PATH -> new VolumePathTracer(world, s.maxDepth(), uniform, 1, s.shadows());
-                case DIRECT -> new VolumePathTracer(world, 2, uniform, s.lightSamples(), s.shadows());
-                default -> throw new IllegalArgumentException("the " + s.integrator().id() + " integrator does not render participating"
+            return switch (t.integrator()) {
+                case PATH -> new VolumePathTracer(world, t.maxDepth(), uniform, 1, t.shadows());
+                case DIRECT -> new VolumePathTracer(world, 2, uniform, t.lightSamples(), t.shadows());
+                default -> throw new IllegalArgumentException("the " + t.integrator().id() + " integrator does not render participating"
                         + " media or null surfaces; this scene has them: use path or direct");
             };
         }
-        return switch (s.integrator()) {
-            case PATH -> new PathTracer(world, s.maxDepth(), uniform, s.cullBackFaces(), path);
-            case DIRECT -> new DirectLighting(world, uniform, s.cullBackFaces(), s.lightSamples(), s.shadows());
-            case WHITTED -> new Whitted(world, s.maxDepth(), s.cullBackFaces(), s.lightSamples(), s.shadows());
-            case PHOTON -> new PhotonMapper(world, s.maxDepth(), uniform, s.cullBackFaces(), s.photons().photonsPerIteration(),
-                    s.photons().initialRadius(), s.shadows());
+        return switch (t.integrator()) {
+            case PATH -> new PathTracer(world, t.maxDepth(), uniform, t.cullBackFaces(), path);
+            case DIRECT -> new DirectLighting(world, uniform, t.cullBackFaces(), t.lightSamples(), t.shadows());
+            case WHITTED -> new Whitted(world, t.maxDepth(), t.cullBackFaces(), t.lightSamples(), t.shadows());
+            case PHOTON -> new PhotonMapper(world, t.maxDepth(), uniform, t.cullBackFaces(), t.photons().photonsPerIteration(),
+                    t.photons().initialRadius(), t.shadows());
         };
     }
 }

@@ -2,12 +2,14 @@ package dev.strahl.scene;
 
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.GeometryBuilder;
+import dev.strahl.geometry.MeshTopology;
 import dev.strahl.geometry.Sphere;
 import dev.strahl.image.Image;
 import dev.strahl.image.Rgb;
 import dev.strahl.light.Emission;
 import dev.strahl.light.Environment;
-import dev.strahl.light.PunctualLight;
+import dev.strahl.material.Bsdf;
+import dev.strahl.world.SurfaceMaps;
 import dev.strahl.world.World;
 import java.util.ArrayList;
 import java.util.IdentityHashMap;
@@ -82,7 +84,42 @@ public final class Scene {
      * @return 0 without image textures
      */
     public long textureBytes() {
-        return SceneParts.textureBytes(materials);
+        java.util.Set<dev.strahl.texture.Bitmap> seen = java.util.Collections.newSetFromMap(new IdentityHashMap<>());
+        long bytes = 0;
+        for (Material m : materials) {
+            for (dev.strahl.texture.Bitmap b : m.images()) {
+                if (seen.add(b)) {
+                    bytes += b.byteSize();
+                }
+            }
+        }
+        return bytes;
+    }
+
+    /**
+     * How long building the BVH took, when the scene was built (its share of the time to load a
+     * scene; a render's time excludes it).
+     *
+     * @return seconds
+     */
+    public double bvhBuildSeconds() {
+        return world.bvhBuildSeconds();
+    }
+
+    /**
+     * The thin lens's focus distance that makes the surface seen at a point of the image sharp:
+     * the distance, along {@code camera}'s viewing direction, of the first surface its pinhole ray
+     * through that point meets, found as the renderer finds it (the cut-away parts of an alpha
+     * cut-out are passed through). The viewer focuses so on Ctrl+click.
+     *
+     * @param camera the camera looking at this scene
+     * @param fx     the point's x as a fraction of the image width, 0 at the left
+     * @param fy     its y as a fraction of the height, 0 at the top
+     * @param aspect the image's width / height
+     * @return the distance, or NaN where the image shows no surface
+     */
+    public double focusDistance(Camera camera, double fx, double fy, double aspect) {
+        return FocusPicker.focusDistance(this, Objects.requireNonNull(camera, "camera"), fx, fy, aspect);
     }
 
     /**
@@ -102,7 +139,13 @@ public final class Scene {
      * @return an unmodifiable list
      */
     public List<String> notes() {
-        return studioSky ? SceneParts.withStudioNote(notes, framed) : notes;
+        if (!studioSky) {
+            return notes;
+        }
+        List<String> all = new ArrayList<>(notes);
+        all.add(framed ? "the scene has no light and no camera: lighting it with " + StudioSky.DESCRIPTION + " and framing it from "
+                + Camera.FRAMING_DESCRIPTION : "the scene has no light: lighting it with " + StudioSky.DESCRIPTION);
+        return List.copyOf(all);
     }
 
     /**
@@ -126,20 +169,20 @@ public final class Scene {
      * @return a scene sharing everything else with this one
      */
     public Scene withEnvironmentMap(Image map, double scale, double rotateDegrees) {
-        Environment env = SceneParts.mapOf(map, scale, rotateDegrees);
+        Environment env = SceneLighting.mapOf(map, scale, rotateDegrees);
         return new Scene(world.withEnvironment(env), materials, camera, notes, false, framed);
     }
 
-    /** Collects shapes, materials, camera and environment, then builds the BVH once. Not thread-safe. */
-    public static final class Builder {
+    /**
+     * Collects shapes, materials, camera, lights and environment, then builds the BVH once. Not
+     * thread-safe. (The lights, the environment and the media are set by the methods of package-private bases.)
+     */
+    public static final class Builder extends SceneMediaSetters {
         private final GeometryBuilder geometry = new GeometryBuilder();
         private final List<Material> materials = new ArrayList<>();
         private final Map<Material, Integer> materialIndex = new IdentityHashMap<>();
         private final List<String> notes = new ArrayList<>();
-        private final List<PunctualLight> punctual = new ArrayList<>();
-        private final SceneMedia media = new SceneMedia();
         private Camera camera;
-        private Environment environment;
 
         private Builder() {}
 
@@ -187,7 +230,30 @@ public final class Scene {
          * @return this builder
          */
         public Builder addMesh(TriangleMesh mesh, int[] materialOfTriangle, List<Material> palette) {
-            SceneParts.addMesh(geometry, mesh, materialOfTriangle, palette.stream().mapToInt(this::indexOf).toArray(), notes);
+            if (materialOfTriangle.length != mesh.triangleCount()) {
+                throw new IllegalArgumentException("need one material per triangle: " + materialOfTriangle.length + " for " + mesh.triangleCount());
+            }
+            int[] global = new int[palette.size()];
+            for (int i = 0; i < palette.size(); i++) {
+                global[i] = indexOf(palette.get(i));
+            }
+            boolean[] closed = MeshTopology.closedOutwardGroups(mesh.positionsUnsafe(), mesh.indicesUnsafe(), materialOfTriangle, palette.size());
+            int[] materialsOut = new int[mesh.triangleCount()];
+            byte[] flags = new byte[mesh.triangleCount()];
+            for (int t = 0; t < materialsOut.length; t++) {
+                int local = materialOfTriangle[t];
+                if (local < 0 || local >= palette.size()) {
+                    throw new IllegalArgumentException("triangle " + t + " refers to material " + local + " of " + palette.size());
+                }
+                materialsOut[t] = global[local];
+                flags[t] = closed[local] ? Geometry.CLOSED : 0;
+            }
+            int before = geometry.degenerateCount();
+            geometry.addMesh(mesh.positionsUnsafe(), mesh.indicesUnsafe(), mesh.normalsUnsafe(), mesh.uvsUnsafe(), materialsOut, flags);
+            int skipped = geometry.degenerateCount() - before;
+            if (skipped > 0) {
+                notes.add("skipped " + skipped + " degenerate triangle" + (skipped == 1 ? "" : "s") + " (zero area)");
+            }
             return this;
         }
 
@@ -234,142 +300,6 @@ public final class Scene {
         }
 
         /**
-         * Radiance arriving from every direction where rays leave the scene. Without an
-         * environment, a scene with lights has a black one and a scene without lights strahl's
-         * studio sky (a procedural blue sky with a soft sun, built in code).
-         *
-         * @param radiance the constant environment radiance
-         * @return this builder
-         */
-        public Builder environment(Rgb radiance) {
-            this.environment = Environment.constant(Objects.requireNonNull(radiance));
-            return this;
-        }
-
-        /**
-         * A latitude–longitude environment map, oriented as Mitsuba 3's {@code envmap}: +Y is up
-         * and the image's top row is the +Y pole; the centre column is seen looking along +Z, the
-         * column at a quarter of the width along +X, at three quarters along −X, the left and
-         * right edges along −Z. Texel (x, y) sits at u = (x + ½)/W, v = y/(H − 1), bilinear in
-         * between. The map is importance-sampled (luminance · sin θ) for next-event estimation.
-         * Read one from a file with {@code SceneLoader.readImage}.
-         *
-         * @param map           linear radiance, at least 1×2 pixels; negative and NaN values count as black
-         * @param scale         factor on the radiance, finite and ≥ 0
-         * @param rotateDegrees rotation of the map about +Y (right-handed), in degrees
-         * @return this builder
-         * @throws IllegalArgumentException if the map is too small or the scale or rotation is not finite
-         */
-        public Builder environmentMap(Image map, double scale, double rotateDegrees) {
-            this.environment = SceneParts.mapOf(map, scale, rotateDegrees);
-            return this;
-        }
-
-        /**
-         * Adds a point light (glTF {@code KHR_lights_punctual} "point"): the irradiance it gives a
-         * surface at distance d, facing it, is I/d². A delta light: only light sampling finds it.
-         * @param position  where it is
-         * @param intensity radiant intensity I, W/sr per channel, ≥ 0
-         * @return this builder
-         * @throws IllegalArgumentException if the position is not finite or the intensity negative
-         */
-        public Builder pointLight(Vector3dc position, Rgb intensity) {
-            punctual.add(PunctualLight.point(position, intensity));
-            return this;
-        }
-
-        /**
-         * Adds a spot light (glTF "spot"): a point light whose intensity I is scaled by glTF's
-         * falloff clamp((cd − cos outer) / (cos inner − cos outer), 0, 1)², cd the cosine between
-         * {@code direction} and the way from the light to the lit point.
-         *
-         * @param position          where it is
-         * @param direction         its axis, the direction it shines in (any length but zero)
-         * @param intensity         radiant intensity I on the axis, W/sr per channel, ≥ 0
-         * @param innerConeRadians  full intensity within this angle of the axis, ≥ 0
-         * @param outerConeRadians  no light beyond this angle, ≥ inner, &gt; 0 and ≤ π/2
-         * @return this builder
-         * @throws IllegalArgumentException for angles out of range, a zero direction or a negative intensity
-         */
-        public Builder spotLight(Vector3dc position, Vector3dc direction, Rgb intensity, double innerConeRadians, double outerConeRadians) {
-            punctual.add(PunctualLight.spot(position, direction, intensity, innerConeRadians, outerConeRadians));
-            return this;
-        }
-
-        /**
-         * Adds a directional light (glTF "directional"): parallel light, as from a distant sun.
-         * @param direction  the direction the light travels (any length but zero)
-         * @param irradiance irradiance E on a surface facing the light, W/m² per channel, ≥ 0
-         * @return this builder
-         * @throws IllegalArgumentException for a zero direction or a negative irradiance
-         */
-        public Builder directionalLight(Vector3dc direction, Rgb irradiance) {
-            punctual.add(PunctualLight.directional(direction, irradiance));
-            return this;
-        }
-
-        /**
-         * Defines a homogeneous medium (Mitsuba 3's {@code homogeneous} with an {@code hg} phase function).
-         *
-         * @param name   the medium's name, new
-         * @param sigmaT extinction per scene unit in each channel, ≥ 0
-         * @param albedo single-scattering albedo σs/σt in each channel, in [0, 1] (0: it only absorbs)
-         * @param g      Henyey–Greenstein asymmetry in (−1, 1): positive scatters forwards
-         * @return this builder
-         * @throws IllegalArgumentException for a value out of range or a name defined before
-         */
-        public Builder homogeneousMedium(String name, Rgb sigmaT, Rgb albedo, double g) {
-            media.homogeneous(name, sigmaT, albedo, g);
-            return this;
-        }
-
-        /**
-         * Defines a medium of extinction {@code scale} × the density grid of a Mitsuba {@code .vol}
-         * file (version 3, float32, one channel) filling a box, as Mitsuba 3's {@code gridvolume}:
-         * voxel (i, j, k) at ((i + ½)/X, (j + ½)/Y, (k + ½)/Z) of the box, trilinear, clamped at the border.
-         *
-         * @param name   the medium's name, new
-         * @param file   the {@code .vol} file
-         * @param min    the box's lower corner, or null (with {@code max}) for the box in the file's header
-         * @param max    the box's upper corner
-         * @param scale  extinction per unit of density and scene unit, ≥ 0
-         * @param albedo single-scattering albedo in each channel, in [0, 1]
-         * @param g      Henyey–Greenstein asymmetry in (−1, 1)
-         * @return this builder
-         * @throws SceneException if the file holds no valid grid (one line naming it)
-         */
-        public Builder gridMedium(String name, java.nio.file.Path file, Vector3dc min, Vector3dc max, double scale, Rgb albedo, double g)
-                throws SceneException {
-            media.grid(name, file, min, max, scale, albedo, g);
-            return this;
-        }
-
-        /**
-         * Makes the shapes added from now on boundaries between media: a ray that crosses into one
-         * (against its geometric normal) travels on in {@code interior}, one that leaves it in
-         * {@code exterior}. {@code (null, null)} ends it: later shapes leave a ray in its medium.
-         *
-         * @param interior a medium defined before, or null for vacuum
-         * @param exterior a medium defined before, or null for vacuum
-         * @return this builder
-         */
-        public Builder mediumBoundary(String interior, String exterior) {
-            media.boundary(interior, exterior);
-            return this;
-        }
-
-        /**
-         * The medium the camera is in (default: vacuum).
-         *
-         * @param name a medium defined before, or null for vacuum
-         * @return this builder
-         */
-        public Builder cameraMedium(String name) {
-            media.camera(name);
-            return this;
-        }
-
-        /**
          * Adds a remark for the user (e.g. from a loader); start a warning with {@code "warning: "}.
          *
          * @param note one line
@@ -387,14 +317,31 @@ public final class Scene {
          */
         public Scene build() {
             Geometry g = geometry.build();
-            Emission[] emission = SceneParts.emission(materials);
-            boolean studio = environment == null && punctual.isEmpty() && !SceneParts.anyEmits(g, emission);
+            Bsdf[] bsdfs = new Bsdf[materials.size()];
+            Emission[] emission = new Emission[materials.size()];
+            SurfaceMaps[] maps = new SurfaceMaps[materials.size()];
+            for (int i = 0; i < bsdfs.length; i++) {
+                Surface surface = materials.get(i).surface();
+                bsdfs[i] = surface.bsdf();
+                emission[i] = surface.emissionTable();
+                maps[i] = surface.maps();
+            }
+            boolean studio = environment == null && punctual.isEmpty() && !anyEmits(g, emission);
             Environment env = environment != null ? environment : studio ? StudioSky.environment() : Environment.BLACK;
-            World world = World.build(g, SceneParts.bsdfs(materials), emission, SceneParts.maps(materials), env, punctual)
-                    .withMedia(media.build(SceneParts.bsdfs(materials)));
-            // A bare model (no light) is shown from above at three quarters, a scene with lights (a room) from its open front, +Z.
+            World world = World.build(g, bsdfs, emission, maps, env, punctual).withMedia(media.build(bsdfs));
+            // A bare model (no light) is an object: shown from above at three quarters. A scene with
+            // its own lights is often a room made to be seen from its open front (the Cornell Box): +Z.
             Camera cam = camera != null ? camera : studio ? Camera.framing(world.bounds(), 40) : Camera.frontFraming(world.bounds(), 40);
             return new Scene(world, List.copyOf(materials), cam, List.copyOf(notes), studio, camera == null);
+        }
+
+        private static boolean anyEmits(Geometry g, Emission[] emission) {
+            for (int prim = 0; prim < g.primitiveCount(); prim++) {
+                if (!emission[g.material(prim)].isBlack()) {
+                    return true;
+                }
+            }
+            return false;
         }
     }
 }

@@ -17,7 +17,7 @@ final class SceneIntegrators {
 
     /** {@code settings}, with {@code path} instead of an integrator that does not render {@code scene}. */
     static RenderSettings supported(Scene scene, RenderSettings settings) {
-        IntegratorKind kind = settings.integrator();
+        IntegratorKind kind = settings.transport().integrator();
         boolean refuses = kind == IntegratorKind.WHITTED || kind == IntegratorKind.PHOTON;
         return refuses && World.of(scene).media().any() ? settings.withIntegrator(IntegratorKind.PATH) : settings;
     }

@@ -14,7 +14,7 @@ class JobFilesMediaTest {
     void theVolumeFileIsAmongTheFilesShipped() throws Exception {
         Path scene = Path.of("src/test/resources/golden/media/smoke.json");
         Map<String, Path> byHash = new HashMap<>();
-        JobFiles job = JobFiles.of(scene, SceneLoader.load(scene).camera(), new byte[0], new byte[0], byHash);
+        JobFiles job = JobFiles.of(scene, SceneLoader.load(scene).camera(), "", new byte[0], byHash);
         assertThat(job.files().keySet()).containsExactlyInAnyOrder("smoke.json", "smoke.vol");
         assertThat(byHash.values()).contains(scene.resolveSibling("smoke.vol").toAbsolutePath().normalize());
     }

@@ -9,7 +9,7 @@ import dev.strahl.geometry.Ray;
 import dev.strahl.image.Image;
 import dev.strahl.image.Rgb;
 import dev.strahl.io.SceneLoader;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.render.IntegratorKind;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.sampling.Sample2D;

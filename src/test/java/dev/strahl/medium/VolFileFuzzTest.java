@@ -2,7 +2,7 @@ package dev.strahl.medium;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.io.image.ImageFormatException;
+import dev.strahl.codec.ImageFormatException;
 import dev.strahl.testing.Fuzzer;
 import java.io.IOException;
 import java.nio.ByteBuffer;

@@ -3,7 +3,7 @@ package dev.strahl.medium;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import dev.strahl.io.image.ImageFormatException;
+import dev.strahl.codec.ImageFormatException;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
