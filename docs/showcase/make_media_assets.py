@@ -10,7 +10,8 @@ Needs numpy only. Deterministic: the same bytes every run.
               a plume that rises from a narrow base, widens, leans and curls, its density broken up
               by three octaves of value noise and fading out towards the top. Header box
               [-0.5, 0, -0.5] .. [0.5, 1.6, 0.5]; the scenes place it with their own "bounds".
-  knot.ply    a (2, 3) torus knot tube, 192 x 16 quads (6144 triangles, binary PLY), about
+  knot.ply    a (2, 3) torus knot tube, 192 x 16 quads (6144 triangles, binary PLY, with
+              the tube's normals for smooth shading), about
               1.2 units across: thick and thin at once, what subsurface scattering shows off on.
 """
 import os
@@ -78,7 +79,8 @@ def knot(segments=192, sides=16, p=2, q=3, tube=0.13):
         binormal = np.cross(tangent, normal)
         for j in range(sides):
             a = 2 * np.pi * j / sides
-            verts.append(c + tube * (np.cos(a) * normal + np.sin(a) * binormal))
+            out = np.cos(a) * normal + np.sin(a) * binormal        # the tube's own normal: smooth shading
+            verts.append(np.concatenate([c + tube * out, out]))
     faces = []
     for i in range(segments):
         for j in range(sides):
@@ -92,6 +94,7 @@ def write_ply(path, verts, faces):
     with open(path, "wb") as f:
         f.write(("ply\nformat binary_little_endian 1.0\ncomment strahl docs/showcase/make_media_assets.py: a (2, 3) torus knot tube\n"
                  f"element vertex {len(verts)}\nproperty float x\nproperty float y\nproperty float z\n"
+                 "property float nx\nproperty float ny\nproperty float nz\n"
                  f"element face {len(faces)}\nproperty list uchar int vertex_indices\nend_header\n").encode())
         f.write(verts.tobytes())
         for t in faces:
