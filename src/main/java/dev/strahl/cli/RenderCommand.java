@@ -1,6 +1,7 @@
 package dev.strahl.cli;
 
 import dev.strahl.codec.ImageLimits;
+import dev.strahl.codec.Printable;
 import dev.strahl.io.ImageWriters;
 import dev.strahl.io.SceneLoader;
 import dev.strahl.io.json.SceneFile;
@@ -135,7 +136,7 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     private int fail(PrintWriter err, Throwable e, String message, int code) {
-        err.println("strahl: " + message);
+        err.println("strahl: " + Printable.line(message));       // one line, whatever a file put into the message
         if (debug.enabled && e != null) {
             e.printStackTrace(err);
         }
@@ -182,7 +183,7 @@ final class RenderCommand implements Callable<Integer> {
         HeapCheck.checkRender(settings.output().width(), settings.output().height(), keepsFeatures(settings), denoising.denoise);
         if (!quiet) {
             for (String note : s.notes()) {
-                err.println("strahl: " + (note.startsWith("warning: ") ? note : "note: " + note));
+                err.println("strahl: " + Printable.line(note.startsWith("warning: ") ? note : "note: " + note));
             }
             err.flush();
         }
@@ -202,6 +203,8 @@ final class RenderCommand implements Callable<Integer> {
         } catch (OutOfMemoryError e) {
             throw new IllegalArgumentException(scene + ": the scene does not fit in the Java heap (at most "
                     + ImageLimits.bytes(Runtime.getRuntime().maxMemory()) + "): give Java more memory (java -Xmx...)", e);
+        } catch (StackOverflowError e) {
+            throw new IllegalArgumentException(scene + ": the scene is nested too deeply to read (the reader's stack overflowed)", e);
         }
     }
 
