@@ -16,7 +16,7 @@ import java.util.Set;
  * building the scene without the BVH, {@code bvh_build_seconds} the BVH build, {@code texture_bytes}
  * the memory of the texture images (each file once). {@code spp_min}, {@code spp_mean} and {@code spp_max} are the
  * samples the pixels took (equal without a noise threshold), {@code converged_fraction} the share of pixels a noise
- * threshold found converged (0 without one). {@code settings} holds every setting by the
+ * threshold found converged (0 without one), {@code passes} the passes over the image. {@code settings} holds every setting by the
  * name checkpoints and cluster members know it by ({@link RenderSettings#entries()}).
  */
 final class StatsFile {
@@ -41,6 +41,7 @@ final class StatsFile {
             json.writeNumberField("spp_mean", stats.meanSamplesPerPixel());
             json.writeNumberField("spp_max", stats.maxSamplesPerPixel());
             json.writeNumberField("converged_fraction", stats.convergedFraction());
+            json.writeNumberField("passes", stats.passes());
             json.writeNumberField("bvh_build_seconds", bvhBuildSeconds);
             json.writeNumberField("load_seconds", loadSeconds);
             if (!members.isEmpty()) {
