@@ -41,7 +41,7 @@ class ArchitectureTest {
 
     /** The layers bottom to top; each may use only those before it. */
     private static final String[] LAYERS = {"image", "math", "sampling", "texture", "geometry", "material", "film", "accel", "light", "camera",
-        "io.image", "io.exr", "denoise", "world", "integrator", "photon", "scene", "units", "render", "io.text", "io.obj", "io.ply", "io.gltf", "io.mesh", "io.json", "io",
+        "io.image", "io.exr", "denoise", "denoise.net", "world", "integrator", "photon", "scene", "units", "render", "io.text", "io.obj", "io.ply", "io.gltf", "io.mesh", "io.json", "io",
         "cluster", "bench", "viewer", "cli"};
 
     @ArchTest

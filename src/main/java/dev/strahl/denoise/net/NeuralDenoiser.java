@@ -1,0 +1,147 @@
+package dev.strahl.denoise.net;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.stream.IntStream;
+
+/**
+ * Intel Open Image Denoise's RT filter for HDR colour, in pure Java: OIDN 2.5.1's trained U-Net
+ * ({@link UNet}, weights shipped as resources beside this class) with OIDN's preparation of its
+ * input and output:
+ * <ol>
+ *   <li>colour scaled by the auto-exposure ({@link HdrTransfer#autoexposure}), NaN and negatives
+ *       to 0, through the PU curve; albedo clamped to [0, 1]; normals clamped to [-1, 1] and
+ *       mapped to [0, 1];</li>
+ *   <li>the image in tiles of at most {@link #maxTilePixels} pixels (one tile if it fits), each
+ *       padded with zeros to a multiple of 16 and overlapping its neighbours by
+ *       {@link UNet#OVERLAP} pixels, so that every kept pixel gets what the whole image would
+ *       give it: the result does not depend on the tiling;</li>
+ *   <li>the output through the inverse curve and the inverse exposure.</li>
+ * </ol>
+ * The network is chosen by the guides given: colour, albedo and normal ({@code rt_hdr_alb_nrm}),
+ * colour and albedo ({@code rt_hdr_alb}) or colour alone ({@code rt_hdr}); OIDN takes normals
+ * only with an albedo. Each network's weights are read once, when first used.
+ */
+public final class NeuralDenoiser {
+    /** Floats per pixel a tile needs at most (the input, then 64 + 64 channels at full size, and the coarser levels). */
+    private static final long BYTES_PER_PIXEL = 4L * 170;
+    private static final int MIN_TILE = 2 * UNet.OVERLAP + 4 * UNet.ALIGNMENT;
+    private static final ConcurrentHashMap<String, UNet> NETWORKS = new ConcurrentHashMap<>();
+
+    private final long maxTilePixels;
+
+    /**
+     * @param maxTilePixels the largest tile, in pixels (a tile of n pixels needs about 680·n bytes
+     *                      while the network runs)
+     */
+    NeuralDenoiser(long maxTilePixels) {
+        this.maxTilePixels = Math.max(maxTilePixels, (long) MIN_TILE * MIN_TILE);
+    }
+
+    /** Tiles that take at most a quarter of the heap's limit. */
+    public static NeuralDenoiser create() {
+        return new NeuralDenoiser(Runtime.getRuntime().maxMemory() / 4 / BYTES_PER_PIXEL);
+    }
+
+    /**
+     * Denoises an HDR render.
+     *
+     * @param width  width in pixels
+     * @param height height in pixels
+     * @param color  r, g, b per pixel, row by row from the top
+     * @param albedo the same layout, or null
+     * @param normal world- or camera-space normals, the same layout, or null (used only with an albedo)
+     * @return the denoised colour, the same layout
+     * @throws UncheckedIOException (its message one line) if the network's weights are missing or damaged
+     */
+    public float[] denoise(int width, int height, float[] color, float[] albedo, float[] normal) {
+        String name = albedo == null ? "rt_hdr" : normal == null ? "rt_hdr_alb" : "rt_hdr_alb_nrm";
+        UNet net = network(name, albedo == null ? 3 : normal == null ? 6 : 9);
+        float inputScale = HdrTransfer.autoexposure(color, width, height);
+        float outputScale = inputScale != 0 ? 1 / inputScale : 0;
+        Input input = new Input(width, height, color, albedo, albedo == null ? null : normal, inputScale);
+        float[] out = new float[3 * width * height];
+        int paddedH = roundUp(height), paddedW = roundUp(width);
+        int tileH = paddedH, tileW = paddedW;
+        if ((long) paddedH * paddedW > maxTilePixels) {
+            int side = Math.max(MIN_TILE, (int) Math.sqrt((double) maxTilePixels) / UNet.ALIGNMENT * UNet.ALIGNMENT);
+            tileH = Math.min(paddedH, side);
+            tileW = Math.min(paddedW, Math.max(side, (int) (maxTilePixels / tileH) / UNet.ALIGNMENT * UNet.ALIGNMENT));
+        }
+        int stepY = tileH == paddedH ? paddedH : tileH - 2 * UNet.OVERLAP;
+        int stepX = tileW == paddedW ? paddedW : tileW - 2 * UNet.OVERLAP;
+        for (int y0 = 0; y0 < height; y0 += stepY) {
+            for (int x0 = 0; x0 < width; x0 += stepX) {
+                int inY = Math.max(0, y0 - UNet.OVERLAP);
+                int inX = Math.max(0, x0 - UNet.OVERLAP);
+                int inH = Math.min(paddedH, y0 + stepY + UNet.OVERLAP) - inY;
+                int inW = Math.min(paddedW, x0 + stepX + UNet.OVERLAP) - inX;
+                FeatureMap result = net.run(input.tile(net.inputChannels, inY, inX, inH, inW));
+                output(result, inY, inX, out, width, y0, Math.min(height, y0 + stepY), x0, Math.min(width, x0 + stepX), outputScale);
+            }
+        }
+        return out;
+    }
+
+    /** Pixels y0..y1 x x0..x1 of the image from the network's output for the tile at (inY, inX). */
+    private static void output(FeatureMap result, int inY, int inX, float[] out, int width, int y0, int y1, int x0, int x1, float scale) {
+        IntStream.range(y0, y1).parallel().forEach(y -> {
+            for (int x = x0; x < x1; x++) {
+                for (int c = 0; c < 3; c++) {
+                    float v = HdrTransfer.sanitize(result.get(c, y - inY, x - inX));
+                    out[3 * (y * width + x) + c] = HdrTransfer.inverse(v) * scale;
+                }
+            }
+        });
+    }
+
+    /** The network's input, made one tile at a time. */
+    private record Input(int width, int height, float[] color, float[] albedo, float[] normal, float scale) {
+        FeatureMap tile(int channels, int y0, int x0, int h, int w) {
+            FeatureMap in = new FeatureMap(channels, h, w);
+            IntStream.range(0, Math.min(h, height - y0)).parallel().forEach(ty -> {
+                for (int tx = 0; tx < Math.min(w, width - x0); tx++) {
+                    int p = 3 * ((y0 + ty) * width + x0 + tx);
+                    for (int c = 0; c < 3; c++) {
+                        in.set(c, ty, tx, HdrTransfer.forward(HdrTransfer.sanitize(color[p + c] * scale)));
+                        if (albedo != null) {
+                            in.set(3 + c, ty, tx, clamp(albedo[p + c], 0, 1));
+                        }
+                        if (normal != null) {
+                            in.set(6 + c, ty, tx, clamp(normal[p + c], -1, 1) * 0.5f + 0.5f);
+                        }
+                    }
+                }
+            });
+            return in;
+        }
+
+        /** NaN to 0, then clamped. */
+        private static float clamp(float v, float lo, float hi) {
+            return v >= lo ? Math.min(v, hi) : v < lo ? lo : 0;
+        }
+    }
+
+    private static int roundUp(int n) {
+        return (n + UNet.ALIGNMENT - 1) / UNet.ALIGNMENT * UNet.ALIGNMENT;
+    }
+
+    /** The named network, read from its resource when first asked for. */
+    static UNet network(String name, int inputChannels) {
+        return NETWORKS.computeIfAbsent(name, n -> {
+            String file = n + ".tza";
+            try (InputStream in = NeuralDenoiser.class.getResourceAsStream(file)) {
+                if (in == null) {
+                    throw new IOException("strahl's denoiser: the weights " + file + " are missing from the strahl jar (dev/strahl/denoise/net/)");
+                }
+                return new UNet(TensorArchive.read(file, in.readAllBytes()), file, inputChannels);
+            } catch (TensorArchiveException e) {
+                throw new UncheckedIOException(new IOException("strahl's denoiser: damaged weights: " + e.getMessage(), e));
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
+            }
+        });
+    }
+}
