@@ -41,37 +41,52 @@ final class ConvLanes {
 
     /** Output channels o..o+3 (count of them real) at pixels x..x+2L-1 of row y. */
     private static void two(Conv3x3 conv, FeatureMap[] sources, FeatureMap dst, int o, int count, int y, int x) {
-        FloatVector a00 = FloatVector.broadcast(S, conv.bias[o]);
-        FloatVector a01 = a00;
-        FloatVector a10 = FloatVector.broadcast(S, count > 1 ? conv.bias[o + 1] : 0f);
-        FloatVector a11 = a10;
-        FloatVector a20 = FloatVector.broadcast(S, count > 2 ? conv.bias[o + 2] : 0f);
-        FloatVector a21 = a20;
-        FloatVector a30 = FloatVector.broadcast(S, count > 3 ? conv.bias[o + 3] : 0f);
-        FloatVector a31 = a30;
+        float b0 = conv.bias[o];
+        float b1 = count > 1 ? conv.bias[o + 1] : 0f;
+        float b2 = count > 2 ? conv.bias[o + 2] : 0f;
+        float b3 = count > 3 ? conv.bias[o + 3] : 0f;
+        FloatVector a00 = FloatVector.broadcast(S, b0);
+        FloatVector a01 = FloatVector.broadcast(S, b0);
+        FloatVector a10 = FloatVector.broadcast(S, b1);
+        FloatVector a11 = FloatVector.broadcast(S, b1);
+        FloatVector a20 = FloatVector.broadcast(S, b2);
+        FloatVector a21 = FloatVector.broadcast(S, b2);
+        FloatVector a30 = FloatVector.broadcast(S, b3);
+        FloatVector a31 = FloatVector.broadcast(S, b3);
         float[] w = conv.blocked;
         int wi = (o / 4) * conv.inputs * 36;
-        for (FeatureMap s : sources) {
-            float[] d = s.data;
-            for (int c = 0; c < s.channels; c++) {
-                int row = s.at(c, y - 1, x - 1);
-                for (int ky = 0; ky < 3; ky++, row += s.stride) {
-                    for (int kx = 0; kx < 3; kx++, wi += 4) {
-                        FloatVector v0 = FloatVector.fromArray(S, d, row + kx);
-                        FloatVector v1 = FloatVector.fromArray(S, d, row + kx + L);
-                        FloatVector w0 = FloatVector.broadcast(S, w[wi]);
-                        FloatVector w1 = FloatVector.broadcast(S, w[wi + 1]);
-                        FloatVector w2 = FloatVector.broadcast(S, w[wi + 2]);
-                        FloatVector w3 = FloatVector.broadcast(S, w[wi + 3]);
-                        a00 = v0.fma(w0, a00);
-                        a01 = v1.fma(w0, a01);
-                        a10 = v0.fma(w1, a10);
-                        a11 = v1.fma(w1, a11);
-                        a20 = v0.fma(w2, a20);
-                        a21 = v1.fma(w2, a21);
-                        a30 = v0.fma(w3, a30);
-                        a31 = v1.fma(w3, a31);
-                    }
+        // One loop over all input channels (a loop per source would keep C2 from holding the sums in registers).
+        int source = 0;
+        FeatureMap s = sources[0];
+        int next = s.channels;
+        float[] d = s.data;
+        int stride = s.stride;
+        int row = s.at(0, y - 1, x - 1);
+        for (int c = 0; c < conv.inputs; c++, row += s.plane) {
+            if (c == next) {                        // the next concatenated source
+                s = sources[++source];
+                next += s.channels;
+                d = s.data;
+                stride = s.stride;
+                row = s.at(0, y - 1, x - 1);
+            }
+            for (int ky = 0; ky < 3; ky++) {
+                int r = row + ky * stride;
+                for (int kx = 0; kx < 3; kx++, wi += 4) {
+                    FloatVector v0 = FloatVector.fromArray(S, d, r + kx);
+                    FloatVector v1 = FloatVector.fromArray(S, d, r + kx + L);
+                    FloatVector w0 = FloatVector.broadcast(S, w[wi]);
+                    FloatVector w1 = FloatVector.broadcast(S, w[wi + 1]);
+                    FloatVector w2 = FloatVector.broadcast(S, w[wi + 2]);
+                    FloatVector w3 = FloatVector.broadcast(S, w[wi + 3]);
+                    a00 = v0.fma(w0, a00);
+                    a01 = v1.fma(w0, a01);
+                    a10 = v0.fma(w1, a10);
+                    a11 = v1.fma(w1, a11);
+                    a20 = v0.fma(w2, a20);
+                    a21 = v1.fma(w2, a21);
+                    a30 = v0.fma(w3, a30);
+                    a31 = v1.fma(w3, a31);
                 }
             }
         }
