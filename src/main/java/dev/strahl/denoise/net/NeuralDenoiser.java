@@ -14,7 +14,7 @@ import java.util.stream.IntStream;
  *   <li>colour scaled by the auto-exposure ({@link HdrTransfer#autoexposure}), NaN and negatives
  *       to 0, through the PU curve; albedo clamped to [0, 1]; normals clamped to [-1, 1] and
  *       mapped to [0, 1];</li>
- *   <li>the image in tiles of at most {@link #maxTilePixels} pixels (one tile if it fits), each
+ *   <li>the image in square tiles of at most {@link #tileSide} pixels a side (one tile if it fits), each
  *       padded with zeros to a multiple of 16 and overlapping its neighbours by
  *       {@link UNet#OVERLAP} pixels, so that every kept pixel gets what the whole image would
  *       give it: the result does not depend on the tiling;</li>
@@ -25,24 +25,30 @@ import java.util.stream.IntStream;
  * only with an albedo. Each network's weights are read once, when first used.
  */
 public final class NeuralDenoiser {
-    /** Floats per pixel a tile needs at most (the input, then 64 + 64 channels at full size, and the coarser levels). */
+    /** Bytes per pixel a tile needs at most while the network runs (the input, 64 + 64 channels at full size, the coarser levels). */
     private static final long BYTES_PER_PIXEL = 4L * 170;
-    private static final int MIN_TILE = 2 * UNet.OVERLAP + 4 * UNet.ALIGNMENT;
+    /** The smallest tile side: the overlap on both sides and 64 pixels kept between them. */
+    static final int MIN_TILE = 2 * UNet.OVERLAP + 4 * UNet.ALIGNMENT;
     private static final ConcurrentHashMap<String, UNet> NETWORKS = new ConcurrentHashMap<>();
 
-    private final long maxTilePixels;
+    private final int tileSide;
 
-    /**
-     * @param maxTilePixels the largest tile, in pixels (a tile of n pixels needs about 680·n bytes
-     *                      while the network runs)
-     */
-    NeuralDenoiser(long maxTilePixels) {
-        this.maxTilePixels = Math.max(maxTilePixels, (long) MIN_TILE * MIN_TILE);
+    /** @param tileSide the side of the largest tile, in pixels: a multiple of 16, at least {@link #MIN_TILE} */
+    NeuralDenoiser(int tileSide) {
+        if (tileSide < MIN_TILE || tileSide % UNet.ALIGNMENT != 0) {
+            throw new IllegalArgumentException("tile side " + tileSide + " is not a multiple of 16 from " + MIN_TILE);
+        }
+        this.tileSide = tileSide;
     }
 
-    /** Tiles that take at most a quarter of the heap's limit. */
+    /**
+     * A denoiser whose tiles take at most a quarter of the heap's limit (a tile of n pixels needs
+     * about 680·n bytes while the network runs): tiles of 880x880 pixels with a 2 GiB heap.
+     */
     public static NeuralDenoiser create() {
-        return new NeuralDenoiser(Runtime.getRuntime().maxMemory() / 4 / BYTES_PER_PIXEL);
+        long pixels = Runtime.getRuntime().maxMemory() / 4 / BYTES_PER_PIXEL;
+        int side = (int) Math.min(1 << 14, (long) Math.sqrt((double) pixels)) / UNet.ALIGNMENT * UNet.ALIGNMENT;
+        return new NeuralDenoiser(Math.max(MIN_TILE, side));
     }
 
     /**
@@ -58,20 +64,21 @@ public final class NeuralDenoiser {
      */
     public float[] denoise(int width, int height, float[] color, float[] albedo, float[] normal) {
         String name = albedo == null ? "rt_hdr" : normal == null ? "rt_hdr_alb" : "rt_hdr_alb_nrm";
-        UNet net = network(name, albedo == null ? 3 : normal == null ? 6 : 9);
+        return denoise(network(name, albedo == null ? 3 : normal == null ? 6 : 9), width, height, color, albedo, normal);
+    }
+
+    /** {@link #denoise(int, int, float[], float[], float[])} with the given network (its input channels say which guides it takes). */
+    float[] denoise(UNet net, int width, int height, float[] color, float[] albedo, float[] normal) {
+        if (net.inputChannels > 3 && albedo == null || net.inputChannels > 6 && normal == null) {
+            throw new IllegalArgumentException("the network takes " + net.inputChannels + " channels");
+        }
         float inputScale = HdrTransfer.autoexposure(color, width, height);
         float outputScale = inputScale != 0 ? 1 / inputScale : 0;
-        Input input = new Input(width, height, color, albedo, albedo == null ? null : normal, inputScale);
+        Input input = new Input(width, height, color, net.inputChannels > 3 ? albedo : null, net.inputChannels > 6 ? normal : null, inputScale);
         float[] out = new float[3 * width * height];
         int paddedH = roundUp(height), paddedW = roundUp(width);
-        int tileH = paddedH, tileW = paddedW;
-        if ((long) paddedH * paddedW > maxTilePixels) {
-            int side = Math.max(MIN_TILE, (int) Math.sqrt((double) maxTilePixels) / UNet.ALIGNMENT * UNet.ALIGNMENT);
-            tileH = Math.min(paddedH, side);
-            tileW = Math.min(paddedW, Math.max(side, (int) (maxTilePixels / tileH) / UNet.ALIGNMENT * UNet.ALIGNMENT));
-        }
-        int stepY = tileH == paddedH ? paddedH : tileH - 2 * UNet.OVERLAP;
-        int stepX = tileW == paddedW ? paddedW : tileW - 2 * UNet.OVERLAP;
+        int stepY = paddedH <= tileSide ? paddedH : tileSide - 2 * UNet.OVERLAP;
+        int stepX = paddedW <= tileSide ? paddedW : tileSide - 2 * UNet.OVERLAP;
         for (int y0 = 0; y0 < height; y0 += stepY) {
             for (int x0 = 0; x0 < width; x0 += stepX) {
                 int inY = Math.max(0, y0 - UNet.OVERLAP);

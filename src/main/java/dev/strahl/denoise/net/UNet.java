@@ -91,7 +91,8 @@ final class UNet {
         x = Resample.upsample(conv("dec_conv4b", conv("dec_conv4a", x, pool3)));
         x = Resample.upsample(conv("dec_conv3b", conv("dec_conv3a", x, pool2)));
         x = Resample.upsample(conv("dec_conv2b", conv("dec_conv2a", x, pool1)));
-        return conv("dec_conv0", conv("dec_conv1b", conv("dec_conv1a", x, input)));
+        x = conv("dec_conv1a", x, input);               // the upsampled maps (64 channels at full size) are garbage now
+        return conv("dec_conv0", conv("dec_conv1b", x));
     }
 
     private FeatureMap conv(String name, FeatureMap... sources) {
