@@ -11,7 +11,7 @@ import java.util.stream.IntStream;
  * order on both paths and any thread count, so the result is the same bits everywhere:
  * <ul>
  *   <li>{@link ConvLanes} (with the Vector API, {@code --add-modules jdk.incubator.vector}): output
- *       pixels across the lanes, four output channels and two vectors of pixels per step held in
+ *       pixels across the lanes, eight output channels by two vectors of pixels summed in
  *       registers;</li>
  *   <li>the scalar twin here: per row strip, all output channels' sums in arrays, updated three
  *       taps at a time by loops that HotSpot vectorizes itself (every array indexed alike, so it
@@ -32,7 +32,7 @@ final class Conv3x3 {
     final int outputs;
     /** Weights in OIDN's order [output][input][ky][kx]. */
     final float[] weights;
-    /** The same, blocked for {@link ConvLanes}: [output / 4][input][ky][kx][output % 4], zeros past the last output. */
+    /** The same, blocked for {@link ConvLanes}: [output / 8][input][ky][kx][output % 8], zeros past the last output. */
     final float[] blocked;
     final float[] bias;
 
@@ -46,11 +46,10 @@ final class Conv3x3 {
         this.outputs = outputs;
         this.weights = weights.clone();
         this.bias = bias.clone();
-        int blocks = (outputs + 3) / 4;
-        blocked = new float[blocks * inputs * 9 * 4];
+        blocked = new float[(outputs + 7) / 8 * inputs * 9 * 8];
         for (int o = 0; o < outputs; o++) {
             for (int i = 0; i < inputs * 9; i++) {
-                blocked[((o / 4) * inputs * 9 + i) * 4 + o % 4] = weights[o * inputs * 9 + i];
+                blocked[((o / 8) * inputs * 9 + i) * 8 + o % 8] = weights[o * inputs * 9 + i];
             }
         }
     }

@@ -119,6 +119,19 @@ class NeuralDenoiserTest {
     }
 
     @Test
+    void theSameBitsOnOneThreadAsOnAll() throws Exception {
+        Fixture f = fixture("cornell-glossy-37x53.exr");
+        float[] all = NeuralDenoiser.create().denoise(f.width(), f.height(), f.color(), f.albedo(), f.normal());
+        java.util.concurrent.ForkJoinPool one = new java.util.concurrent.ForkJoinPool(1);
+        try {
+            float[] single = one.submit(() -> NeuralDenoiser.create().denoise(f.width(), f.height(), f.color(), f.albedo(), f.normal())).get();
+            assertThat(single).isEqualTo(all);
+        } finally {
+            one.shutdown();
+        }
+    }
+
+    @Test
     void tilesGiveTheSameBitsAsOneWholeImage() {
         int w = 300, h = 170;                           // 304x176 padded: 5 x 1 tiles of 256
         SplittableRandom r = new SplittableRandom(5);
