@@ -141,14 +141,19 @@ public final class NeuralDenoiser {
             String file = n + ".tza";
             try (InputStream in = NeuralDenoiser.class.getResourceAsStream(file)) {
                 if (in == null) {
-                    throw new IOException("strahl's denoiser: the weights " + file + " are missing from the strahl jar (dev/strahl/denoise/net/)");
+                    throw failure("the weights " + file + " are missing from the strahl jar (dev/strahl/denoise/net/)", null);
                 }
                 return new UNet(TensorArchive.read(file, in.readAllBytes()), file, inputChannels);
             } catch (TensorArchiveException e) {
-                throw new UncheckedIOException(new IOException("strahl's denoiser: damaged weights: " + e.getMessage(), e));
+                throw failure("damaged weights: " + e.getMessage(), e);
             } catch (IOException e) {
-                throw new UncheckedIOException(e);
+                throw failure("cannot read the weights " + file + ": " + e.getMessage(), e);
             }
         });
+    }
+
+    private static UncheckedIOException failure(String what, IOException cause) {
+        String message = "strahl's denoiser: " + what;
+        return new UncheckedIOException(message, cause != null ? cause : new IOException(message));
     }
 }

@@ -1,6 +1,7 @@
 package dev.strahl.denoise.net;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import dev.strahl.io.exr.ExrReader;
 import dev.strahl.io.image.ChannelImage;
@@ -116,6 +117,17 @@ class NeuralDenoiserTest {
             data[order[i]] *= factor;
         }
         return new UNet(archive, "changed", 9);
+    }
+
+    @Test
+    void missingOrDamagedWeightsAreOneLine() {
+        assertThatThrownBy(() -> NeuralDenoiser.network("rt_missing", 9)).isInstanceOf(java.io.UncheckedIOException.class)
+                .hasMessage("strahl's denoiser: the weights rt_missing.tza are missing from the strahl jar"
+                        + " (dev/strahl/denoise/net/)");
+        // the first 1000 bytes of rt_hdr.tza, a test resource beside the real ones
+        assertThatThrownBy(() -> NeuralDenoiser.network("cut-short", 3)).isInstanceOf(java.io.UncheckedIOException.class)
+                .hasMessage("strahl's denoiser: damaged weights: cut-short.tza: truncated: the tensor table is at"
+                        + " offset 1829504, the file has 1000 bytes");
     }
 
     @Test
