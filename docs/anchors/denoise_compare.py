@@ -7,7 +7,7 @@
 SCENE defaults to the five Cornell variants in scenes/. Renders with `java -jar target/strahl.jar`
 (set STRAHL to another command), 256x256, into WORKDIR (files already there are reused):
   NAME-ref.pfm      the reference: 1024 spp, seed 7 (for cornell-box: Mitsuba's 8192 spp 512x512
-                    reference in /work/shared/refs or $STRAHL_REFS, box-filtered 2x2, when present)
+                    reference in $STRAHL_REFS, box-filtered 2x2, when present)
   NAME-256.pfm      the raw image at 256 spp, seed 1
   NAME-16.pfm       16 spp, seed 1, with NAME-16.albedo.pfm, .normal.pfm, .depth.pfm (--aov)
   NAME-16-strahl.pfm  the same 16 spp render denoised by strahl (--denoise), its time from the log
@@ -29,7 +29,7 @@ import struct
 import numpy as np
 
 STRAHL = shlex.split(os.environ.get("STRAHL", "java -jar target/strahl.jar"))
-REFS = os.environ.get("STRAHL_REFS", "/work/shared/refs")
+REFS = os.environ.get("STRAHL_REFS", "")          # a folder with Mitsuba's 512x512 Cornell reference, if you have one
 SCENES = ["cornell-box", "cornell-sphere", "cornell-mirror", "cornell-glossy", "cornell-empty-rg"]
 SIZE = ["--width", "256", "--height", "256"]
 
@@ -98,7 +98,7 @@ def main():
         p = lambda suffix: os.path.join(work, name + suffix)
         if not os.path.exists(p("-ref.pfm")):
             mitsuba = os.path.join(REFS, "cornell-original_maxdepth-inf_8192spp.pfm")
-            if name == "cornell-box" and os.path.exists(mitsuba):
+            if name == "cornell-box" and REFS and os.path.exists(mitsuba):
                 m = read_pfm(mitsuba)
                 write_pfm(p("-ref.pfm"), m.reshape(256, 2, 256, 2, 3).mean(axis=(1, 3)))
             else:

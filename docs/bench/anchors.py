@@ -10,7 +10,7 @@
    `llvm_ad_rgb` needs Debian's libllvm19; if it cannot be loaded the script says so and goes on
    with `scalar_rgb` alone.
 2. `strahl bench --export-rays DIR` writes the triangles and the three ray sets of every mesh
-   (the Cornell Box and the three meshes of --data, the very rays bench traces: same seeds, same
+   (the Cornell Box, the three generated meshes and, with --data, the Stanford meshes: the very rays bench traces: same seeds, same
    count), and Embree 4, through the `embreex` package, traces them one ray at a time
    (`rtcIntersect1` / `rtcOccluded1` in embreex's Cython loop, one thread): rays/s per core,
    median of --runs. Embree's BVH build is timed as creating the scene, adding the mesh and the
@@ -134,8 +134,7 @@ def main():
     ap.add_argument('--out', default='anchors.json')
     ap.add_argument('--java', default='java')
     ap.add_argument('--jar', default=os.path.join(REPO, 'target', 'strahl.jar'))
-    ap.add_argument('--data', default=os.path.join(os.path.dirname(REPO), 'shared', 'data'),
-                    help='directory with meshes/ (default: ../shared/data, as strahl bench)')
+    ap.add_argument('--data', help='also the Stanford meshes under DIR/meshes, as strahl bench --data (research-only data)')
     ap.add_argument('--rays', type=int, default=1 << 20, help='rays per set (strahl bench: 2^20)')
     ap.add_argument('--runs', type=int, default=5, help='timed Embree runs per figure')
     ap.add_argument('--threads', type=int, default=2, help='Mitsuba render threads')
@@ -168,8 +167,9 @@ def main():
         work = args.work or tempfile.mkdtemp(prefix='strahl-anchors-')
         os.makedirs(work, exist_ok=True)
         print(f'anchors: strahl bench --export-rays {work}', file=sys.stderr)
+        data = ['--data', args.data] if args.data else []
         subprocess.run([args.java, '-jar', args.jar, 'bench', '--export-rays', work, '--rays', str(args.rays),
-                        '--data', args.data, '--cornell', os.path.join(REPO, 'scenes', 'cornell-box.json')], check=True,
+                        *data, '--cornell', os.path.join(REPO, 'scenes', 'cornell-box.json')], check=True,
                        stdout=sys.stderr)
         result['embree'] = {'binding': f"embreex {version('embreex')}, rtcIntersect1/rtcOccluded1 per ray, 1 thread",
                             'rays_per_set': args.rays, 'meshes': {}}

@@ -15,9 +15,8 @@ cd "$(dirname "$0")/../.."
 start=$(date +%s)
 mvn -B -q -DskipTests package
 mvn -B -q dependency:build-classpath -Dmdep.includeScope=test -Dmdep.outputFile=target/experiments.classpath
-data=${STRAHL_DATA:-../shared/data}
 set -- "$@"
-if [ -d "$data" ]; then set -- "$@" --data "$data"; fi
+if [ -n "${STRAHL_DATA:-}" ]; then set -- "$@" --data "$STRAHL_DATA"; fi
 java -Xmx2g -Djava.awt.headless=true -cp "target/classes:target/test-classes:$(cat target/experiments.classpath)" \
     dev.strahl.experiments.Experiments docs/experiments . "$@"
 echo "docs/experiments/run.sh: $(( $(date +%s) - start )) s in all"

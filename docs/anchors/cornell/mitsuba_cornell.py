@@ -19,7 +19,7 @@ delete-one jackknife standard errors over runs.  Outputs go to --out:
 Renders are deterministic for a given seed, sampler and Mitsuba variant.
 
 The scene is built from the OBJ/MTL files with the conventions of
-/work/shared/docs/DESIGN.md section 3 (see NOTES.md next to this script).
+docs/conventions.md (see NOTES.md next to this script).
 
 Usage (defaults shown):
     python3 mitsuba_cornell.py --variants Original Empty-RG Mirror Sphere Glossy \
@@ -39,7 +39,8 @@ import time
 
 import numpy as np
 
-DATA = '/work/shared/data/cornell'
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+DATA = os.path.join(REPO, 'src', 'test', 'resources', 'cornell')     # the public-domain Williams College files
 VARIANTS = ['Original', 'Empty-RG', 'Mirror', 'Sphere', 'Glossy']
 CAMERAS = {  # origin, target (up = +Y, vertical fov 40 deg) -- DESIGN.md section 3
     'Original': ((0, 1, 3.9), (0, 1, 0)),
@@ -49,7 +50,7 @@ CAMERAS = {  # origin, target (up = +Y, vertical fov 40 deg) -- DESIGN.md sectio
     'Glossy':   ((0, 0.8, 3.9), (0, 0.8, 0)),
 }
 VFOV = 40.0
-REF_ORIGINAL_128 = '/work/shared/refs/cornell-original_maxdepth-inf_128.pfm'
+REF_ORIGINAL_128 = os.path.join(REPO, 'src', 'test', 'resources', 'golden', 'cornell-original_maxdepth-inf_128.pfm')
 
 
 def light_pixel_mask(variant, res):

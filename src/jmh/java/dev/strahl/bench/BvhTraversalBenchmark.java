@@ -25,7 +25,7 @@ import org.openjdk.jmh.annotations.Warmup;
 /**
  * BVH traversal: closest hit and any hit of incoherent rays (origins uniform in the scene's
  * bounds, directions uniform on the sphere). {@code scene} is any scene file strahl loads, e.g.
- * {@code -p scene=../shared/data/meshes/bunny/bun_zipper.ply}.
+ * {@code -p scene=DATA/meshes/bunny/bun_zipper.ply} (DATA: the folder of {@code strahl bench --data}).
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.AverageTime)

@@ -1,6 +1,8 @@
 package dev.strahl.cli;
 
 import dev.strahl.bench.BenchAnchors;
+import dev.strahl.bench.BenchMeshes;
+import dev.strahl.io.mesh.MeshFiles;
 import dev.strahl.bench.BenchRays;
 import dev.strahl.bench.BenchProgress;
 import dev.strahl.bench.BenchReport;
@@ -47,18 +49,12 @@ import picocli.CommandLine.Spec;
             "bytes per triangle and ray rates, on 1 and all threads; checks every result; prints a table."},
         sortOptions = false)
 final class BenchCommand implements Callable<Integer> {
-    /** Whole-image mean (R, G, B) of the Mitsuba reference of the Cornell Box, 512², unbounded depth (../shared/refs/README.md). */
+    /** Whole-image mean (R, G, B) of the Mitsuba reference of the Cornell Box, 512², unbounded depth (src/test/resources/golden/README.md). */
     static final double[] CORNELL_REFERENCE_MEAN = {0.18660, 0.12082, 0.03439};
     /** How far the Cornell image's mean may stray from the reference's: far above the noise of a few spp over 512² pixels. */
     static final double CORNELL_MEAN_TOLERANCE = 0.02;
-
-    /** Loads a mesh file as a scene; a seam for tests and for formats added later. */
-    @FunctionalInterface
-    interface MeshLoader {
-        Scene load(Path file) throws SceneException;
-    }
-
-    static MeshLoader loader = SceneLoader::load;
+    /** The scanned meshes under {@code --data DIR/meshes}: research-only, never in the repository. */
+    static final List<String> STANFORD_MESHES = List.of("bunny/bun_zipper.ply", "dragon/dragon_100k.ply", "bunny/bunny_midpoint-sub2_1.1M.ply");
 
     @Spec
     CommandSpec spec;
@@ -78,10 +74,11 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--cornell", defaultValue = "scenes/cornell-box.json", paramLabel = "FILE", description = "The Cornell Box scene (default: ${DEFAULT-VALUE}).")
     Path cornell;
 
-    @Option(names = "--data", defaultValue = "../shared/data", paramLabel = "DIR", description = "Directory with meshes/ of the benchmark meshes (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--data", paramLabel = "DIR", description = {"Also benchmark the Stanford meshes in DIR/meshes (bunny/bun_zipper.ply,",
+        "dragon/dragon_100k.ply, bunny/bunny_midpoint-sub2_1.1M.ply), where present: research-only data, not part of strahl."})
     Path data;
 
-    @Option(names = "--mesh", paramLabel = "FILE", description = "Benchmark these meshes instead of the default three (repeatable).")
+    @Option(names = "--mesh", paramLabel = "FILE", description = "Benchmark these mesh files instead of the generated meshes (repeatable).")
     List<Path> meshes;
 
     @Option(names = "--no-cornell", description = "Skip the Cornell Box render.")
@@ -115,8 +112,15 @@ final class BenchCommand implements Callable<Integer> {
             err.println("strahl: --threads must be positive, got " + counts.first());
             return 2;
         }
-        List<Path> meshFiles = meshes != null ? meshes : List.of(data.resolve("meshes/bunny/bun_zipper.ply"),
-                data.resolve("meshes/dragon/dragon_100k.ply"), data.resolve("meshes/bunny/bunny_midpoint-sub2_1.1M.ply"));
+        List<Path> meshFiles = new ArrayList<>(meshes != null ? meshes : List.of());
+        if (data != null) {
+            for (String name : STANFORD_MESHES) {
+                Path file = data.resolve("meshes").resolve(name);
+                if (java.nio.file.Files.isRegularFile(file)) {
+                    meshFiles.add(file);
+                }
+            }
+        }
         BenchResults r = BenchReport.machine(quick, timedRuns);
         r.raysPerSet = raysPerSet != null ? raysPerSet : quick ? 1 << 17 : 1 << 20;
         if (r.raysPerSet < 1) {
@@ -150,22 +154,30 @@ final class BenchCommand implements Callable<Integer> {
             if (!noCornell && exportRays == null) {
                 cornell(box, counts, timedRuns, r, failures);
             }
-            List<Object[]> sets = new ArrayList<>();
+            List<MeshSet> sets = new ArrayList<>();
             if (meshes == null && box != null) {
-                sets.add(new Object[] {"cornell-box", cornell, box, 0.0});
+                sets.add(new MeshSet("cornell-box", cornell.toString(), box, 0));
+            }
+            if (meshes == null) {
+                for (BenchMeshes.Generated generated : BenchMeshes.defaults()) {
+                    progress.step("generating " + generated.name());
+                    long t0 = System.nanoTime();
+                    Scene s = Scene.builder().addMesh(generated.mesh().get(), MeshFiles.DEFAULT_MATERIAL).build();
+                    sets.add(new MeshSet(generated.name(), generated.description(), s, seconds(t0) - World.of(s).bvhBuildSeconds()));
+                }
             }
             for (Path file : meshFiles) {
                 progress.step("loading " + file.getFileName());
                 try {
                     long t0 = System.nanoTime();
-                    Scene s = loader.load(file);
-                    sets.add(new Object[] {name(file), file, s, (System.nanoTime() - t0) * 1e-9 - World.of(s).bvhBuildSeconds()});
+                    Scene s = SceneLoader.load(file);
+                    sets.add(new MeshSet(name(file), file.toString(), s, seconds(t0) - World.of(s).bvhBuildSeconds()));
                 } catch (SceneException e) {
                     r.skipped.add(name(file) + ": " + e.getMessage());
                 }
             }
-            for (Object[] set : sets) {
-                mesh((String) set[0], (Path) set[1], (Scene) set[2], (Double) set[3], counts, timedRuns, pool, r, failures);
+            for (MeshSet set : sets) {
+                mesh(set, counts, timedRuns, pool, r, failures);
             }
         } catch (SceneException e) {
             progress.done();
@@ -204,6 +216,13 @@ final class BenchCommand implements Callable<Integer> {
             err.println("strahl: check failed: " + f);
         }
         return failures.isEmpty() ? 0 : 1;
+    }
+
+    /** A mesh to measure: its name in the results, where it came from (a file or how it was generated), the scene, its load time. */
+    private record MeshSet(String name, String source, Scene scene, double loadSeconds) {}
+
+    private static double seconds(long since) {
+        return (System.nanoTime() - since) * 1e-9;
     }
 
     private static String name(Path file) {
@@ -282,13 +301,15 @@ final class BenchCommand implements Callable<Integer> {
     }
 
     /** One mesh: BVH builds, memory, then each ray set checked against brute force and timed per thread count. */
-    private void mesh(String name, Path file, Scene scene, double loadSeconds, TreeSet<Integer> counts, int timedRuns,
-                      ExecutorService pool, BenchResults r, List<String> failures) throws InterruptedException, IOException {
+    private void mesh(MeshSet mesh, TreeSet<Integer> counts, int timedRuns, ExecutorService pool, BenchResults r, List<String> failures)
+            throws InterruptedException, IOException {
+        String name = mesh.name();
+        Scene scene = mesh.scene();
         Geometry g = World.of(scene).geometry();
         if (exportRays != null) {
             progress.step(name + ": writing rays");
-            BenchRays.export(exportRays, name, file.toString(), g, raySets(scene, g, r.raysPerSet));
-            r.meshes.add(new BenchResults.Mesh(name, file.toString(), g.triangleCount(), loadSeconds, BenchResults.Stat.of(new double[] {0}), 0,
+            BenchRays.export(exportRays, name, mesh.source(), g, raySets(scene, g, r.raysPerSet));
+            r.meshes.add(new BenchResults.Mesh(name, mesh.source(), g.triangleCount(), mesh.loadSeconds(), BenchResults.Stat.of(new double[] {0}), 0,
                     List.of(), "exported"));
             return;
         }
@@ -334,6 +355,6 @@ final class BenchCommand implements Callable<Integer> {
                 rays.add(new BenchResults.Rays(set.name(), t, BenchResults.Stat.of(rate), reference.hits(), set.count()));
             }
         }
-        r.meshes.add(new BenchResults.Mesh(name, file.toString(), g.triangleCount(), loadSeconds, BenchResults.Stat.of(build), bytes, rays, check));
+        r.meshes.add(new BenchResults.Mesh(name, mesh.source(), g.triangleCount(), mesh.loadSeconds(), BenchResults.Stat.of(build), bytes, rays, check));
     }
 }

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import dev.strahl.image.Image;
 import dev.strahl.io.image.PfmReader;
+import dev.strahl.testing.TestData;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintWriter;
@@ -27,8 +28,8 @@ import picocli.CommandLine;
 class RenderCommandTest {
 
     static final String CORNELL = Path.of("scenes", "cornell-box.json").toString();
-    /** The shared Williams College data, read in place. */
-    static final Path ORIGINAL = Path.of("..", "shared", "data", "cornell", "CornellBox-Original.obj");
+    /** The Williams College Cornell Box, from the test resources. */
+    static final Path ORIGINAL = TestData.cornell("CornellBox-Original.obj");
 
     /** A closed unit cube without any material: no emitter at all. */
     static final String CUBE_OBJ = """

@@ -12,6 +12,7 @@ import dev.strahl.render.RenderSettings;
 import dev.strahl.render.HemisphereSampling;
 import dev.strahl.scene.Scene;
 import dev.strahl.io.SceneLoader;
+import dev.strahl.testing.TestData;
 import java.nio.file.Path;
 import org.joml.Vector3d;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -67,7 +68,7 @@ class EstimatorAgreementTest {
     private static final double Z_MAX = 5;
 
     static Scene variant(String name) throws Exception {
-        Scene scene = SceneLoader.load(Path.of("../shared/data/cornell/CornellBox-" + name + ".obj"));
+        Scene scene = SceneLoader.load(TestData.cornell("CornellBox-" + name + ".obj"));
         double y = name.equals("Sphere") || name.equals("Glossy") ? 0.8 : 1;
         return scene.withCamera(new Camera(new Vector3d(0, y, 3.9), new Vector3d(0, y, 0), new Vector3d(0, 1, 0), 40));
     }

@@ -19,6 +19,7 @@ import dev.strahl.material.Mirror;
 import dev.strahl.image.Rgb;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.testing.Renders;
+import dev.strahl.testing.TestData;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -34,8 +35,8 @@ class SceneLoaderTest {
 
     static final Path SHIPPED_OBJ = Path.of("scenes", "cornell-box.obj");
     static final Path SHIPPED_JSON = Path.of("scenes", "cornell-box.json");
-    /** The shared Williams College data, read in place. */
-    static final Path ORIGINAL = ObjReaderTest.CORNELL.resolve("CornellBox-Original.obj");
+    /** The Williams College Cornell Box, from the test resources. */
+    static final Path ORIGINAL = TestData.cornell("CornellBox-Original.obj");
 
     private static final String SQUARE = """
             v 0 0 0

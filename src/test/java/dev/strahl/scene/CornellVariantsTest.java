@@ -21,6 +21,7 @@ import dev.strahl.image.Rgb;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.HemisphereSampling;
 import dev.strahl.testing.Renders;
+import dev.strahl.testing.TestData;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -39,8 +40,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * The five Cornell Box variants shipped in scenes/, each checked against the public-domain
- * Williams College data it was authored from (read in place in ../shared/data/cornell, never
- * copied): DESIGN.md §3's camera, every material by the MTL → BSDF table, every surface's area
+ * Williams College data it was authored from (src/test/resources/cornell): DESIGN.md §3's camera, every material by the MTL → BSDF table, every surface's area
  * and bounds, the analytic spheres against the data's tessellated ones, closed boxes, walls
  * facing in and lights facing down, and a small render.
  */
@@ -320,7 +320,7 @@ class CornellVariantsTest {
     }
 
     private static Path dataFile(Variant v, String extension) {
-        return ObjReaderTest.CORNELL.resolve("CornellBox-" + v.data() + extension);
+        return TestData.cornell("CornellBox-" + v.data() + extension);
     }
 
     /** DESIGN.md §3's MTL → BSDF table, written out independently of the loader. */

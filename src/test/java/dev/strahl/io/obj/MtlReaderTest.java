@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.fail;
 
 import dev.strahl.scene.SceneException;
 import dev.strahl.image.Rgb;
+import dev.strahl.testing.TestData;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -133,7 +134,7 @@ class MtlReaderTest {
 
     @Test
     void cornellOriginalMaterials() throws Exception {
-        Map<String, MtlMaterial> materials = MtlReader.read(ObjReaderTest.CORNELL.resolve("CornellBox-Original.mtl"), warnings);
+        Map<String, MtlMaterial> materials = MtlReader.read(TestData.cornell("CornellBox-Original.mtl"), warnings);
         assertThat(materials.keySet()).containsExactly(
                 "leftWall", "rightWall", "floor", "ceiling", "backWall", "shortBox", "tallBox", "light");
         assertThat(materials.get("leftWall").kd()).isEqualTo(new Rgb(0.63, 0.065, 0.05));
@@ -191,7 +192,7 @@ class MtlReaderTest {
     /** Random edits of a real MTL file: every outcome is a map of materials or a SceneException. */
     @Test
     void mutatedInputGivesMaterialsOrASceneExceptionNeverAnythingElse() throws Exception {
-        String seed = Files.readString(ObjReaderTest.CORNELL.resolve("CornellBox-Glossy.mtl"));
+        String seed = Files.readString(TestData.cornell("CornellBox-Glossy.mtl"));
         String alphabet = "0123456789-+. \t\n#eExKdsNi\u0000\u00e9";
         var random = new SplittableRandom(3);
         for (int round = 0; round < 2000; round++) {

@@ -9,6 +9,7 @@ import dev.strahl.io.text.HeapBudget;
 import dev.strahl.scene.SceneException;
 import dev.strahl.scene.TriangleMesh;
 import dev.strahl.image.Rgb;
+import dev.strahl.testing.TestData;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -28,8 +29,6 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 public class ObjReaderTest {
 
-    /** The shared Cornell Box data, read in place (never copied into the repository). */
-    public static final Path CORNELL = Path.of("..", "shared", "data", "cornell");
 
     private static final String SQUARE = """
             v 0 0 0
@@ -301,7 +300,7 @@ public class ObjReaderTest {
     @Test
     void cornellOriginalIs18QuadsWithAWarmLightFacingDown() throws Exception {
         // 5 walls + 6 faces of each box + the light = 18 quads ("f" lines), 2 triangles each
-        ObjModel model = ObjReader.read(CORNELL.resolve("CornellBox-Original.obj"));
+        ObjModel model = ObjReader.read(TestData.cornell("CornellBox-Original.obj"));
         assertThat(model.mesh().triangleCount()).isEqualTo(36);
         assertThat(model.warnings()).isEmpty();
         assertThat(model.materials()).extracting(MtlMaterial::name).containsExactly(
@@ -328,7 +327,7 @@ public class ObjReaderTest {
     })
     void everyCornellVariantLoadsWithoutWarnings(String file, int triangles) throws Exception {
         // counts: quads count twice, the spheres are triangles ("f" lines of the files)
-        ObjModel model = ObjReader.read(CORNELL.resolve(file));
+        ObjModel model = ObjReader.read(TestData.cornell(file));
         assertThat(model.mesh().triangleCount()).isEqualTo(triangles);
         assertThat(model.warnings()).isEmpty();
         assertThat(model.materials()).extracting(MtlMaterial::name).contains("light").doesNotContain("default");
@@ -478,7 +477,7 @@ public class ObjReaderTest {
     void mutatedInputGivesAModelOrASceneExceptionNeverAnythingElse() throws Exception {
         write("m.mtl", "newmtl a\nKd 1 0 0\nKe 1 1 1\n");
         List<String> seeds = List.of(
-                Files.readString(CORNELL.resolve("CornellBox-Original.obj")),
+                Files.readString(TestData.cornell("CornellBox-Original.obj")),
                 "mtllib m.mtl\n" + SQUARE + "usemtl a\nf 1/1/1 2/2/1 3/1/1\nf -4//-1 -3//-1 -1//-1\nf 1/2 2/1 3/2 4/1\n");
         String alphabet = "0123456789-+./ \t\n\r#\\ve+fnt\u0000\u00e9eEx";
         var random = new SplittableRandom(42);

@@ -14,7 +14,7 @@ import java.util.Arrays;
  * <pre>
  * mvn -B -q test-compile
  * java -Xmx1g -cp target/classes:target/test-classes:$HOME/.m2/repository/org/joml/joml/1.10.8/joml-1.10.8.jar \
- *      dev.strahl.io.ply.PlyLoadFigures ../shared/data/meshes/bunny/bunny_midpoint-sub2_1.1M.ply 7
+ *      dev.strahl.io.ply.PlyLoadFigures DATA/meshes/bunny/bunny_midpoint-sub2_1.1M.ply 7     (DATA: the folder of strahl bench --data)
  * </pre>
  * Prints the first (cold) load, the median and minimum of the following loads, the heap the mesh
  * keeps (used heap after a GC with the mesh alive, minus before) and the peak heap of the pools

@@ -2,6 +2,7 @@ package dev.strahl.io.ply;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import dev.strahl.bench.BenchMeshes;
 import dev.strahl.io.mesh.MeshFiles;
 import dev.strahl.scene.TestScenes;
 import dev.strahl.io.SceneLoader;
@@ -18,6 +19,8 @@ import dev.strahl.io.ply.PlyHeader.Format;
 import dev.strahl.io.ply.PlyHeader.Type;
 import dev.strahl.testing.Renders;
 import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -30,8 +33,6 @@ import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.EnumSource;
 
 class PlyReaderTest {
-    static final Path MESHES = Path.of("..", "shared", "data", "meshes");
-
     @TempDir
     Path dir;
 
@@ -152,27 +153,51 @@ class PlyReaderTest {
         assertThat(read(PlyFiles.write(f, mesh)).mesh()).isEqualTo(expected(mesh.subList(1, 3)));
     }
 
-    // ---- the shared meshes -------------------------------------------------------------------------
+    // ---- meshes of a scanned model's size and layout -------------------------------------------
 
-    @ParameterizedTest
-    @CsvSource({
-        "bunny/bun_zipper.ply,                  35947,  69451,  false",
-        "bunny/bunny_midpoint-sub2_1.1M.ply,    557164, 1111216, false",
-        "dragon/dragon_100k.ply,                50000,  100000, true"})
-    void theSharedMeshesLoadWithTheirCounts(String name, int vertices, int triangles, boolean normals) throws Exception {
-        PlyReader.PlyModel model = PlyReader.read(MESHES.resolve(name));
-        assertThat(model.mesh().vertexCount()).isEqualTo(vertices);
-        assertThat(model.mesh().triangleCount()).isEqualTo(triangles);
-        assertThat(model.mesh().normals() != null).isEqualTo(normals);
+    /** 1.1 M triangles in the layout of the subdivided Stanford bunny: binary, float x y z, uchar count + int indices. */
+    @Test
+    void aMillionTrianglesInBinaryLoadExactly() throws Exception {
+        TriangleMesh mesh = BenchMeshes.displacedSphere(303);
+        assertThat(mesh.triangleCount()).isGreaterThan(1_000_000);
+        ByteBuffer body = ByteBuffer.allocate(12 * mesh.vertexCount() + 13 * mesh.triangleCount()).order(ByteOrder.LITTLE_ENDIAN);
+        float[] positions = mesh.positions();          // the accessors return copies: take each once
+        int[] indices = mesh.indices();
+        for (float p : positions) {
+            body.putFloat(p);
+        }
+        for (int t = 0; t < indices.length; t += 3) {
+            body.put((byte) 3).putInt(indices[t]).putInt(indices[t + 1]).putInt(indices[t + 2]);
+        }
+        String header = "ply\nformat binary_little_endian 1.0\nelement vertex " + mesh.vertexCount()
+                + "\nproperty float x\nproperty float y\nproperty float z\nelement face " + mesh.triangleCount()
+                + "\nproperty list uchar int vertex_indices\nend_header\n";
+        Path file = dir.resolve("big.ply");
+        Files.write(file, concat(header.getBytes(StandardCharsets.US_ASCII), body.array()));
+        PlyReader.PlyModel model = PlyReader.read(file);
+        assertThat(model.mesh().positions()).isEqualTo(positions);
+        assertThat(model.mesh().indices()).isEqualTo(indices);
         assertThat(model.warnings()).isEmpty();
     }
 
+    /** 69 k triangles in the layout of the scanned Stanford bunny: ASCII, x y z confidence intensity per vertex. */
     @Test
-    void theAsciiBunnyHasTheCoordinatesOfItsFirstLine() throws Exception {
-        float[] p = PlyReader.read(MESHES.resolve("bunny/bun_zipper.ply")).mesh().positions();
-        assertThat(p[0]).isEqualTo(-0.0378297f);
-        assertThat(p[1]).isEqualTo(0.12794f);
-        assertThat(p[2]).isEqualTo(0.00447467f);
+    void aScanSizedAsciiMeshWithExtraPropertiesLoadsExactly() throws Exception {
+        TriangleMesh mesh = BenchMeshes.displacedSphere(76);
+        StringBuilder text = new StringBuilder("element vertex " + mesh.vertexCount() + "\nproperty float x\nproperty float y\nproperty float z\n"
+                + "property float confidence\nproperty float intensity\nelement face " + mesh.triangleCount()
+                + "\nproperty list uchar int vertex_indices\nend_header\n");
+        float[] p = mesh.positions();
+        for (int v = 0; v < mesh.vertexCount(); v++) {
+            text.append(p[3 * v]).append(' ').append(p[3 * v + 1]).append(' ').append(p[3 * v + 2]).append(" 1 0.5\n");
+        }
+        int[] i = mesh.indices();
+        for (int t = 0; t < mesh.triangleCount(); t++) {
+            text.append("3 ").append(i[3 * t]).append(' ').append(i[3 * t + 1]).append(' ').append(i[3 * t + 2]).append('\n');
+        }
+        PlyReader.PlyModel model = read(ascii(text.toString()));
+        assertThat(model.mesh().positions()).isEqualTo(p);
+        assertThat(model.mesh().indices()).isEqualTo(i);
     }
 
     @Test
@@ -193,6 +218,12 @@ class PlyReaderTest {
         Path file = dir.resolve("mesh.ply");
         Files.write(file, content);
         return PlyReader.read(file);
+    }
+
+    private static byte[] concat(byte[] a, byte[] b) {
+        byte[] all = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, all, a.length, b.length);
+        return all;
     }
 
     static byte[] ascii(String afterFormat) {
