@@ -88,8 +88,9 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--denoise", description = "Denoise the image before writing it (the feature buffers are then rendered too).")
     boolean denoise;
 
-    @Option(names = "--denoiser", defaultValue = "strahl", paramLabel = "strahl|oidn",
-            description = "With --denoise: strahl's own (pure Java, the default) or Intel Open Image Denoise's oidnDenoise found on the PATH.")
+    @Option(names = "--denoiser", defaultValue = "network", paramLabel = "network|atrous|oidn",
+            description = "With --denoise: network (the default: Intel Open Image Denoise's trained network, run in pure Java),"
+                    + " atrous (a fast, blurrier wavelet filter; its old name strahl works too) or oidn (OIDN's oidnDenoise found on the PATH).")
     String denoiserName;
 
     @Option(names = "--tonemap", defaultValue = "clamp", paramLabel = "clamp|aces|agx",
@@ -196,6 +197,7 @@ final class RenderCommand implements Callable<Integer> {
     private double bvhSeconds;
     private ImageWriters.Options writeOptions;
     private OidnDenoiser oidn;
+    private Denoiser denoiser;
     /** The feature buffers to write (those the denoiser needs are rendered also when not written). */
     private Set<Aov> written = Set.of();
 
@@ -232,11 +234,11 @@ final class RenderCommand implements Callable<Integer> {
         RenderSettings settings = settings();
         checkClusterOptions();
         writeOptions = writeOptions();
-        if (!denoiserName.equals("strahl") && !denoiserName.equals("oidn")) {
-            throw new IllegalArgumentException("--denoiser must be strahl or oidn, got '" + denoiserName + "'");
-        }
-        if (denoise && denoiserName.equals("oidn")) {
-            oidn = OidnDenoiser.onPath();
+        switch (denoiserName) {
+            case "network" -> denoiser = Denoiser.create();
+            case "atrous", "strahl" -> denoiser = Denoiser.atrous();
+            case "oidn" -> oidn = denoise ? OidnDenoiser.onPath() : null;
+            default -> throw new IllegalArgumentException("--denoiser must be network, atrous or oidn, got '" + denoiserName + "'");
         }
         if (fov != null && !(fov > 0 && fov < 180)) {
             throw new IllegalArgumentException("--fov: the field of view must be in (0, 180) degrees, got " + fov);
@@ -477,9 +479,11 @@ final class RenderCommand implements Callable<Integer> {
             long t0 = System.nanoTime();
             Image clean;
             try {
-                clean = oidn != null ? oidn.denoise(buffers) : Denoiser.create().denoise(buffers);
+                clean = oidn != null ? oidn.denoise(buffers) : denoiser.denoise(buffers);
             } catch (IOException e) {
                 throw new RenderFailure("oidnDenoise failed: " + e.getMessage(), e);
+            } catch (UncheckedIOException e) {                 // the network's weights missing or damaged in the jar
+                throw new RenderFailure(e.getMessage(), e);
             }
             denoiseSeconds = (System.nanoTime() - t0) * 1e-9;
             buffers = buffers.withColor(clean);
@@ -515,7 +519,7 @@ final class RenderCommand implements Callable<Integer> {
                     settings.integrator().id(), settings.width(), settings.height(), stats.samplesPerPixel(), stats.seconds(),
                     Units.si(stats.samplesPerSecond()), Units.si(stats.raysPerSecond()), stats.threads(), output));
             if (denoise) {
-                err.println(String.format(Locale.ROOT, "strahl: denoised with %s in %.2f s", oidn != null ? "oidnDenoise" : "strahl's denoiser",
+                err.println(String.format(Locale.ROOT, "strahl: denoised with %s in %.2f s", oidn != null ? "oidnDenoise" : denoiser,
                         denoiseSeconds));
             }
         }
