@@ -73,7 +73,9 @@ final class Conv3x3 {
             throw new IllegalArgumentException(name + ": " + channels + " -> " + dst.channels + " channels, expected " + inputs + " -> " + outputs);
         }
         int h = dst.height;
-        int bands = Math.min(h, 8 * Runtime.getRuntime().availableProcessors());
+        // Bands of rows, at least 2048 pixels each (small maps are not worth a thread), 8 per processor at most.
+        int bands = (int) Math.max(1, Math.min(Math.min(h, 8 * Runtime.getRuntime().availableProcessors()),
+                (long) h * dst.width / 2048));
         IntStream.range(0, bands).parallel().forEach(b -> {
             int y0 = (int) ((long) b * h / bands);
             int y1 = (int) ((long) (b + 1) * h / bands);
@@ -85,39 +87,51 @@ final class Conv3x3 {
         });
     }
 
-    /** The scalar twin: rows y0..y1 in strips of at most {@link #STRIP} pixels. */
+    /**
+     * The scalar twin: rows y0..y1 in strips of about {@link #STRIP} pixels: a piece of one row
+     * if the map is wider, else several whole rows one after the other (long loops vectorize
+     * well; short ones also spoil the code HotSpot compiles for the long ones).
+     */
     void scalarRows(FeatureMap[] sources, FeatureMap dst, int y0, int y1) {
-        int strip = Math.min(STRIP, dst.width);
+        int piece = Math.min(STRIP, dst.width);
+        int rowsPerStrip = Math.max(1, Math.min(STRIP / dst.width, y1 - y0));
+        int strip = piece * rowsPerStrip;
         float[][] sums = new float[outputs][strip];
         float[] left = new float[strip];
         float[] centre = new float[strip];
         float[] right = new float[strip];
-        for (int y = y0; y < y1; y++) {
-            for (int x0 = 0; x0 < dst.width; x0 += strip) {
-                int n = Math.min(strip, dst.width - x0);
+        for (int y = y0; y < y1; y += rowsPerStrip) {
+            int rows = Math.min(rowsPerStrip, y1 - y);
+            for (int x0 = 0; x0 < dst.width; x0 += piece) {
+                int n = Math.min(piece, dst.width - x0);
+                int total = rows * n;
                 for (int o = 0; o < outputs; o++) {
-                    Arrays.fill(sums[o], 0, n, bias[o]);
+                    Arrays.fill(sums[o], 0, total, bias[o]);
                 }
                 int c = 0;
                 for (FeatureMap s : sources) {
                     for (int sc = 0; sc < s.channels; sc++, c++) {
                         for (int ky = 0; ky < 3; ky++) {
-                            int row = s.at(sc, y + ky - 1, x0 - 1);
-                            System.arraycopy(s.data, row, left, 0, n);
-                            System.arraycopy(s.data, row + 1, centre, 0, n);
-                            System.arraycopy(s.data, row + 2, right, 0, n);
+                            for (int r = 0; r < rows; r++) {
+                                int at = s.at(sc, y + r + ky - 1, x0 - 1);
+                                System.arraycopy(s.data, at, left, r * n, n);
+                                System.arraycopy(s.data, at + 1, centre, r * n, n);
+                                System.arraycopy(s.data, at + 2, right, r * n, n);
+                            }
                             for (int o = 0; o < outputs; o++) {
                                 int w = ((o * inputs + c) * 3 + ky) * 3;
-                                taps(sums[o], left, centre, right, weights[w], weights[w + 1], weights[w + 2], n);
+                                taps(sums[o], left, centre, right, weights[w], weights[w + 1], weights[w + 2], total);
                             }
                         }
                     }
                 }
                 for (int o = 0; o < outputs; o++) {
                     float[] sum = sums[o];
-                    int at = dst.at(o, y, x0);
-                    for (int x = 0; x < n; x++) {
-                        dst.data[at + x] = Math.max(sum[x], 0f);
+                    for (int r = 0; r < rows; r++) {
+                        int at = dst.at(o, y + r, x0);
+                        for (int x = 0; x < n; x++) {
+                            dst.data[at + x] = Math.max(sum[r * n + x], 0f);
+                        }
                     }
                 }
             }

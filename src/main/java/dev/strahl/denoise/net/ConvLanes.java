@@ -8,9 +8,10 @@ import jdk.incubator.vector.VectorSpecies;
  * across the lanes, eight output channels by two vectors of pixels summed in 16 registers over
  * all input channels and taps (each input vector loaded once for the eight channels, each weight
  * broadcast once for the two vectors), then the ReLU and one store each. Every lane does the
- * scalar twin's fused multiply-adds in the scalar twin's order, so both give the same bits;
- * pixels at the end of a row that fill no two vectors go to {@link Conv3x3#scalarPixels}. Only
- * loaded when the JVM has the module ({@link Conv3x3#LANES}).
+ * scalar twin's fused multiply-adds in the scalar twin's order, so both give the same bits. A
+ * row's last block ends at its last pixel (overlapping the block before when the width is no
+ * multiple of two vectors); rows narrower than two vectors go to {@link Conv3x3#scalarPixels}.
+ * Only loaded when the JVM has the module ({@link Conv3x3#LANES}).
  *
  * <p>Lanes: the platform's preferred width (512 bits with AVX-512), or 256 with
  * {@code -Dstrahl.denoise.lanes=256} (docs/denoising.md compares them). Eight channels by two
@@ -30,12 +31,13 @@ final class ConvLanes {
         for (int y = y0; y < y1; y++) {
             for (int o = 0; o < conv.outputs; o += 8) {
                 int count = Math.min(8, conv.outputs - o);
-                int x = 0;
-                for (; x + 2 * L <= width; x += 2 * L) {
-                    block(conv, sources, dst, o, count, y, x);
+                if (width < 2 * L) {
+                    conv.scalarPixels(sources, dst, o, count, y, 0, width);
+                    continue;
                 }
-                if (x < width) {
-                    conv.scalarPixels(sources, dst, o, count, y, x, width);
+                for (int x = 0; x < width; x += 2 * L) {
+                    // The last block ends at the row's end, overlapping the one before: its pixels get the same bits again.
+                    block(conv, sources, dst, o, count, y, Math.min(x, width - 2 * L));
                 }
             }
         }

@@ -63,7 +63,7 @@ class LayersTest {
 
     /** Sizes that fill whole vectors, end raggedly, or have no whole vector at all; 3 outputs (a part block). */
     @ParameterizedTest(name = "{0}+{1} -> {2} channels, {3}x{4}")
-    @CsvSource({"9, 0, 32, 40, 5", "16, 16, 20, 37, 6", "5, 3, 3, 7, 9", "32, 0, 64, 64, 3"})
+    @CsvSource({"9, 0, 32, 40, 5", "16, 16, 20, 37, 6", "5, 3, 3, 7, 9", "32, 0, 64, 64, 3", "3, 0, 8, 1, 4", "7, 2, 11, 600, 3"})
     void convolutionFollowsItsDefinitionOnBothPaths(int in1, int in2, int out, int w, int h) {
         FeatureMap[] sources = in2 == 0 ? new FeatureMap[] {random(in1, h, w, 1)}
                 : new FeatureMap[] {random(in1, h, w, 1), random(in2, h, w, 2)};
