@@ -34,7 +34,7 @@ import javax.swing.SwingUtilities;
 public class ViewerDenoiseShot {
     public static void main(String[] args) throws Exception {
         ViewerOptions o = new ViewerOptions(Path.of("scenes/cornell-box.json"), 384, 384, 16, -1, HemisphereSampling.COSINE, 0, 0,
-                IntegratorKind.PATH, 1, Theme.LIGHT, Set.of(), 100_000, 0, Set.of(), SceneOverrides.NONE);
+                IntegratorKind.PATH, 1, Theme.LIGHT, Set.of(), 100_000, 0, Set.of(), SceneOverrides.NONE, true);
         Viewer viewer = Viewer.open(o, (w, h) -> { });
         JFrame frame = onEdt(() -> {
             for (Frame f : Frame.getFrames()) {
