@@ -11,18 +11,21 @@ import java.util.EnumSet;
 import java.util.Locale;
 
 /**
- * Wall time of one denoise (issue 18's goal: a 512x512 image in under 1 s on the 2 cores here):
- * renders the Cornell Box at SIZE² and SPP with all feature buffers, then denoises the same
- * buffers WARM-UP times untimed and RUNS times timed, nothing else running in the JVM.
+ * Wall time of one denoise (issue 33's goal for Open Image Denoise's network: a 512x512 image in
+ * at most 2 s on the 2 cores here): renders the Cornell Box at SIZE² and SPP with all feature
+ * buffers, then denoises the same buffers three times untimed and RUNS times timed, nothing else
+ * running in the JVM. KIND: network (Denoiser.create(), the default) or atrous (Denoiser.atrous()).
  *
  *   mvn -B -q -DskipTests package
- *   java -cp target/strahl.jar docs/bench/DenoiseTime.java [size=512] [spp=16] [runs=9]
+ *   java -cp target/strahl.jar docs/bench/DenoiseTime.java [size=512] [spp=16] [runs=9] [kind=network]
+ *   java --add-modules jdk.incubator.vector -cp target/strahl.jar docs/bench/DenoiseTime.java ...   (the network's Vector API path)
  */
 public class DenoiseTime {
     public static void main(String[] args) throws Exception {
         int size = args.length > 0 ? Integer.parseInt(args[0]) : 512;
         int spp = args.length > 1 ? Integer.parseInt(args[1]) : 16;
         int runs = args.length > 2 ? Integer.parseInt(args[2]) : 9;
+        String kind = args.length > 3 ? args[3] : "network";
         Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
         RenderSettings settings = RenderSettings.defaults().withSize(size, size).withSamplesPerPixel(spp)
                 .withAovs(EnumSet.allOf(Aov.class));
@@ -30,7 +33,7 @@ public class DenoiseTime {
         try (RenderJob job = RenderJob.start(scene, settings)) {
             buffers = job.awaitBuffers();
         }
-        Denoiser denoiser = Denoiser.create();
+        Denoiser denoiser = kind.equals("atrous") ? Denoiser.atrous() : Denoiser.create();
         for (int i = 0; i < 3; i++) {
             denoiser.denoise(buffers);
         }
@@ -41,7 +44,9 @@ public class DenoiseTime {
             seconds[i] = (System.nanoTime() - t0) * 1e-9;
         }
         Arrays.sort(seconds);
-        System.out.printf(Locale.ROOT, "denoise %dx%d (%d spp, all feature buffers), %d processors: median %.3f s, min %.3f s, max %.3f s over %d runs%n",
-                size, size, spp, Runtime.getRuntime().availableProcessors(), seconds[runs / 2], seconds[0], seconds[runs - 1], runs);
+        boolean lanes = ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent() && !"false".equals(System.getProperty("strahl.simd"));
+        System.out.printf(Locale.ROOT, "%s%s, %dx%d (%d spp, all feature buffers), %d processors: median %.3f s, min %.3f s, max %.3f s over %d runs%n",
+                denoiser, kind.equals("atrous") ? "" : lanes ? " (Vector API)" : " (scalar)", size, size, spp,
+                Runtime.getRuntime().availableProcessors(), seconds[runs / 2], seconds[0], seconds[runs - 1], runs);
     }
 }

@@ -13,9 +13,10 @@ import java.util.stream.IntStream;
  *   <li>{@link ConvLanes} (with the Vector API, {@code --add-modules jdk.incubator.vector}): output
  *       pixels across the lanes, eight output channels by two vectors of pixels summed in
  *       registers;</li>
- *   <li>the scalar twin here: per row strip, all output channels' sums in arrays, updated three
- *       taps at a time by loops that HotSpot vectorizes itself (every array indexed alike, so it
- *       can: the three shifted input rows are copied first).</li>
+ *   <li>the scalar twin here: per strip of about 512 pixels (a piece of a row, or several rows of
+ *       a small map), all output channels' sums in arrays, updated three taps at a time by loops
+ *       that HotSpot vectorizes itself (every array indexed alike, so it can: the three shifted
+ *       input rows are copied first).</li>
  * </ul>
  * Rows are split into bands on the common fork-join pool; a band's values depend only on the
  * input, never on which thread computes it.

@@ -72,6 +72,11 @@ public final class NeuralDenoiser {
         if (net.inputChannels > 3 && albedo == null || net.inputChannels > 6 && normal == null) {
             throw new IllegalArgumentException("the network takes " + net.inputChannels + " channels");
         }
+        long floats = 3L * width * height;
+        if (width <= 0 || height <= 0 || color.length != floats || albedo != null && albedo.length != floats
+                || normal != null && normal.length != floats) {
+            throw new IllegalArgumentException("a " + width + "x" + height + " image needs " + floats + " floats per buffer");
+        }
         float inputScale = HdrTransfer.autoexposure(color, width, height);
         float outputScale = inputScale != 0 ? 1 / inputScale : 0;
         Input input = new Input(width, height, color, net.inputChannels > 3 ? albedo : null, net.inputChannels > 6 ? normal : null, inputScale);
