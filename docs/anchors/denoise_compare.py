@@ -38,7 +38,7 @@ SIZE = int(os.environ.get("STRAHL_DENOISE_SIZE", "512"))
 REF_SPP = int(os.environ.get("STRAHL_REF_SPP", "2048"))
 SCENES = ["cornell-box", "cornell-glossy", "cornell-sphere", "cornell-mirror", "cornell-empty-rg", "showcase-spheres"]
 # where the 1:1 crop of the picture starts (row, column), per scene; the centre otherwise
-CROPS = {"cornell-box": (40, 200), "cornell-glossy": (200, 160), "cornell-sphere": (220, 150), "cornell-mirror": (200, 150)}
+CROPS = {"cornell-box": (200, 100), "cornell-glossy": (200, 130), "cornell-sphere": (190, 140)}
 
 
 def read_pfm(path):

@@ -78,25 +78,33 @@ final class UNet {
      * @return its 3 output channels, the same size
      */
     FeatureMap run(FeatureMap input) {
+        return run(input, Conv3x3.LANES);
+    }
+
+    /** {@link #run(FeatureMap)} on the Vector API path or the scalar twin (the same bits; for tests). */
+    FeatureMap run(FeatureMap input, boolean lanes) {
         if (input.channels != inputChannels || input.height % ALIGNMENT != 0 || input.width % ALIGNMENT != 0) {
             throw new IllegalArgumentException("the network takes " + inputChannels + " channels, sizes multiples of " + ALIGNMENT
                     + "; got " + input.channels + " channels, " + input.width + "x" + input.height);
         }
-        FeatureMap x = conv("enc_conv0", input);
-        FeatureMap pool1 = Resample.pool(conv("enc_conv1", x));
-        FeatureMap pool2 = Resample.pool(conv("enc_conv2", pool1));
-        FeatureMap pool3 = Resample.pool(conv("enc_conv3", pool2));
-        FeatureMap pool4 = Resample.pool(conv("enc_conv4", pool3));
-        x = Resample.upsample(conv("enc_conv5b", conv("enc_conv5a", pool4)));
-        x = Resample.upsample(conv("dec_conv4b", conv("dec_conv4a", x, pool3)));
-        x = Resample.upsample(conv("dec_conv3b", conv("dec_conv3a", x, pool2)));
-        x = Resample.upsample(conv("dec_conv2b", conv("dec_conv2a", x, pool1)));
-        x = conv("dec_conv1a", x, input);               // the upsampled maps (64 channels at full size) are garbage now
-        return conv("dec_conv0", conv("dec_conv1b", x));
+        FeatureMap x = conv("enc_conv0", lanes, input);
+        FeatureMap pool1 = Resample.pool(conv("enc_conv1", lanes, x));
+        FeatureMap pool2 = Resample.pool(conv("enc_conv2", lanes, pool1));
+        FeatureMap pool3 = Resample.pool(conv("enc_conv3", lanes, pool2));
+        FeatureMap pool4 = Resample.pool(conv("enc_conv4", lanes, pool3));
+        x = Resample.upsample(conv("enc_conv5b", lanes, conv("enc_conv5a", lanes, pool4)));
+        x = Resample.upsample(conv("dec_conv4b", lanes, conv("dec_conv4a", lanes, x, pool3)));
+        x = Resample.upsample(conv("dec_conv3b", lanes, conv("dec_conv3a", lanes, x, pool2)));
+        x = Resample.upsample(conv("dec_conv2b", lanes, conv("dec_conv2a", lanes, x, pool1)));
+        x = conv("dec_conv1a", lanes, x, input);               // the upsampled maps (64 channels at full size) are garbage now
+        return conv("dec_conv0", lanes, conv("dec_conv1b", lanes, x));
     }
 
-    private FeatureMap conv(String name, FeatureMap... sources) {
-        return convs.get(name).apply(sources);
+    private FeatureMap conv(String name, boolean lanes, FeatureMap... sources) {
+        Conv3x3 conv = convs.get(name);
+        FeatureMap dst = new FeatureMap(conv.outputs, sources[0].height, sources[0].width);
+        conv.apply(lanes, sources, dst);
+        return dst;
     }
 
     /** The layers, in order (for tests). */

@@ -131,6 +131,14 @@ class NeuralDenoiserTest {
     }
 
     @Test
+    void theSameBitsWithAndWithoutTheVectorApi() {
+        assertThat(Conv3x3.LANES).as("surefire adds jdk.incubator.vector").isTrue();
+        UNet net = NeuralDenoiser.network("rt_hdr_alb_nrm", 9);
+        FeatureMap in = LayersTest.random(9, 48, 80, 11);
+        assertThat(net.run(in, true).data).isEqualTo(net.run(in, false).data);
+    }
+
+    @Test
     void theSameBitsOnOneThreadAsOnAll() throws Exception {
         Fixture f = fixture("cornell-glossy-37x53.exr");
         float[] all = NeuralDenoiser.create().denoise(f.width(), f.height(), f.color(), f.albedo(), f.normal());
