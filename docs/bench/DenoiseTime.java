@@ -15,6 +15,8 @@ import java.util.Locale;
  * at most 2 s on the 2 cores here): renders the Cornell Box at SIZE² and SPP with all feature
  * buffers, then denoises the same buffers three times untimed and RUNS times timed, nothing else
  * running in the JVM. KIND: network (Denoiser.create(), the default) or atrous (Denoiser.atrous()).
+ * Also prints the process's CPU time per denoise (all threads; on a shared machine the better
+ * figure of the work, as the wall time depends on what else runs) and the load average.
  *
  *   mvn -B -q -DskipTests package
  *   java -cp target/strahl.jar docs/bench/DenoiseTime.java [size=512] [spp=16] [runs=9] [kind=network]
@@ -37,16 +39,23 @@ public class DenoiseTime {
         for (int i = 0; i < 3; i++) {
             denoiser.denoise(buffers);
         }
+        var os = (com.sun.management.OperatingSystemMXBean) java.lang.management.ManagementFactory.getOperatingSystemMXBean();
         double[] seconds = new double[runs];
+        double[] cpu = new double[runs];
         for (int i = 0; i < runs; i++) {
+            long c0 = os.getProcessCpuTime();
             long t0 = System.nanoTime();
             denoiser.denoise(buffers);
             seconds[i] = (System.nanoTime() - t0) * 1e-9;
+            cpu[i] = (os.getProcessCpuTime() - c0) * 1e-9;
         }
         Arrays.sort(seconds);
+        Arrays.sort(cpu);
         boolean lanes = ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent() && !"false".equals(System.getProperty("strahl.simd"));
         System.out.printf(Locale.ROOT, "%s%s, %dx%d (%d spp, all feature buffers), %d processors: median %.3f s, min %.3f s, max %.3f s over %d runs%n",
                 denoiser, kind.equals("atrous") ? "" : lanes ? " (Vector API)" : " (scalar)", size, size, spp,
                 Runtime.getRuntime().availableProcessors(), seconds[runs / 2], seconds[0], seconds[runs - 1], runs);
+        System.out.printf(Locale.ROOT, "  CPU time of the process per denoise: median %.3f s, min %.3f s, max %.3f s; load average %s%n",
+                cpu[runs / 2], cpu[0], cpu[runs - 1], String.format(Locale.ROOT, "%.2f", os.getSystemLoadAverage()));
     }
 }
