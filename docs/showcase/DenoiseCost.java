@@ -98,7 +98,7 @@ public class DenoiseCost {
         denoiser.setEnabled(true, false);
         RenderListener l = new RenderListener() {
             @Override
-            public void passFinished(Pass pass, Image image) {
+            public void passFinished(RenderStats soFar, Image image) {
                 try {
                     started.await();
                 } catch (InterruptedException e) {
@@ -109,7 +109,7 @@ public class DenoiseCost {
                 if (mode.equals("snap")) {
                     ref.get().snapshotBuffers().orElseThrow();
                 } else if (mode.equals("denoise")) {
-                    denoiser.accept(new RenderController.Frame(image, pass.samplesPerPixel(), false, 1, ref.get()::snapshotBuffers));
+                    denoiser.accept(new RenderController.Frame(image, soFar.samplesPerPixel(), false, 1, ref.get()::snapshotBuffers));
                 }
                 copyNanos.addAndGet(System.nanoTime() - t0);
                 copyCpu.addAndGet(MX.getCurrentThreadCpuTime() - c0);

@@ -1,6 +1,4 @@
-import dev.strahl.render.HemisphereSampling;
-import dev.strahl.render.IntegratorKind;
-import dev.strahl.viewer.SceneOverrides;
+import dev.strahl.render.RenderSettings;
 import dev.strahl.viewer.Theme;
 import dev.strahl.viewer.Viewer;
 import dev.strahl.viewer.ViewerOptions;
@@ -13,7 +11,6 @@ import java.awt.Robot;
 import java.awt.image.BufferedImage;
 import java.io.File;
 import java.nio.file.Path;
-import java.util.Set;
 import java.util.concurrent.atomic.AtomicReference;
 import javax.imageio.ImageIO;
 import javax.swing.JCheckBoxMenuItem;
@@ -33,9 +30,9 @@ import javax.swing.SwingUtilities;
  */
 public class ViewerDenoiseShot {
     public static void main(String[] args) throws Exception {
-        ViewerOptions o = new ViewerOptions(Path.of("scenes/cornell-box.json"), 384, 384, 16, -1, HemisphereSampling.COSINE, 0, 0,
-                IntegratorKind.PATH, 1, Theme.LIGHT, Set.of(), 100_000, 0, Set.of(), SceneOverrides.NONE, true);
-        Viewer viewer = Viewer.open(o, (w, h) -> { });
+        ViewerOptions o = ViewerOptions.defaults().withScene(Path.of("scenes/cornell-box.json"))
+                .withSettings(RenderSettings.defaults().withSize(384, 384)).withStopAt(16).withTheme(Theme.LIGHT);
+        Viewer viewer = Viewer.open(o, Viewer.FilmCheck.NONE);
         JFrame frame = onEdt(() -> {
             for (Frame f : Frame.getFrames()) {
                 if (f instanceof JFrame j && f.isVisible()) {

@@ -1,5 +1,4 @@
-import dev.strahl.render.HemisphereSampling;
-import dev.strahl.render.IntegratorKind;
+import dev.strahl.render.RenderSettings;
 import dev.strahl.viewer.SceneOverrides;
 import dev.strahl.viewer.Theme;
 import dev.strahl.viewer.Viewer;
@@ -9,7 +8,6 @@ import java.awt.Rectangle;
 import java.awt.Robot;
 import java.io.File;
 import java.nio.file.Path;
-import java.util.Set;
 import java.util.prefs.Preferences;
 import javax.imageio.ImageIO;
 import javax.swing.JFrame;
@@ -35,9 +33,10 @@ public class ViewerShot {
             recent.put("recent." + i, Path.of(files[files.length - 1 - i]).toAbsolutePath().toString());
         }
         recent.flush();
-        ViewerOptions o = new ViewerOptions(Path.of("scenes/showcase-depth.json"), 384, 256, 0, -1, HemisphereSampling.COSINE, 0, 0,
-                IntegratorKind.PATH, 1, Theme.LIGHT, Set.of(), 100_000, 0, new SceneOverrides(null, 0.12, 4.3));
-        Viewer viewer = Viewer.open(o, (w, h) -> { });
+        ViewerOptions o = ViewerOptions.defaults().withScene(Path.of("scenes/showcase-depth.json"))
+                .withSettings(RenderSettings.defaults().withSize(384, 256)).withStopAt(0).withTheme(Theme.LIGHT)
+                .withOverrides(new SceneOverrides(null, 0.12, 4.3));
+        Viewer viewer = Viewer.open(o, Viewer.FilmCheck.NONE);
         Thread.sleep(Long.parseLong(args[1]) * 1000);
         JFrame[] frame = new JFrame[1];
         SwingUtilities.invokeAndWait(() -> {

@@ -14,20 +14,15 @@ import org.junit.jupiter.api.Test;
 /**
  * No main source file over 400 lines: a longer class holds more than one concept and is split
  * (docs/architecture.md). Measured on the sources, so a growing class fails the build where it grows.
- * The files that the feature merges of December 2026 left longer are listed with their size at
- * the time: they may shrink (and leave the list once under the limit), never grow.
+ * One file is left over the limit, with its size: accel/Bvh.java, which the eight-wide SIMD tree
+ * of issue 28 splits (its branch rewrites the file); it may shrink, never grow, and leaves the
+ * list then.
  */
 class SourceSizeTest {
     static final int MAX_LINES = 400;
 
-    /** Known debt: files over the limit, each with the most lines it may have. Split them; never add one. */
-    static final Map<String, Integer> OVER_THE_LIMIT = Map.of(
-            "dev/strahl/cli/RenderCommand.java", 570,
-            "dev/strahl/io/json/JsonSceneReader.java", 497,
-            "dev/strahl/render/RenderJob.java", 453,
-            "dev/strahl/io/obj/ObjReader.java", 441,
-            "dev/strahl/accel/Bvh.java", 434,
-            "dev/strahl/viewer/RenderController.java", 427);
+    /** Known debt: files over the limit, each with the most lines it may have. Never add one. */
+    static final Map<String, Integer> OVER_THE_LIMIT = Map.of("dev/strahl/accel/Bvh.java", 434);
 
     @Test
     void noMainSourceFileIsLongerThanTheLimit() throws IOException {

@@ -1,6 +1,6 @@
 package dev.strahl.bench;
 
-import dev.strahl.io.text.Units;
+import dev.strahl.io.text.NumberText;
 import java.io.PrintStream;
 
 /** The progress line of {@code strahl bench}: redrawn in place on a terminal, one line per step elsewhere. */
@@ -16,7 +16,7 @@ public final class BenchProgress {
     }
 
     public void step(String what) {
-        String line = String.format(java.util.Locale.ROOT, "bench %s  %s", Units.duration((System.nanoTime() - start) * 1e-9), what);
+        String line = String.format(java.util.Locale.ROOT, "bench %s  %s", NumberText.duration((System.nanoTime() - start) * 1e-9), what);
         if (terminal) {
             out.print("\r" + line + " ".repeat(Math.max(0, width - line.length())));
             width = line.length();

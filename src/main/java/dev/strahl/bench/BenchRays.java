@@ -40,7 +40,7 @@ public final class BenchRays {
 
     /** Camera rays through jittered points of a width × height film, {@code spp} per pixel. */
     public static RaySet primary(Camera camera, int width, int height, int spp, long seed) {
-        CameraRays rays = new CameraRays(camera.lookFrom(), camera.lookAt(), camera.up(), camera.fovDegrees(), width, height);
+        CameraRays rays = CameraRays.pinholeOf(camera, width, height);
         SplittableRandom random = new SplittableRandom(seed);
         int n = width * height * spp;
         double[] data = new double[7 * n];

@@ -1,7 +1,7 @@
 package dev.strahl.bench;
 
 import dev.strahl.io.json.JsonFile;
-import dev.strahl.io.text.Units;
+import dev.strahl.io.text.NumberText;
 import com.fasterxml.jackson.core.JsonGenerator;
 import dev.strahl.bench.BenchResults.Mesh;
 import dev.strahl.bench.BenchResults.Rays;
@@ -165,7 +165,7 @@ public final class BenchReport {
     }
 
     private static String num(double v) {
-        return v >= 1e5 ? Units.si(v) : String.format(Locale.ROOT, "%.2f", v);
+        return v >= 1e5 ? NumberText.si(v) : String.format(Locale.ROOT, "%.2f", v);
     }
 
     private static String vec(double[] v) {

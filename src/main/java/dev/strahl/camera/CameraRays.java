@@ -28,6 +28,36 @@ public final class CameraRays {
     private final double lensRadius, focusDistance;
     private final double invW, invH;
 
+    /** How an API camera becomes rays; {@code dev.strahl.scene.Camera} installs it when it is loaded. */
+    @FunctionalInterface
+    public interface CameraAccess {
+        /** The rays of {@code camera} (a {@code dev.strahl.scene.Camera}) for a film size: through its thin lens, or its pinhole. */
+        CameraRays rays(Object camera, boolean pinhole, int width, int height);
+    }
+
+    private static volatile CameraAccess cameraAccess;
+
+    /**
+     * The rays of an API {@code dev.strahl.scene.Camera} for a film size, through its thin lens: the
+     * one conversion of the API's camera, for strahl's own packages (the pattern of {@code World.of}).
+     */
+    public static CameraRays of(Object camera, int width, int height) {
+        return cameraAccess.rays(camera, false, width, height);
+    }
+
+    /** As {@link #of}, through the camera's pinhole whatever its lens: the ray that picks a surface, the benchmark's rays. */
+    public static CameraRays pinholeOf(Object camera, int width, int height) {
+        return cameraAccess.rays(camera, true, width, height);
+    }
+
+    /** Called once, by the {@code Camera} class as it is loaded. */
+    public static void installCameraAccess(CameraAccess access) {
+        if (cameraAccess != null) {
+            throw new IllegalStateException("camera access installed twice");
+        }
+        cameraAccess = access;
+    }
+
     /** Pinhole rays of a camera at {@code from} looking at {@code at}, with a vertical field of view, for a film size. */
     public CameraRays(Vector3dc from, Vector3dc at, Vector3dc up, double fovDegrees, int width, int height) {
         this(from, at, up, fovDegrees, 0, 1, width, height);

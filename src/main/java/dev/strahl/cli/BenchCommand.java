@@ -28,6 +28,7 @@ import java.util.TreeSet;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -44,6 +45,7 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "bench",
         mixinStandardHelpOptions = true,
+        abbreviateSynopsis = true,
         versionProvider = Main.Version.class,
         description = {"Measures render and ray tracing speed: the Cornell Box in samples/s, and per mesh the BVH build,",
             "bytes per triangle and ray rates, on 1 and all threads; checks every result; prints a table."},
@@ -59,41 +61,59 @@ final class BenchCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--json", paramLabel = "FILE", description = "Also write the results as JSON.")
-    Path json;
+    @ArgGroup(validate = false, heading = "%nRuns:%n")
+    Runs measure = new Runs();
 
-    @Option(names = "--quick", description = "One run of each, with fewer rays: a quick check, not for citing.")
-    boolean quick;
+    @ArgGroup(validate = false, heading = "%nScenes and meshes:%n")
+    Inputs inputs = new Inputs();
 
-    @Option(names = "--runs", defaultValue = "5", description = "Timed runs of each benchmark after the warm-up (default: ${DEFAULT-VALUE}; --quick: 1).")
-    int runs;
+    @ArgGroup(validate = false, heading = "%nResults:%n")
+    Results results = new Results();
 
-    @Option(names = "--threads", split = ",", paramLabel = "N[,N...]", description = "Thread counts to measure (default: 1 and all processors).")
-    List<Integer> threads;
+    /** How much is measured, and on how many threads. */
+    static final class Runs {
+        @Option(names = "--quick", description = "One run of each, with fewer rays: a quick check, not for citing.")
+        boolean quick;
 
-    @Option(names = "--cornell", defaultValue = "scenes/cornell-box.json", paramLabel = "FILE", description = "The Cornell Box scene (default: ${DEFAULT-VALUE}).")
-    Path cornell;
+        @Option(names = "--runs", defaultValue = "5", description = "Timed runs of each benchmark after the warm-up (default: ${DEFAULT-VALUE}; --quick: 1).")
+        int runs;
 
-    @Option(names = "--data", paramLabel = "DIR", description = {"Also benchmark the Stanford meshes in DIR/meshes (bunny/bun_zipper.ply,",
-        "dragon/dragon_100k.ply, bunny/bunny_midpoint-sub2_1.1M.ply), where present: research-only data, not part of strahl."})
-    Path data;
+        @Option(names = "--threads", split = ",", paramLabel = "N[,N...]", description = "Thread counts to measure (default: 1 and all processors).")
+        List<Integer> threads;
 
-    @Option(names = "--mesh", paramLabel = "FILE", description = "Benchmark these mesh files instead of the generated meshes (repeatable).")
-    List<Path> meshes;
+        @Option(names = "--rays", paramLabel = "N", description = "Rays per ray set (default: 2^20; --quick: 2^17).")
+        Integer raysPerSet;
+    }
 
-    @Option(names = "--no-cornell", description = "Skip the Cornell Box render.")
-    boolean noCornell;
+    /** What is measured: the Cornell Box and the meshes. */
+    static final class Inputs {
+        @Option(names = "--cornell", defaultValue = "scenes/cornell-box.json", paramLabel = "FILE", description = "The Cornell Box scene (default: ${DEFAULT-VALUE}).")
+        Path cornell;
 
-    @Option(names = "--rays", paramLabel = "N", description = "Rays per ray set (default: 2^20; --quick: 2^17).")
-    Integer raysPerSet;
+        @Option(names = "--no-cornell", description = "Skip the Cornell Box render.")
+        boolean noCornell;
 
-    @Option(names = "--anchors", paramLabel = "FILE", description = {"Compare with the anchor figures of this JSON file (written by docs/bench/anchors.py,",
-        "measured side by side) instead of the built-in constants of an earlier machine."})
-    Path anchors;
+        @Option(names = "--data", paramLabel = "DIR", description = {"Also benchmark the Stanford meshes in DIR/meshes (bunny/bun_zipper.ply,",
+            "dragon/dragon_100k.ply, bunny/bunny_midpoint-sub2_1.1M.ply), where present: research-only data, not part of strahl."})
+        Path data;
 
-    @Option(names = "--export-rays", paramLabel = "DIR", description = {"Write each mesh's triangles and ray sets to DIR for docs/bench/anchors.py",
-        "(Embree on the same rays) and stop: nothing is timed."})
-    Path exportRays;
+        @Option(names = "--mesh", paramLabel = "FILE", description = "Benchmark these mesh files instead of the generated meshes (repeatable).")
+        List<Path> meshes;
+    }
+
+    /** Where the results go and what they are compared with. */
+    static final class Results {
+        @Option(names = "--json", paramLabel = "FILE", description = "Also write the results as JSON.")
+        Path json;
+
+        @Option(names = "--anchors", paramLabel = "FILE", description = {"Compare with the anchor figures of this JSON file (written by docs/bench/anchors.py,",
+            "measured side by side) instead of the built-in constants of an earlier machine."})
+        Path anchors;
+
+        @Option(names = "--export-rays", paramLabel = "DIR", description = {"Write each mesh's triangles and ray sets to DIR for docs/bench/anchors.py",
+            "(Embree on the same rays) and stop: nothing is timed."})
+        Path exportRays;
+    }
 
     private BenchProgress progress;
 
@@ -102,41 +122,41 @@ final class BenchCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter out = spec.commandLine().getOut();
         long start = System.nanoTime();
-        int timedRuns = quick ? 1 : runs;
+        int timedRuns = measure.quick ? 1 : measure.runs;
         if (timedRuns < 1) {
-            err.println("strahl: --runs must be at least 1, got " + runs);
+            err.println("strahl: --runs must be at least 1, got " + measure.runs);
             return 2;
         }
-        TreeSet<Integer> counts = new TreeSet<>(threads != null ? threads : List.of(1, Runtime.getRuntime().availableProcessors()));
+        TreeSet<Integer> counts = new TreeSet<>(measure.threads != null ? measure.threads : List.of(1, Runtime.getRuntime().availableProcessors()));
         if (counts.first() < 1) {
             err.println("strahl: --threads must be positive, got " + counts.first());
             return 2;
         }
-        List<Path> meshFiles = new ArrayList<>(meshes != null ? meshes : List.of());
-        if (data != null) {
+        List<Path> meshFiles = new ArrayList<>(inputs.meshes != null ? inputs.meshes : List.of());
+        if (inputs.data != null) {
             for (String name : STANFORD_MESHES) {
-                Path file = data.resolve("meshes").resolve(name);
+                Path file = inputs.data.resolve("meshes").resolve(name);
                 if (java.nio.file.Files.isRegularFile(file)) {
                     meshFiles.add(file);
                 }
             }
         }
-        BenchResults r = BenchReport.machine(quick, timedRuns);
-        r.raysPerSet = raysPerSet != null ? raysPerSet : quick ? 1 << 17 : 1 << 20;
+        BenchResults r = BenchReport.machine(measure.quick, timedRuns);
+        r.raysPerSet = measure.raysPerSet != null ? measure.raysPerSet : measure.quick ? 1 << 17 : 1 << 20;
         if (r.raysPerSet < 1) {
             err.println("strahl: --rays must be positive, got " + r.raysPerSet);
             return 2;
         }
-        if (anchors != null) {
+        if (results.anchors != null) {
             try {
-                r.anchors = BenchAnchors.read(anchors);
+                r.anchors = BenchAnchors.read(results.anchors);
             } catch (IOException e) {
                 err.println("strahl: --anchors " + e.getMessage());
                 return 2;
             }
         }
-        if (exportRays != null && !java.nio.file.Files.isDirectory(exportRays)) {
-            err.println("strahl: --export-rays " + exportRays + ": not a directory");
+        if (results.exportRays != null && !java.nio.file.Files.isDirectory(results.exportRays)) {
+            err.println("strahl: --export-rays " + results.exportRays + ": not a directory");
             return 2;
         }
         progress = new BenchProgress(System.err, Terminal.isStderrTerminal());
@@ -148,17 +168,17 @@ final class BenchCommand implements Callable<Integer> {
         List<String> failures = new ArrayList<>();
         try {
             Scene box = null;
-            if (!noCornell || meshes == null) {
-                box = SceneLoader.load(cornell);
+            if (!inputs.noCornell || inputs.meshes == null) {
+                box = SceneLoader.load(inputs.cornell);
             }
-            if (!noCornell && exportRays == null) {
+            if (!inputs.noCornell && results.exportRays == null) {
                 cornell(box, counts, timedRuns, r, failures);
             }
             List<MeshSet> sets = new ArrayList<>();
-            if (meshes == null && box != null) {
-                sets.add(new MeshSet("cornell-box", cornell.toString(), box, 0));
+            if (inputs.meshes == null && box != null) {
+                sets.add(new MeshSet("cornell-box", inputs.cornell.toString(), box, 0));
             }
-            if (meshes == null) {
+            if (inputs.meshes == null) {
                 for (BenchMeshes.Generated generated : BenchMeshes.defaults()) {
                     progress.step("generating " + generated.name());
                     long t0 = System.nanoTime();
@@ -185,7 +205,7 @@ final class BenchCommand implements Callable<Integer> {
             return 2;
         } catch (IOException e) {
             progress.done();
-            err.println("strahl: cannot write to " + exportRays + ": " + e.getMessage());
+            err.println("strahl: cannot write to " + results.exportRays + ": " + e.getMessage());
             return 1;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -195,8 +215,8 @@ final class BenchCommand implements Callable<Integer> {
             pool.shutdownNow();
         }
         progress.done();
-        if (exportRays != null) {
-            out.printf("wrote the triangles and rays of %d mesh%s to %s%n", r.meshes.size(), r.meshes.size() == 1 ? "" : "es", exportRays);
+        if (results.exportRays != null) {
+            out.printf("wrote the triangles and rays of %d mesh%s to %s%n", r.meshes.size(), r.meshes.size() == 1 ? "" : "es", results.exportRays);
             out.flush();
             return 0;
         }
@@ -204,11 +224,11 @@ final class BenchCommand implements Callable<Integer> {
         BenchReport.targets(r, counts.first(), counts.last());
         BenchReport.printTable(out, r);
         out.flush();
-        if (json != null) {
+        if (results.json != null) {
             try {
-                BenchReport.writeJson(json, r);
+                BenchReport.writeJson(results.json, r);
             } catch (IOException e) {
-                err.println("strahl: cannot write " + json + ": " + e.getMessage());
+                err.println("strahl: cannot write " + results.json + ": " + e.getMessage());
                 return 1;
             }
         }
@@ -234,12 +254,12 @@ final class BenchCommand implements Callable<Integer> {
     /** The Cornell Box at 512², unbounded depth: samples/s and rays/s per thread count; the image mean checked. */
     private void cornell(Scene box, TreeSet<Integer> counts, int timedRuns, BenchResults r, List<String> failures)
             throws InterruptedException {
-        int spp = quick ? 1 : 8;
-        r.cornellScene = cornell.toString();
+        int spp = measure.quick ? 1 : 8;
+        r.cornellScene = inputs.cornell.toString();
         r.cornellSpp = spp;
         RenderSettings base = RenderSettings.defaults().withSize(512, 512).withSamplesPerPixel(spp).withSamplesPerPass(spp);
         progress.step("Cornell Box: warm-up");
-        render(box, base.withThreads(counts.last()).withSamplesPerPixel(quick ? 1 : 4));
+        render(box, base.withThreads(counts.last()).withSamplesPerPixel(measure.quick ? 1 : 4));
         for (int t : counts) {
             double[] sps = new double[timedRuns], rps = new double[timedRuns];
             long rays = 0, samples = 0;
@@ -262,7 +282,7 @@ final class BenchCommand implements Callable<Integer> {
         }
         // The viewer's preview while the camera moves: 128×128 at 1 spp per frame, one render job each.
         RenderSettings preview = base.withSize(128, 128).withSamplesPerPixel(1).withSamplesPerPass(1).withThreads(counts.last());
-        int frames = quick ? 10 : 60;
+        int frames = measure.quick ? 10 : 60;
         double[] fps = new double[timedRuns];
         for (int run = 0; run < timedRuns; run++) {
             progress.step(String.format("Cornell Box: viewer preview frames, run %d/%d", run + 1, timedRuns));
@@ -306,9 +326,9 @@ final class BenchCommand implements Callable<Integer> {
         String name = mesh.name();
         Scene scene = mesh.scene();
         Geometry g = World.of(scene).geometry();
-        if (exportRays != null) {
+        if (results.exportRays != null) {
             progress.step(name + ": writing rays");
-            BenchRays.export(exportRays, name, mesh.source(), g, raySets(scene, g, r.raysPerSet));
+            BenchRays.export(results.exportRays, name, mesh.source(), g, raySets(scene, g, r.raysPerSet));
             r.meshes.add(new BenchResults.Mesh(name, mesh.source(), g.triangleCount(), mesh.loadSeconds(), BenchResults.Stat.of(new double[] {0}), 0,
                     List.of(), "exported"));
             return;

@@ -56,7 +56,7 @@ final class CheckpointSaver implements RenderListener {
         try {
             job.saveCheckpoint(file);
         } catch (IOException e) {
-            throw new RenderCommand.RenderFailure("cannot write checkpoint " + file + ": " + e.getMessage(), e);
+            throw new RenderOutcome.RenderFailure("cannot write checkpoint " + file + ": " + e.getMessage(), e);
         }
     }
 }

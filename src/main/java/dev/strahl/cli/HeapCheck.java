@@ -1,11 +1,16 @@
 package dev.strahl.cli;
 
+import dev.strahl.codec.ImageLimits;
 import dev.strahl.film.Film;
-import dev.strahl.io.image.ImageLimits;
 import java.util.Locale;
 import java.util.function.LongSupplier;
 
-/** Refuses a film that cannot fit in the Java heap before anything is allocated ({@code render}, and {@code view} for every scene it shows). */
+/**
+ * Refuses a render that cannot fit in the Java heap before anything is allocated ({@code render},
+ * and {@code view} for every scene it shows): its film ({@link Film#bytesNeeded}, with the feature
+ * sums when it keeps them: 7 doubles, 56 bytes a pixel) and every other buffer that holds a value
+ * per pixel.
+ */
 final class HeapCheck {
     /**
      * Bytes per pixel besides the film's sums and counts: the mean image handed out after each
@@ -13,22 +18,43 @@ final class HeapCheck {
      * PNG encoder works on.
      */
     static final long IMAGE_BYTES_PER_PIXEL = 2 * 12 + 4;
+    /**
+     * With feature buffers, besides the film's feature sums: the variance and the albedo, normal and
+     * depth images the render hands out at its end (4 images of 3 floats) and the EXR writer's
+     * copies of the 7 feature channels.
+     */
+    static final long FEATURE_BYTES_PER_PIXEL = 4 * 12 + 7 * 4;
+    /**
+     * strahl's denoiser (denoise.AtrousFilter and render.Denoiser): its guides (8 floats and a flag),
+     * its working images (14 floats), the weights of its 5×5 kernel (25 floats), its result (3 floats)
+     * and the image made of it (3 floats), and the luminance variance (1 float).
+     */
+    static final long DENOISE_BYTES_PER_PIXEL = 8 * 4 + 1 + 14 * 4 + 25 * 4 + 3 * 4 + 12 + 4;
 
     private HeapCheck() {}
 
-    /** Bytes a render of this size needs for its film and images. */
+    /** Bytes a render of this size needs for its film and images, without feature buffers. */
     static long filmBytes(int width, int height) {
-        return Film.bytesNeeded(width, height) + IMAGE_BYTES_PER_PIXEL * width * (long) height;
+        return renderBytes(width, height, false, false);
+    }
+
+    /** Bytes a render of this size needs: its film and every per-pixel buffer, with the feature buffers and the denoiser's if it keeps them. */
+    static long renderBytes(int width, int height, boolean features, boolean denoise) {
+        long perPixel = IMAGE_BYTES_PER_PIXEL + (features ? FEATURE_BYTES_PER_PIXEL : 0) + (denoise ? DENOISE_BYTES_PER_PIXEL : 0);
+        return Film.bytesNeeded(width, height, features) + perPixel * width * (long) height;
     }
 
     /**
-     * Throws if a {@code width}×{@code height} render cannot fit in what the heap has left.
+     * Throws if a {@code width}×{@code height} render without feature buffers cannot fit in what the heap has left.
      *
      * @param heapMax  the heap's maximum ({@link Runtime#maxMemory()})
      * @param heapUsed bytes in use now
      */
     static void checkFilm(int width, int height, long heapMax, long heapUsed) {
-        long need = filmBytes(width, height);
+        check(width, height, renderBytes(width, height, false, false), heapMax, heapUsed);
+    }
+
+    private static void check(int width, int height, long need, long heapMax, long heapUsed) {
         long free = heapMax - heapUsed;
         if (need > free) {
             throw new IllegalArgumentException(String.format(Locale.ROOT,
@@ -38,28 +64,38 @@ final class HeapCheck {
         }
     }
 
-    /**
-     * Checks against the running JVM's heap. What the heap has in use may be mostly garbage (a
-     * viewer that has shown many frames), so a film that does not seem to fit is measured once more
-     * after a collection before it is refused.
-     */
+    /** {@link #checkRender} without feature buffers. */
     static void checkFilm(int width, int height) {
-        Runtime rt = Runtime.getRuntime();
-        checkFilm(width, height, rt.maxMemory(), () -> rt.totalMemory() - rt.freeMemory(), System::gc);
+        checkRender(width, height, false, false);
     }
 
     /**
-     * Throws if a {@code width}×{@code height} render cannot fit in what the heap has left, asking
-     * {@code collect} to free garbage and measuring again before it gives up.
+     * Checks against the running JVM's heap. What the heap has in use may be mostly garbage (a
+     * viewer that has shown many frames), so a render that does not seem to fit is measured once
+     * more after a collection before it is refused.
+     */
+    static void checkRender(int width, int height, boolean features, boolean denoise) {
+        Runtime rt = Runtime.getRuntime();
+        checkRender(width, height, features, denoise, rt.maxMemory(), () -> rt.totalMemory() - rt.freeMemory(), System::gc);
+    }
+
+    /**
+     * Throws if a {@code width}×{@code height} render without feature buffers cannot fit in what
+     * the heap has left, asking {@code collect} to free garbage and measuring again before it gives up.
      *
      * @param heapMax  the heap's maximum
      * @param heapUsed bytes in use now
      * @param collect  frees what it can (a garbage collection)
      */
     static void checkFilm(int width, int height, long heapMax, LongSupplier heapUsed, Runnable collect) {
-        if (filmBytes(width, height) > heapMax - heapUsed.getAsLong()) {
+        checkRender(width, height, false, false, heapMax, heapUsed, collect);
+    }
+
+    static void checkRender(int width, int height, boolean features, boolean denoise, long heapMax, LongSupplier heapUsed, Runnable collect) {
+        long need = renderBytes(width, height, features, denoise);
+        if (need > heapMax - heapUsed.getAsLong()) {
             collect.run();
         }
-        checkFilm(width, height, heapMax, heapUsed.getAsLong());
+        check(width, height, need, heapMax, heapUsed.getAsLong());
     }
 }

@@ -1,6 +1,6 @@
 package dev.strahl.cli;
 
-import dev.strahl.io.image.AtomicFile;
+import dev.strahl.files.AtomicFile;
 import java.io.PrintWriter;
 import java.lang.reflect.Constructor;
 import java.lang.reflect.Method;

@@ -1,7 +1,7 @@
 package dev.strahl.cli;
 
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine;
 
 /** The {@code strahl} command: a physically based renderer. */
 @Command(name = "strahl",
@@ -38,7 +38,7 @@ public final class Main implements Runnable {
         for (CommandLine.ParseResult p = parsed; p != null; p = p.subcommand()) {
             debug |= p.hasMatchedOption("--debug");
         }
-        cmd.getErr().println("strahl: internal error: " + e + (debug ? "" : " (run with --debug for the stack trace)"));
+        cmd.getErr().println("strahl: internal error: " + dev.strahl.codec.Printable.line(String.valueOf(e)) + (debug ? "" : " (run with --debug for the stack trace)"));
         if (debug) {
             e.printStackTrace(cmd.getErr());
         }

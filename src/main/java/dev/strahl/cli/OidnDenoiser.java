@@ -1,8 +1,8 @@
 package dev.strahl.cli;
 
 import dev.strahl.image.Image;
-import dev.strahl.io.image.PfmReader;
-import dev.strahl.io.image.PfmWriter;
+import dev.strahl.codec.PfmReader;
+import dev.strahl.codec.PfmWriter;
 import dev.strahl.render.RenderBuffers;
 import java.io.IOException;
 import java.io.OutputStream;

@@ -1,6 +1,6 @@
 package dev.strahl.cli;
 
-import dev.strahl.io.text.Units;
+import dev.strahl.io.text.NumberText;
 import java.io.PrintStream;
 import java.util.Locale;
 
@@ -22,9 +22,9 @@ final class ProgressBar {
     void update(double fraction, double seconds, long samples, String extra) {
         int filled = (int) Math.round(fraction * WIDTH);
         double rate = seconds > 0 ? samples / seconds : 0;
-        String eta = fraction > 0 && fraction < 1 ? Units.duration(seconds * (1 - fraction) / fraction) : "--:--";
+        String eta = fraction > 0 && fraction < 1 ? NumberText.duration(seconds * (1 - fraction) / fraction) : "--:--";
         out.print(String.format(Locale.ROOT, "\r[%s%s] %3d%%  %s samples/s  elapsed %s  ETA %s ",
-                "#".repeat(filled), "-".repeat(WIDTH - filled), (int) (fraction * 100), Units.si(rate), Units.duration(seconds), eta) + extra);
+                "#".repeat(filled), "-".repeat(WIDTH - filled), (int) (fraction * 100), NumberText.si(rate), NumberText.duration(seconds), eta) + extra);
         out.flush();
     }
 

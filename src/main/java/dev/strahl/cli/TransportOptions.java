@@ -1,11 +1,12 @@
 package dev.strahl.cli;
 
+import dev.strahl.render.HemisphereSampling;
 import dev.strahl.render.IntegratorKind;
 import dev.strahl.render.PhotonParameters;
-import dev.strahl.render.HemisphereSampling;
+import dev.strahl.render.RenderSettings;
 import picocli.CommandLine.Option;
 
-/** The light-transport options that {@code render} and {@code view} share, defined once. */
+/** The light transport: the "Integrator" section of {@code render} and {@code view} (RenderSettings.Transport). */
 final class TransportOptions {
 
     @Option(names = "--integrator", defaultValue = "path", paramLabel = "path|direct|whitted|photon",
@@ -34,16 +35,12 @@ final class TransportOptions {
                     + "0 = 1/100 of the scene's bounding-box diagonal (default: ${DEFAULT-VALUE}).")
     double photonRadius;
 
-    @Option(names = "--shadows", defaultValue = "on", paramLabel = "on|off",
-            description = "Teaching option: off traces no shadow rays, so every light shines through everything onto whatever faces it: "
-                    + "the picture without shadows (with path and photon only the direct light loses its shadows) (default: ${DEFAULT-VALUE}).")
-    Shadows shadows;
+    @Option(names = "--cull-back-faces", description = "Skip back faces of closed meshes for camera and bounce rays.")
+    boolean cullBackFaces;
 
-    /** The values of the teaching option --shadows. */
-    enum Shadows { ON, OFF }
-
-    /** Whether shadow rays are traced ({@code --shadows on}, the default). */
-    boolean shadows() {
-        return shadows != Shadows.OFF;
+    /** {@code base} with this light transport (the photon parameters checked as they are made). */
+    RenderSettings applyTo(RenderSettings base) {
+        return base.withIntegrator(integrator).withMaxDepth(maxDepth).withHemisphere(hemisphere).withLightSamples(lightSamples)
+                .withPhotons(new PhotonParameters(photons, photonRadius)).withCullBackFaces(cullBackFaces);
     }
 }

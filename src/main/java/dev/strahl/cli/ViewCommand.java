@@ -1,7 +1,9 @@
 package dev.strahl.cli;
 
-import dev.strahl.scene.SceneException;
 import dev.strahl.io.json.SceneSettings;
+import dev.strahl.render.RenderSettings;
+import dev.strahl.scene.SceneException;
+import dev.strahl.viewer.SceneOverrides;
 import dev.strahl.viewer.Theme;
 import dev.strahl.viewer.Viewer;
 import dev.strahl.viewer.ViewerOptions;
@@ -9,12 +11,12 @@ import java.awt.AWTError;
 import java.awt.HeadlessException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
-import java.util.List;
 import java.util.Set;
 import java.util.concurrent.Callable;
+import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -22,6 +24,7 @@ import picocli.CommandLine.Spec;
 /** {@code strahl view}: opens the interactive viewer. */
 @Command(name = "view",
         mixinStandardHelpOptions = true,
+        abbreviateSynopsis = true,
         versionProvider = Main.Version.class,
         description = {"Opens a window that renders a scene progressively, one sample per pixel at a time.",
             "Drag to orbit (left) or pan (right/middle), wheel to dolly; F1 in the window lists all controls.",
@@ -33,47 +36,51 @@ final class ViewCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Mixin
-    TransportOptions transport;
-
     @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE", description = "Scene file: .json (strahl scene), .obj (with its .mtl), .ply, or glTF 2.0 (.gltf, .glb).")
     Path scene;
-
-    @Option(names = "--width", defaultValue = "512", description = "Film width in pixels at start; resizing the window keeps the aspect (default: ${DEFAULT-VALUE}).")
-    int width;
-
-    @Option(names = "--height", defaultValue = "512", description = "Film height in pixels at start (default: ${DEFAULT-VALUE}).")
-    int height;
-
-    @Option(names = "--spp", defaultValue = "1024", description = "Stop at this many samples per pixel; 0 = never stop (default: ${DEFAULT-VALUE}).")
-    int spp;
-
-    @Option(names = "--threads", defaultValue = "0", description = "Worker threads; 0 = all processors (default: ${DEFAULT-VALUE}).")
-    int threads;
-
-    @Option(names = "--seed", defaultValue = "0", description = "Random seed (default: ${DEFAULT-VALUE}).")
-    long seed;
-
-    @Mixin
-    EnvironmentLensOptions lens;
 
     @Option(names = "--theme", defaultValue = "system", paramLabel = "system|light|dark",
             description = "Light or dark look; system follows the desktop where it can (default: ${DEFAULT-VALUE}).")
     String theme;
 
-    @Option(names = "--aov", split = ",", paramLabel = "LIST",
-            description = "Feature buffers the render keeps beside the image: albedo, normal, depth (comma-separated), as the scene"
-                    + " file's film.aovs; the denoiser's guides.")
-    List<String> aovNames;
-
     @Mixin
     DebugOption debug;
 
+    @ArgGroup(validate = false, heading = "%nFilm (its size at start; resizing the window keeps the aspect):%n")
+    FilmOptions film = new FilmOptions();
+
+    @ArgGroup(validate = false, heading = "%nSampling:%n")
+    Sampling sampling = new Sampling();
+
+    @ArgGroup(validate = false, heading = "%nLight transport:%n")
+    TransportOptions transport = new TransportOptions();
+
+    @ArgGroup(validate = false, heading = "%nLens:%n")
+    LensOptions lens = new LensOptions();
+
+    @ArgGroup(validate = false, heading = "%nEnvironment:%n")
+    EnvironmentOptions environment = new EnvironmentOptions();
+
+    @ArgGroup(validate = false, heading = "%nExecution:%n")
+    ExecutionOptions execution = new ExecutionOptions();
+
+    @ArgGroup(validate = false, heading = "%nTeaching option (docs/experiments.md):%n")
+    ShadowsOption teaching = new ShadowsOption();
+
+    /** view's --spp, the stop-at count, beside the shared --seed. */
+    static final class Sampling extends SamplingOptions {
+        @Option(names = "--spp", defaultValue = "1024", order = 1,
+                description = "Stop at this many samples per pixel; 0 = never stop (default: ${DEFAULT-VALUE}).")
+        int stopAt;
+    }
+
     /** What the options say; those given on the command line win over the scene file's settings. */
     ViewerOptions options() {
-        return new ViewerOptions(scene, width, height, spp, transport.maxDepth, transport.hemisphere, threads, seed,
-                transport.integrator, transport.lightSamples, Theme.parse(theme), given(), transport.photons, transport.photonRadius,
-                SceneFileOptions.aovs(aovNames), lens.overrides(), transport.shadows());
+        RenderSettings s = transport.applyTo(sampling.applyTo(film.applyTo(RenderSettings.defaults())));
+        s = teaching.applyTo(execution.applyTo(s));
+        lens.check();
+        return new ViewerOptions(scene, s, sampling.stopAt, Theme.parse(theme), given(),
+                new SceneOverrides(environment.envmap, lens.aperture, lens.focusDistance));
     }
 
     /**
@@ -91,10 +98,11 @@ final class ViewCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         try {
-            Viewer.open(options(), HeapCheck::checkFilm).awaitClosed();   // refuses a film too large for the heap, as render does
+            // refuses a film too large for the heap, as render does; a viewer that keeps feature buffers denoises them
+            Viewer.open(options(), (w, h, features) -> HeapCheck.checkRender(w, h, features, features)).awaitClosed();
             return 0;
         } catch (SceneException | IllegalArgumentException e) {
-            err.println("strahl: " + e.getMessage());
+            err.println("strahl: " + dev.strahl.codec.Printable.line(e.getMessage()));
             if (debug.enabled) {
                 e.printStackTrace(err);
             }

@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.Callable;
+import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -21,6 +22,7 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "worker",
         mixinStandardHelpOptions = true,
+        abbreviateSynopsis = true,
         versionProvider = Main.Version.class,
         description = {"Joins (or starts) a render cluster and renders parts of the renders started with 'strahl render --cluster',",
             "until Ctrl-C. Hazelcast's community edition has no authentication or encryption: run it on a trusted network only",
@@ -31,37 +33,36 @@ final class WorkerCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--join", paramLabel = "HOST[:PORT],...", split = ",",
-            description = "Members to join (none answering within 10 s is an error); without it this worker starts a cluster of its own that others join.")
-    List<String> join = new ArrayList<>();
-
-    @Option(names = "--bind", paramLabel = "ADDR", defaultValue = "127.0.0.1",
-            description = "The address to listen on and be reached at (default: ${DEFAULT-VALUE}; give this machine's LAN address for a cluster of machines).")
-    String bind;
-
-    @Option(names = "--port", defaultValue = "5701", description = "The port to listen on (default: ${DEFAULT-VALUE}).")
-    int port;
-
-    @Option(names = "--cluster-name", paramLabel = "NAME", defaultValue = "strahl",
-            description = "Only members with the same name form a cluster (default: ${DEFAULT-VALUE}).")
-    String clusterName;
-
-    @Option(names = "--threads", defaultValue = "0", description = "Render threads; 0 = all processors (default: ${DEFAULT-VALUE}).")
-    int threads;
-
     @Option(names = {"-q", "--quiet"}, description = "Print nothing but errors.")
     boolean quiet;
+
+    @ArgGroup(validate = false, heading = "%nCluster:%n")
+    Membership cluster = new Membership();
+
+    @ArgGroup(validate = false, heading = "%nExecution:%n")
+    ExecutionOptions execution = new ExecutionOptions();
+
+    /** The members to join and the port, beside the address and cluster name that render --cluster shares. */
+    static final class Membership extends ClusterAddress {
+        @Option(names = "--join", paramLabel = "HOST[:PORT],...", split = ",", order = 1,
+                description = "Members to join (none answering within 10 s is an error); without it this worker starts a cluster of its own that others join.")
+        List<String> join = new ArrayList<>();
+
+        @Option(names = "--port", defaultValue = "5701", order = 4, description = "The port to listen on (default: ${DEFAULT-VALUE}).")
+        int port;
+    }
 
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
+        int threads = execution.threads;
         if (threads < 0) {
             return usage(err, "--threads must be >= 0, got " + threads);
         }
-        if (port < 1 || port > 65535) {
-            return usage(err, "--port must be in 1..65535, got " + port);
+        if (cluster.port < 1 || cluster.port > 65535) {
+            return usage(err, "--port must be in 1..65535, got " + cluster.port);
         }
-        if (clusterName.isBlank()) {
+        if (cluster.clusterName.isBlank()) {
             return usage(err, "--cluster-name must not be empty");
         }
         try (Interrupts irq = Interrupts.install(err)) {
@@ -69,7 +70,8 @@ final class WorkerCommand implements Callable<Integer> {
             irq.onFirstSignal(stop::countDown, "leaving the cluster");
             RenderCluster member;
             try {
-                member = RenderCluster.builder().join(join.toArray(String[]::new)).bind(bind).port(port).clusterName(clusterName)
+                member = RenderCluster.builder().join(cluster.join.toArray(String[]::new)).bind(cluster.bind).port(cluster.port)
+                        .clusterName(cluster.clusterName)
                         .threads(threads).joinTimeout(Duration.ofSeconds(10)).log(line -> report(err, line)).start();
             } catch (IOException | IllegalStateException | IllegalArgumentException e) {
                 err.println("strahl: " + e.getMessage());

@@ -218,10 +218,10 @@ final class CoordinatedJob implements JobChannel {
     }
 
     @Override
-    public synchronized List<MemberFigures> figures() {
-        List<MemberFigures> list = new ArrayList<>();
+    public synchronized <M> List<M> figures(MemberFigures<M> make) {
+        List<M> list = new ArrayList<>();
         for (Slot s : slots.values()) {
-            list.add(new MemberFigures(HazelcastMember.name(s.member), s.member.localMember(), s.threads,
+            list.add(make.of(HazelcastMember.name(s.member), s.member.localMember(), s.threads,
                     s.units, s.samples, s.sent, s.received, s.seconds, s.lost));
         }
         return list;

@@ -1,6 +1,6 @@
 package dev.strahl.cluster;
 
-import dev.strahl.io.image.FileReads;
+import dev.strahl.files.FileReads;
 import dev.strahl.io.json.SceneFile;
 import dev.strahl.scene.Camera;
 import java.io.ByteArrayInputStream;
@@ -32,11 +32,11 @@ import org.joml.Vector3d;
  * @param files     relative path → content hash, the scene file included
  * @param sizes     relative path → bytes
  * @param camera    the camera to render with
- * @param settings  the settings, as the render package encoded them
+ * @param settings  the settings, by name, as the render package wrote them
  * @param digest    the fingerprint of the coordinator's scene
  */
-record JobFiles(String sceneFile, Map<String, String> files, Map<String, Long> sizes, Camera camera, byte[] settings, byte[] digest) {
-    private static final int FORMAT = 1;
+record JobFiles(String sceneFile, Map<String, String> files, Map<String, Long> sizes, Camera camera, String settings, byte[] digest) {
+    private static final int FORMAT = 2;
 
     /**
      * Finds the files of a scene (by loading it and noting every file a reader opens) and hashes them.
@@ -44,7 +44,7 @@ record JobFiles(String sceneFile, Map<String, String> files, Map<String, Long> s
      * @param sceneFile the scene file on the coordinator
      * @param byHash    receives content hash → absolute path, to answer the members' fetches
      */
-    static JobFiles of(Path sceneFile, Camera camera, byte[] settings, byte[] digest, Map<String, Path> byHash) throws IOException {
+    static JobFiles of(Path sceneFile, Camera camera, String settings, byte[] digest, Map<String, Path> byHash) throws IOException {
         var read = new TreeSet<Path>();
         Path scene = sceneFile.toAbsolutePath().normalize();
         read.add(scene);
@@ -104,8 +104,9 @@ record JobFiles(String sceneFile, Map<String, String> files, Map<String, Long> s
                 out.writeDouble(v.z);
             }
             out.writeDouble(camera.fovDegrees());
-            out.writeInt(settings.length);
-            out.write(settings);
+            out.writeDouble(camera.aperture());
+            out.writeDouble(camera.focusDistance());
+            out.writeUTF(settings);
             out.writeInt(digest.length);
             out.write(digest);
             out.writeInt(files.size());
@@ -131,8 +132,8 @@ record JobFiles(String sceneFile, Map<String, String> files, Map<String, Long> s
         var from = new Vector3d(in.readDouble(), in.readDouble(), in.readDouble());
         var at = new Vector3d(in.readDouble(), in.readDouble(), in.readDouble());
         var up = new Vector3d(in.readDouble(), in.readDouble(), in.readDouble());
-        var camera = new Camera(from, at, up, in.readDouble());
-        byte[] settings = in.readNBytes(checkedLength(in.readInt()));
+        var camera = new Camera(from, at, up, in.readDouble(), in.readDouble(), in.readDouble());
+        String settings = in.readUTF();
         byte[] digest = in.readNBytes(checkedLength(in.readInt()));
         int n = in.readInt();
         if (n < 1 || n > 1_000_000) {

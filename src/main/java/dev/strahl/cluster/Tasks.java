@@ -7,6 +7,7 @@ import com.hazelcast.nio.ObjectDataOutput;
 import com.hazelcast.nio.serialization.DataSerializableFactory;
 import com.hazelcast.nio.serialization.IdentifiedDataSerializable;
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.util.UUID;
 import java.util.concurrent.Callable;
 
@@ -39,19 +40,24 @@ final class Tasks {
         }
     }
 
-    /** What every task carries: the job, its coordinator and the sender's strahl version; and the member it runs on. */
+    /**
+     * What every task carries: the job, its coordinator, the sender's strahl version and what it is
+     * about (a work unit, a content hash, nothing); and the member it runs on.
+     */
     abstract static class Base implements Callable<byte[]>, IdentifiedDataSerializable, HazelcastInstanceAware {
         String job;
         UUID coordinator;
         String version;
+        byte[] payload;
         transient HazelcastMember member;
 
         Base() {}
 
-        Base(String job, UUID coordinator, String version) {
+        Base(String job, UUID coordinator, String version, byte[] payload) {
             this.job = job;
             this.coordinator = coordinator;
             this.version = version;
+            this.payload = payload;
         }
 
         @Override
@@ -70,6 +76,7 @@ final class Tasks {
             out.writeLong(coordinator.getMostSignificantBits());
             out.writeLong(coordinator.getLeastSignificantBits());
             out.writeString(version);
+            out.writeByteArray(payload);
         }
 
         @Override
@@ -77,6 +84,7 @@ final class Tasks {
             job = in.readString();
             coordinator = new UUID(in.readLong(), in.readLong());
             version = in.readString();
+            payload = in.readByteArray();
         }
 
         @Override
@@ -99,71 +107,41 @@ final class Tasks {
         abstract byte[] run() throws IOException;
     }
 
-    /** Render one work unit of a job (sent by its coordinator to any member, itself included). */
+    /** Render one work unit of a job (sent by its coordinator to any member, itself included); the payload is the unit. */
     static final class RenderUnit extends Base {
-        byte[] unit;
-
         RenderUnit() {}
 
         RenderUnit(String job, UUID coordinator, String version, byte[] unit) {
-            super(job, coordinator, version);
-            this.unit = unit;
+            super(job, coordinator, version, unit);
         }
 
         @Override
         byte[] run() throws IOException {
-            return member.renderUnit(job, coordinator, unit);
+            return member.renderUnit(job, coordinator, payload);
         }
 
         @Override
         public int getClassId() {
             return RENDER_UNIT;
         }
-
-        @Override
-        public void writeData(ObjectDataOutput out) throws IOException {
-            super.writeData(out);
-            out.writeByteArray(unit);
-        }
-
-        @Override
-        public void readData(ObjectDataInput in) throws IOException {
-            super.readData(in);
-            unit = in.readByteArray();
-        }
     }
 
-    /** Fetch a job's description (an empty hash) or one of its files by content hash (sent to the coordinator). */
+    /** Fetch a job's description (an empty hash) or one of its files by content hash, the payload (sent to the coordinator). */
     static final class Fetch extends Base {
-        String hash;
-
         Fetch() {}
 
         Fetch(String job, UUID coordinator, String version, String hash) {
-            super(job, coordinator, version);
-            this.hash = hash;
+            super(job, coordinator, version, hash.getBytes(StandardCharsets.US_ASCII));
         }
 
         @Override
         byte[] run() throws IOException {
-            return member.answerFetch(job, hash);
+            return member.answerFetch(job, new String(payload, StandardCharsets.US_ASCII));
         }
 
         @Override
         public int getClassId() {
             return FETCH;
-        }
-
-        @Override
-        public void writeData(ObjectDataOutput out) throws IOException {
-            super.writeData(out);
-            out.writeString(hash);
-        }
-
-        @Override
-        public void readData(ObjectDataInput in) throws IOException {
-            super.readData(in);
-            hash = in.readString();
         }
     }
 
@@ -172,7 +150,7 @@ final class Tasks {
         EndJob() {}
 
         EndJob(String job, UUID coordinator, String version) {
-            super(job, coordinator, version);
+            super(job, coordinator, version, new byte[0]);
         }
 
         @Override

@@ -1,12 +1,13 @@
 package dev.strahl.film;
 
 import dev.strahl.image.Image;
+import dev.strahl.integrator.FeatureTracer;
 
 /**
  * The HDR accumulation buffer of a render: per pixel the sums of r, g, b in double precision, the
  * sum of the squared luminance of the samples (for the per-pixel variance a denoiser needs), the
  * number of samples and, optionally, the sums of the feature buffers (albedo, normal, depth: see
- * {@code dev.strahl.integrator.FeatureTracer}). Memory is laid out tile by tile ({@value #TILE}×{@value #TILE} pixels),
+ * {@link FeatureTracer}). Memory is laid out tile by tile ({@value #TILE}×{@value #TILE} pixels),
  * so that a worker rendering one tile writes one contiguous block.
  *
  * <p>Each pixel is written by one thread at a time (the renderer hands out disjoint tiles), and
@@ -21,12 +22,10 @@ public final class Film {
     private final int width;
     private final int height;
     private final int tilesX;
-    /** Values per pixel of the feature sums: albedo r, g, b, normal x, y, z, depth. */
-    public static final int FEATURES = 7;
 
     private final double[] sum;
     private final double[] sumSquares;
-    /** Feature sums, {@value #FEATURES} per pixel, or null without feature buffers. */
+    /** Feature sums, {@value FeatureTracer#CHANNELS} per pixel, or null without feature buffers. */
     private final double[] features;
     private final int[] count;
 
@@ -56,12 +55,12 @@ public final class Film {
         this.tilesX = (width + TILE - 1) / TILE;
         int tilesY = (height + TILE - 1) / TILE;
         long pixels = (long) tilesX * tilesY * TILE * TILE;
-        if ((features ? FEATURES : 3) * pixels > Integer.MAX_VALUE - 8) {
+        if ((features ? FeatureTracer.CHANNELS : 3) * pixels > Integer.MAX_VALUE - 8) {
             throw new IllegalArgumentException("film " + width + "x" + height + " is too large");
         }
         this.sum = new double[(int) (3 * pixels)];
         this.sumSquares = new double[(int) pixels];
-        this.features = features ? new double[(int) (FEATURES * pixels)] : null;
+        this.features = features ? new double[(int) (FeatureTracer.CHANNELS * pixels)] : null;
         this.count = new int[(int) pixels];
     }
 
@@ -86,7 +85,7 @@ public final class Film {
      */
     public static long bytesNeeded(int width, int height, boolean features) {
         long tiles = (long) ((width + TILE - 1) / TILE) * ((height + TILE - 1) / TILE);
-        return tiles * TILE * TILE * (4 * 8 + 4 + (features ? FEATURES * 8 : 0));
+        return tiles * TILE * TILE * (4 * 8 + 4 + (features ? FeatureTracer.CHANNELS * 8 : 0));
     }
 
     /**
@@ -166,7 +165,7 @@ public final class Film {
     }
 
     /**
-     * Adds one sample's features ({@value #FEATURES} values from {@code f}) to a pixel; call it
+     * Adds one sample's features ({@value FeatureTracer#CHANNELS} values from {@code f}) to a pixel; call it
      * with {@link #add} for the same sample. Not thread-safe, like {@link #add}.
      *
      * @param pixelIndex the pixel
@@ -177,8 +176,8 @@ public final class Film {
         if (features == null) {
             throw new IllegalStateException("this film keeps no feature buffers");
         }
-        int k = FEATURES * pixelIndex;
-        for (int i = 0; i < FEATURES; i++) {
+        int k = FeatureTracer.CHANNELS * pixelIndex;
+        for (int i = 0; i < FeatureTracer.CHANNELS; i++) {
             features[k + i] += f[i];
         }
     }
@@ -238,13 +237,13 @@ public final class Film {
     /**
      * The saved state of pixel (x, y), for checkpoints: its r, g, b sums go into
      * {@code sumsDest[0..2]}, its sum of squared luminance into {@code sumsDest[3]}, with feature
-     * buffers their {@value #FEATURES} sums into {@code sumsDest[4..10]}, and its sample count is
+     * buffers their {@value FeatureTracer#CHANNELS} sums into {@code sumsDest[4..10]}, and its sample count is
      * returned. Only consistent while nothing
      * renders into the film (between passes, or after the render).
      *
      * @param x        column
      * @param y        row
-     * @param sumsDest receives the sums: 4 values, or 4 + {@value #FEATURES} with feature buffers
+     * @param sumsDest receives the sums: 4 values, or 4 + {@value FeatureTracer#CHANNELS} with feature buffers
      * @return the pixel's sample count
      */
     public int pixelState(int x, int y, double[] sumsDest) {
@@ -254,7 +253,7 @@ public final class Film {
         sumsDest[2] = sum[3 * p + 2];
         sumsDest[3] = sumSquares[p];
         if (features != null) {
-            System.arraycopy(features, FEATURES * p, sumsDest, 4, FEATURES);
+            System.arraycopy(features, FeatureTracer.CHANNELS * p, sumsDest, 4, FeatureTracer.CHANNELS);
         }
         return count[p];
     }
@@ -262,10 +261,10 @@ public final class Film {
     /**
      * How many sums {@link #pixelState} writes per pixel.
      *
-     * @return 4, or 4 + {@value #FEATURES} with feature buffers
+     * @return 4, or 4 + {@value FeatureTracer#CHANNELS} with feature buffers
      */
     public int stateSums() {
-        return features != null ? 4 + FEATURES : 4;
+        return features != null ? 4 + FeatureTracer.CHANNELS : 4;
     }
 
     /**
@@ -291,7 +290,7 @@ public final class Film {
         sum[3 * p + 2] = sums[2];
         sumSquares[p] = sums[3];
         if (features != null) {
-            System.arraycopy(sums, 4, features, FEATURES * p, FEATURES);
+            System.arraycopy(sums, 4, features, FeatureTracer.CHANNELS * p, FeatureTracer.CHANNELS);
         }
         count[p] = samples;
     }
@@ -365,7 +364,7 @@ public final class Film {
                 int n = count[p];
                 if (n > 0) {
                     int o = 3 * (y * width + x);
-                    int k = FEATURES * p + offset;
+                    int k = FeatureTracer.CHANNELS * p + offset;
                     for (int c = 0; c < 3; c++) {
                         v[o + c] = (float) (features[offset == 6 ? k : k + c] / n);
                     }

@@ -49,27 +49,11 @@ public final class GeometryBuilder {
         int base = vertexCount;
         ensureVertices(vertexCount + p.length / 3);
         System.arraycopy(p, 0, pos, 3 * base, p.length);
-        if (n != null) {
-            if (!hasNormals) {
-                Arrays.fill(nrm, 0, 3 * base, Float.NaN);
-                hasNormals = true;
-            }
-            System.arraycopy(n, 0, nrm, 3 * base, n.length);
-        } else {
-            Arrays.fill(nrm, 3 * base, 3 * (base + p.length / 3), Float.NaN);
+        hasNormals = addAttribute(n, nrm, 3, base, p.length / 3, hasNormals);
+        if (uvs != null && uvs.length != 2 * (p.length / 3)) {
+            throw new IllegalArgumentException("need u, v per vertex: " + uvs.length + " values for " + p.length / 3 + " vertices");
         }
-        if (uvs != null) {
-            if (uvs.length != 2 * (p.length / 3)) {
-                throw new IllegalArgumentException("need u, v per vertex: " + uvs.length + " values for " + p.length / 3 + " vertices");
-            }
-            if (!hasUvs) {
-                Arrays.fill(uv, 0, 2 * base, Float.NaN);
-                hasUvs = true;
-            }
-            System.arraycopy(uvs, 0, uv, 2 * base, uvs.length);
-        } else {
-            Arrays.fill(uv, 2 * base, 2 * (base + p.length / 3), Float.NaN);
-        }
+        hasUvs = addAttribute(uvs, uv, 2, base, p.length / 3, hasUvs);
         vertexCount += p.length / 3;
         for (int t = 0; t < triangles; t++) {
             int a = idx[3 * t], b = idx[3 * t + 1], c = idx[3 * t + 2];
@@ -86,6 +70,25 @@ public final class GeometryBuilder {
             triangleCount++;
         }
         return this;
+    }
+
+    /**
+     * Copies a vertex attribute ({@code perVertex} floats a vertex: normals, texture coordinates)
+     * of {@code count} new vertices from {@code base} on into {@code dest}: NaN where the mesh has
+     * none, and once a mesh has it, NaN for the vertices before that had none.
+     *
+     * @return whether the geometry has the attribute now
+     */
+    private static boolean addAttribute(float[] values, float[] dest, int perVertex, int base, int count, boolean had) {
+        if (values == null) {
+            Arrays.fill(dest, perVertex * base, perVertex * (base + count), Float.NaN);
+            return had;
+        }
+        if (!had) {
+            Arrays.fill(dest, 0, perVertex * base, Float.NaN);
+        }
+        System.arraycopy(values, 0, dest, perVertex * base, values.length);
+        return true;
     }
 
     public GeometryBuilder addSphere(Sphere sphere, int material) {

@@ -2,7 +2,7 @@ package dev.strahl.integrator;
 
 import dev.strahl.geometry.Ray;
 import dev.strahl.material.Bsdf;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.sampling.SplitMix64;
 import dev.strahl.world.World;
 import java.util.Arrays;

@@ -1,6 +1,6 @@
 package dev.strahl.integrator;
 
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.geometry.Ray;
 import dev.strahl.material.Bsdf;
 import dev.strahl.material.BsdfSample;

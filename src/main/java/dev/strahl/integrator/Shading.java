@@ -7,7 +7,7 @@ import dev.strahl.material.Bsdf;
 import dev.strahl.material.BsdfSample;
 import dev.strahl.math.Frame;
 import dev.strahl.light.Emission;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.sampling.Sample2D;
 import dev.strahl.sampling.Sampler;
 import dev.strahl.world.SurfaceMaps;

@@ -2,7 +2,7 @@ package dev.strahl.integrator;
 
 import dev.strahl.geometry.Ray;
 import dev.strahl.light.Environment;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.light.LightSampler;
 import dev.strahl.material.Bsdf;
 import dev.strahl.world.World;

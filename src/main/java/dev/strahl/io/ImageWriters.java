@@ -1,15 +1,14 @@
 package dev.strahl.io;
 
-import dev.strahl.film.Film;
-import dev.strahl.film.Tonemap;
+import dev.strahl.color.DisplayEncoding;
 import dev.strahl.image.Image;
 import dev.strahl.image.ToneMapping;
-import dev.strahl.io.exr.ExrCompression;
-import dev.strahl.io.exr.ExrPixelType;
-import dev.strahl.io.exr.ExrWriter;
-import dev.strahl.io.image.AtomicFile;
-import dev.strahl.io.image.PfmWriter;
-import dev.strahl.io.image.PngWriter;
+import dev.strahl.codec.exr.ExrCompression;
+import dev.strahl.codec.exr.ExrPixelType;
+import dev.strahl.codec.exr.ExrWriter;
+import dev.strahl.files.AtomicFile;
+import dev.strahl.codec.PfmWriter;
+import dev.strahl.codec.PngWriter;
 import dev.strahl.render.Aov;
 import dev.strahl.render.RenderBuffers;
 import java.io.IOException;
@@ -22,8 +21,8 @@ import java.util.Objects;
 /**
  * Writes images to files, choosing the format by the file name's extension (case-insensitive):
  * <ul>
- *   <li>{@code .png} — 8-bit sRGB: exposure and tone curve ({@link Options}; by default none and
- *       clamping to [0, 1]), then the sRGB transfer function;</li>
+ *   <li>{@code .png} — 8-bit sRGB: exposure and tone curve ({@link #withExposure},
+ *       {@link #withToneMapping}; by default none and clamping to [0, 1]), then the sRGB transfer function;</li>
  *   <li>{@code .pfm} — linear 32-bit float RGB, the values exactly as rendered;</li>
  *   <li>{@code .exr} — OpenEXR, scanline, linear: channels {@code R}, {@code G}, {@code B} and,
  *       from {@link RenderBuffers}, the feature buffers in the same file as {@code albedo.R/G/B},
@@ -43,36 +42,73 @@ public final class ImageWriters {
 
     private enum Format { PNG, PFM, EXR }
 
-    /**
-     * How to write: the PNG's exposure and tone curve, the EXR's sample type and compression.
-     * Linear outputs (PFM, EXR) hold the values as rendered whatever the exposure and curve.
-     *
-     * @param toneMapping the PNG's tone curve
-     * @param exposure    the PNG's exposure in stops: each value is multiplied by 2^exposure
-     * @param exrFloat    EXR samples as 32-bit float rather than 16-bit half
-     * @param exrZip      ZIP-compress the EXR (else uncompressed)
-     */
-    public record Options(ToneMapping toneMapping, double exposure, boolean exrFloat, boolean exrZip) {
-        /** Clamping, exposure 0, half samples, ZIP: PNGs as they always were, EXRs as Mitsuba writes them. */
-        public static final Options DEFAULT = new Options(ToneMapping.CLAMP, 0, false, true);
+    private static final ImageWriters DEFAULTS = new ImageWriters(ToneMapping.CLAMP, 0, false, true);
 
-        /**
-         * Checks the values.
-         *
-         * @param toneMapping the PNG's tone curve
-         * @param exposure    the PNG's exposure in stops, finite
-         * @param exrFloat    EXR samples as float rather than half
-         * @param exrZip      ZIP-compress the EXR
-         */
-        public Options {
-            Objects.requireNonNull(toneMapping, "toneMapping");
-            if (!Double.isFinite(exposure)) {
-                throw new IllegalArgumentException("exposure must be a finite number of stops, got " + exposure);
-            }
+    private final ToneMapping toneMapping;
+    private final double exposure;
+    private final boolean exrFloat;
+    private final boolean exrZip;
+
+    private ImageWriters(ToneMapping toneMapping, double exposure, boolean exrFloat, boolean exrZip) {
+        this.toneMapping = Objects.requireNonNull(toneMapping, "toneMapping");
+        if (!Double.isFinite(exposure)) {
+            throw new IllegalArgumentException("exposure must be a finite number of stops, got " + exposure);
         }
+        this.exposure = exposure;
+        this.exrFloat = exrFloat;
+        this.exrZip = exrZip;
     }
 
-    private ImageWriters() {
+    /**
+     * A writer as {@link #write(Image, Path)} writes: PNGs clamped at exposure 0, as they always
+     * were; EXRs with half samples and ZIP compression, as Mitsuba writes them. The {@code with...}
+     * methods return changed copies. Linear outputs (PFM, EXR) hold the values as rendered whatever
+     * the exposure and curve.
+     *
+     * @return the default writer
+     */
+    public static ImageWriters defaults() {
+        return DEFAULTS;
+    }
+
+    /**
+     * This writer with another tone curve for PNGs.
+     *
+     * @param curve the PNG's tone curve
+     * @return a new writer
+     */
+    public ImageWriters withToneMapping(ToneMapping curve) {
+        return new ImageWriters(curve, exposure, exrFloat, exrZip);
+    }
+
+    /**
+     * This writer with another exposure for PNGs.
+     *
+     * @param stops each value is multiplied by 2^stops before the tone curve; finite
+     * @return a new writer
+     */
+    public ImageWriters withExposure(double stops) {
+        return new ImageWriters(toneMapping, stops, exrFloat, exrZip);
+    }
+
+    /**
+     * This writer with other EXR samples.
+     *
+     * @param asFloat 32-bit float samples rather than 16-bit half (depth is float either way)
+     * @return a new writer
+     */
+    public ImageWriters withExrFloat(boolean asFloat) {
+        return new ImageWriters(toneMapping, exposure, asFloat, exrZip);
+    }
+
+    /**
+     * This writer with or without EXR compression.
+     *
+     * @param zip ZIP-compress the EXR (else uncompressed)
+     * @return a new writer
+     */
+    public ImageWriters withExrZip(boolean zip) {
+        return new ImageWriters(toneMapping, exposure, exrFloat, zip);
     }
 
     /**
@@ -86,7 +122,7 @@ public final class ImageWriters {
      */
     public static void write(Image img, Path out) throws IOException {
         Objects.requireNonNull(img, "img");
-        write(RenderBuffers.of(img), out, Options.DEFAULT);
+        DEFAULTS.write(RenderBuffers.of(img), out);
     }
 
     /**
@@ -95,24 +131,24 @@ public final class ImageWriters {
      * {@code NAME.depth.pfm} (where {@code NAME} is {@code out} without its extension). The
      * variance is not written.
      *
+     * The PNG's tone curve and exposure, the EXR's sample type and compression are this writer's.
+     *
      * @param buffers the image and its feature buffers
      * @param out     the file to write, ending in {@code .png}, {@code .pfm} or {@code .exr}
-     * @param options the PNG's tone curve and exposure, the EXR's sample type and compression
      * @throws IllegalArgumentException if the extension is not a supported format (nothing is written)
      * @throws IOException              if a file cannot be written; each file is replaced atomically
      */
-    public static void write(RenderBuffers buffers, Path out, Options options) throws IOException {
+    public void write(RenderBuffers buffers, Path out) throws IOException {
         Objects.requireNonNull(buffers, "buffers");
-        Objects.requireNonNull(options, "options");
         Format format = formatOf(out);
         Image img = buffers.color();
         if (format == Format.EXR) {
-            writeExr(buffers, out, options);
+            writeExr(buffers, out);
             return;
         }
         AtomicFile.write(out, os -> {
             if (format == Format.PNG) {
-                PngWriter.write(Tonemap.toBufferedImage(img, options.exposure(), options.toneMapping()), os);
+                PngWriter.write(DisplayEncoding.toBufferedImage(img, exposure, toneMapping), os);
             } else {
                 PfmWriter.write(img, os);
             }
@@ -127,7 +163,7 @@ public final class ImageWriters {
     }
 
     /**
-     * Where {@link #write(RenderBuffers, Path, Options)} puts a feature buffer beside a PNG or PFM.
+     * Where {@link #write(RenderBuffers, Path)} puts a feature buffer beside a PNG or PFM.
      *
      * @param out the image file
      * @param aov the feature buffer
@@ -140,7 +176,7 @@ public final class ImageWriters {
         return out.resolveSibling(base + "." + aov.id() + ".pfm");
     }
 
-    private static void writeExr(RenderBuffers buffers, Path out, Options options) throws IOException {
+    private void writeExr(RenderBuffers buffers, Path out) throws IOException {
         Image img = buffers.color();
         int w = img.width();
         int h = img.height();
@@ -155,8 +191,8 @@ public final class ImageWriters {
         if (buffers.depth() != null) {
             addChannels(channels, buffers.depth(), new String[] {"depth.Z"}, ExrPixelType.FLOAT);
         }
-        ExrWriter.write(out, w, h, channels, new ExrWriter.Options(options.exrFloat() ? ExrPixelType.FLOAT : ExrPixelType.HALF,
-                options.exrZip() ? ExrCompression.ZIP : ExrCompression.NONE));
+        ExrWriter.write(out, w, h, channels, new ExrWriter.Options(exrFloat ? ExrPixelType.FLOAT : ExrPixelType.HALF,
+                exrZip ? ExrCompression.ZIP : ExrCompression.NONE));
     }
 
     private static void addChannels(List<ExrWriter.Channel> dest, Image img, String[] names, ExrPixelType type) {
@@ -169,22 +205,6 @@ public final class ImageWriters {
             }
             dest.add(new ExrWriter.Channel(names[c], v, type));
         }
-    }
-
-    /**
-     * Writes the current mean image of a film ({@link Film#toImage()}); otherwise as
-     * {@link #write(Image, Path)}.
-     *
-     * @param film the film, possibly still being rendered into
-     * @param out  the file to write, ending in {@code .png} or {@code .pfm}
-     * @throws IllegalArgumentException if the extension is not a supported format (nothing is written)
-     * @throws IOException              if the directory of {@code out} does not exist or the file cannot
-     *                                  be written; {@code out} is then unchanged
-     */
-    public static void write(Film film, Path out) throws IOException {
-        Objects.requireNonNull(film, "film");
-        formatOf(out);                       // refuse a bad name before copying the film
-        write(film.toImage(), out);
     }
 
     /**

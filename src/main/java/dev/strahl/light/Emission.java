@@ -1,8 +1,8 @@
 package dev.strahl.light;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
-import dev.strahl.texture.Texture;
+import dev.strahl.color.MutableRgb;
+import dev.strahl.texture.TextureLookup;
 import java.util.Objects;
 import org.joml.Vector2dc;
 
@@ -21,12 +21,12 @@ public final class Emission {
     public static final Emission BLACK = new Emission(Rgb.BLACK, null, null, 0);
 
     private final Rgb scale;
-    private final Texture texture;
-    private final Texture alpha;
+    private final TextureLookup texture;
+    private final TextureLookup alpha;
     private final double cutoff;
     private final Rgb mean;
 
-    private Emission(Rgb scale, Texture texture, Texture alpha, double cutoff) {
+    private Emission(Rgb scale, TextureLookup texture, TextureLookup alpha, double cutoff) {
         this.scale = Objects.requireNonNull(scale, "scale");
         this.texture = texture;
         this.alpha = alpha;
@@ -39,11 +39,20 @@ public final class Emission {
         return radiance.isBlack() ? BLACK : new Emission(radiance, null, null, 0);
     }
 
+    /** A constant radiance per material (the tests' area lights). */
+    static Emission[] constants(Rgb... radiance) {
+        Emission[] out = new Emission[radiance.length];
+        for (int m = 0; m < out.length; m++) {
+            out[m] = of(radiance[m]);
+        }
+        return out;
+    }
+
     /**
      * Radiance scale ⊙ texture(u, v), the texture's colour (already linear), masked where
      * {@code alpha}(u, v) &lt; {@code cutoff}; {@code texture} or {@code alpha} may be null.
      */
-    public static Emission of(Rgb scale, Texture texture, Texture alpha, double cutoff) {
+    public static Emission of(Rgb scale, TextureLookup texture, TextureLookup alpha, double cutoff) {
         if (scale.isBlack()) {
             return BLACK;
         }

@@ -1,7 +1,7 @@
 package dev.strahl.light;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.sampling.Warp;
 import java.util.Arrays;
 import java.util.Locale;

@@ -1,6 +1,6 @@
 package dev.strahl.light;
 
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import org.joml.Vector3d;
 import org.joml.Vector3dc;
 

@@ -74,33 +74,6 @@ public final class LightSampler {
     private final double pAreaLightsAlone;
 
     /**
-     * @param emissionByMaterial emitted radiance of each material index (black = not a light)
-     * @param environment        the light from where rays leave the scene (black: none)
-     */
-    public LightSampler(Geometry geometry, Rgb[] emissionByMaterial, Environment environment) {
-        this(geometry, constants(emissionByMaterial), environment, List.of());
-    }
-
-    /**
-     * @param emissionByMaterial emitted radiance of each material index (black = not a light)
-     * @param environment        the light from where rays leave the scene (black: none)
-     * @param punctualLights     point, spot and directional lights
-     */
-    public LightSampler(Geometry geometry, Rgb[] emissionByMaterial, Environment environment, List<PunctualLight> punctualLights) {
-        this(geometry, constants(emissionByMaterial), environment, punctualLights);
-    }
-
-    /**
-     * @param emissionByMaterial emission of each material index (black = not a light), constant or
-     *                           textured; kept, not copied (the world's one table), so it must not
-     *                           change afterwards
-     * @param environment        the light from where rays leave the scene (black: none)
-     */
-    public LightSampler(Geometry geometry, Emission[] emissionByMaterial, Environment environment) {
-        this(geometry, emissionByMaterial, environment, List.of());
-    }
-
-    /**
      * @param emissionByMaterial emission of each material index (black = not a light), constant or
      *                           textured; kept, not copied (the world's one table), so it must not
      *                           change afterwards
@@ -171,11 +144,6 @@ public final class LightSampler {
         return box.isEmpty() ? 1 : Math.max(1e-6, 0.5 * box.diagonal() * (1 + 1e-6));
     }
 
-    /** Area lights only, no environment. */
-    public LightSampler(Geometry geometry, Rgb[] emissionByMaterial) {
-        this(geometry, emissionByMaterial, Environment.BLACK);
-    }
-
     /** The environment (black if the scene has none). */
     public Environment environment() {
         return environment;
@@ -238,14 +206,6 @@ public final class LightSampler {
     private double weight(int material) {
         Rgb le = emission[material].mean();
         return (le.r() + le.g() + le.b()) / 3;
-    }
-
-    private static Emission[] constants(Rgb[] radiance) {
-        Emission[] out = new Emission[radiance.length];
-        for (int m = 0; m < out.length; m++) {
-            out[m] = Emission.of(radiance[m]);
-        }
-        return out;
     }
 
     /**

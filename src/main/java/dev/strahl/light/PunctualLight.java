@@ -3,7 +3,7 @@ package dev.strahl.light;
 import dev.strahl.geometry.Ray;
 import dev.strahl.image.Rgb;
 import dev.strahl.math.Frame;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.sampling.Warp;
 import java.util.Objects;
 import org.joml.Vector3d;

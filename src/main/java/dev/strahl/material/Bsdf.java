@@ -1,6 +1,6 @@
 package dev.strahl.material;
 
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.image.Rgb;
 import org.joml.Vector2d;
 import org.joml.Vector2dc;
@@ -15,7 +15,7 @@ import org.joml.Vector3dc;
  * up its textured parameters (Mitsuba's way: the BSDF stays immutable, nothing is allocated per hit).
  * The overloads without {@code uv} evaluate at (0, 0): for parameters that are constants, and tests.
  */
-public sealed interface Bsdf permits Lambert, Glossy, Conductor, RoughDielectric, Principled, DeltaBsdf {
+public sealed interface Bsdf permits Lambert, Glossy, Conductor, Principled, Glass, DeltaBsdf {
 
     /** Texture coordinates (0, 0), for the overloads without uv. Never modified. */
     Vector2dc ORIGIN = new Vector2d();
@@ -64,6 +64,21 @@ public sealed interface Bsdf permits Lambert, Glossy, Conductor, RoughDielectric
      * </ul>
      */
     void albedo(Vector2dc uv, Vector3dc wo, MutableRgb dest);
+
+    /**
+     * Completes a sample whose direction {@code out.wi} was drawn from one lobe of a mixture: its
+     * pdf is the whole BSDF's ({@link #pdf}: the mixture's density, as MIS needs) and its weight
+     * f·|cos θi|/pdf. False (the path ends) for a direction of zero or non-finite density or weight.
+     */
+    default boolean weighByPdf(Vector2dc uv, Vector3dc wo, BsdfSample out) {
+        out.pdf = pdf(uv, wo, out.wi);
+        if (!(out.pdf > 0) || !Double.isFinite(out.pdf)) {
+            return false;
+        }
+        eval(uv, wo, out.wi, out.weight);
+        out.weight.mul(Math.abs(out.wi.z) / out.pdf);
+        return out.weight.isFinite();
+    }
 
     /** Whether every lobe is a delta (no light sampling possible at this surface). */
     default boolean isDelta() {

@@ -1,8 +1,9 @@
 package dev.strahl.material;
 
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.image.Rgb;
 import org.joml.Vector3d;
+import org.joml.Vector3dc;
 
 /** The result of sampling a BSDF; mutable, reused per thread. */
 public final class BsdfSample {
@@ -24,4 +25,22 @@ public final class BsdfSample {
      * a dense medium are not killed for a factor that leaving it undoes.
      */
     public double eta = 1;
+
+    /**
+     * The perfect mirror direction of {@code wo} (a delta lobe chosen for sure: pdf 1, η' 1), for
+     * a BSDF that sets the weight; false below the surface, where a mirror reflects nothing.
+     *
+     * @param wo the outgoing direction in the local frame
+     * @return whether there is a reflection
+     */
+    public boolean reflectSpecularly(Vector3dc wo) {
+        if (wo.z() <= 0) {
+            return false;
+        }
+        Fresnel.reflect(wo, wi);
+        pdf = 1;
+        delta = true;
+        eta = 1;
+        return true;
+    }
 }

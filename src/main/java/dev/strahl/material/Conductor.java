@@ -1,8 +1,8 @@
 package dev.strahl.material;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
-import dev.strahl.texture.Texture;
+import dev.strahl.color.MutableRgb;
+import dev.strahl.texture.TextureLookup;
 import java.util.Map;
 import java.util.Objects;
 import org.joml.Vector2dc;
@@ -29,7 +29,7 @@ import org.joml.Vector3dc;
  * @param k     the absorption coefficient per channel, ≥ 0
  * @param alpha GGX roughness α (a scalar texture), clamped below to {@link Ggx#MIN_ALPHA}
  */
-public record Conductor(Rgb eta, Rgb k, Texture alpha) implements Bsdf {
+public record Conductor(Rgb eta, Rgb k, TextureLookup alpha) implements Bsdf {
 
     /** η and k of the named metals, as Mitsuba 3's scalar_rgb variant has them (see the class documentation). */
     public static final Map<String, Rgb[]> PRESETS = Map.of(
@@ -68,7 +68,7 @@ public record Conductor(Rgb eta, Rgb k, Texture alpha) implements Bsdf {
      * A conductor: smooth (a {@link SmoothConductor}, delta reflection) if α is the constant 0,
      * rough otherwise.
      */
-    public static Bsdf of(Rgb eta, Rgb k, Texture alpha) {
+    public static Bsdf of(Rgb eta, Rgb k, TextureLookup alpha) {
         if (alpha.isConstant() && alpha.value(0, 0) == 0) {
             return new SmoothConductor(eta, k);
         }

@@ -1,6 +1,6 @@
 package dev.strahl.material;
 
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import org.joml.Vector2dc;
 import org.joml.Vector3dc;
 

@@ -1,7 +1,5 @@
 package dev.strahl.material;
 
-import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
 import org.joml.Vector2dc;
 import org.joml.Vector3dc;
 
@@ -32,7 +30,7 @@ import org.joml.Vector3dc;
  *
  * @param eta index of refraction of the inside relative to the outside, positive
  */
-public record Dielectric(double eta) implements DeltaBsdf {
+public record Dielectric(double eta) implements DeltaBsdf, Glass {
 
     /**
      * Checks that eta is positive and finite.
@@ -63,16 +61,5 @@ public record Dielectric(double eta) implements DeltaBsdf {
         out.pdf = 1 - reflectance;
         out.eta = etaRelative;
         return true;
-    }
-
-    @Override
-    public boolean isTwoSided() {
-        return false;
-    }
-
-    /** 1: clear glass scatters (reflects or transmits) all light, untinted. */
-    @Override
-    public void albedo(Vector2dc uv, Vector3dc wo, MutableRgb dest) {
-        dest.set(1, 1, 1);
     }
 }

@@ -1,7 +1,7 @@
 package dev.strahl.material;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.sampling.Warp;
 import java.util.Objects;
 import org.joml.Vector2dc;

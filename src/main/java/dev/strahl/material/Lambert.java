@@ -1,9 +1,9 @@
 package dev.strahl.material;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.sampling.Warp;
-import dev.strahl.texture.Texture;
+import dev.strahl.texture.TextureLookup;
 import java.util.Objects;
 import org.joml.Vector2dc;
 import org.joml.Vector3dc;
@@ -17,7 +17,7 @@ import org.joml.Vector3dc;
  * @param albedo   reflectance, each channel in [0, 1]
  * @param uniform  sample directions uniformly over the hemisphere rather than cosine-weighted
  */
-public record Lambert(Texture albedo, boolean uniform) implements Bsdf {
+public record Lambert(TextureLookup albedo, boolean uniform) implements Bsdf {
     private static final double INV_PI = 1 / Math.PI;
 
     /**
@@ -41,7 +41,7 @@ public record Lambert(Texture albedo, boolean uniform) implements Bsdf {
      * @param albedo reflectance, each channel in [0, 1]
      */
     public Lambert(Rgb albedo) {
-        this(Texture.of(Objects.requireNonNull(albedo, "albedo")), false);
+        this(TextureLookup.of(Objects.requireNonNull(albedo, "albedo")), false);
     }
 
     /**
@@ -51,7 +51,7 @@ public record Lambert(Texture albedo, boolean uniform) implements Bsdf {
      * @param uniform sample directions uniformly rather than cosine-weighted
      */
     public Lambert(Rgb albedo, boolean uniform) {
-        this(Texture.of(Objects.requireNonNull(albedo, "albedo")), uniform);
+        this(TextureLookup.of(Objects.requireNonNull(albedo, "albedo")), uniform);
     }
 
     @Override

@@ -1,7 +1,7 @@
 package dev.strahl.material;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import java.util.Objects;
 import org.joml.Vector2dc;
 import org.joml.Vector3dc;
@@ -32,14 +32,10 @@ public record Mirror(Rgb reflectance) implements DeltaBsdf {
 
     @Override
     public boolean sample(Vector2dc uv, Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
-        if (wo.z() <= 0) {
+        if (!out.reflectSpecularly(wo)) {
             return false;
         }
-        Fresnel.reflect(wo, out.wi);
         out.weight.set(reflectance);
-        out.pdf = 1;
-        out.delta = true;
-        out.eta = 1;
         return true;
     }
 

@@ -1,9 +1,9 @@
 package dev.strahl.material;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.sampling.Warp;
-import dev.strahl.texture.Texture;
+import dev.strahl.texture.TextureLookup;
 import java.util.Objects;
 import org.joml.Vector2dc;
 import org.joml.Vector3d;
@@ -42,20 +42,17 @@ import org.joml.Vector3dc;
  * @param transmission  KHR_materials_transmission's transmissionFactor in [0, 1]
  * @param ior           index of refraction (1.5 by default), positive
  */
-public record Principled(Texture baseColor, Texture metallic, Texture roughness, Texture specular, Texture specularColor,
-                         Texture transmission, double ior) implements Bsdf {
+public record Principled(TextureLookup baseColor, TextureLookup metallic, TextureLookup roughness, TextureLookup specular, TextureLookup specularColor,
+                         TextureLookup transmission, double ior) implements Bsdf {
     private static final double INV_PI = 1 / Math.PI;
     /** Smallest probability of a lobe that may be non-zero. */
     private static final double FLOOR = 0.05;
 
-    /** Checks for nulls and the index of refraction. */
+    /** Checks that every parameter has its texture (a constant or an image) and the index of refraction. */
     public Principled {
-        Objects.requireNonNull(baseColor, "baseColor");
-        Objects.requireNonNull(metallic, "metallic");
-        Objects.requireNonNull(roughness, "roughness");
-        Objects.requireNonNull(specular, "specular");
-        Objects.requireNonNull(specularColor, "specularColor");
-        Objects.requireNonNull(transmission, "transmission");
+        for (TextureLookup parameter : new TextureLookup[] {baseColor, metallic, roughness, specular, specularColor, transmission}) {
+            Objects.requireNonNull(parameter, "a principled parameter without texture");
+        }
         if (!(ior > 0) || !Double.isFinite(ior)) {
             throw new IllegalArgumentException("index of refraction must be a positive finite number, got " + ior);
         }
@@ -63,8 +60,8 @@ public record Principled(Texture baseColor, Texture metallic, Texture roughness,
 
     /** A glTF material with the default extension parameters: white specular, no transmission, ior 1.5. */
     public static Principled of(Rgb baseColor, double metallic, double roughness) {
-        return new Principled(Texture.of(baseColor), Texture.of(metallic), Texture.of(roughness), Texture.of(1), Texture.of(Rgb.WHITE),
-                Texture.of(0), 1.5);
+        return new Principled(TextureLookup.of(baseColor), TextureLookup.of(metallic), TextureLookup.of(roughness), TextureLookup.of(1), TextureLookup.of(Rgb.WHITE),
+                TextureLookup.of(0), 1.5);
     }
 
     private double f0Ior() {
@@ -190,13 +187,7 @@ public record Principled(Texture baseColor, Texture metallic, Texture roughness,
         }
         out.delta = false;
         out.eta = 1;
-        out.pdf = pdf(uv, wo, out.wi);
-        if (!(out.pdf > 0) || !Double.isFinite(out.pdf)) {
-            return false;
-        }
-        eval(uv, wo, out.wi, out.weight);
-        out.weight.mul(Math.abs(out.wi.z) / out.pdf);
-        return out.weight.isFinite();
+        return weighByPdf(uv, wo, out);
     }
 
     private static double clamp01(double x) {

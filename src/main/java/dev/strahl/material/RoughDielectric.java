@@ -1,7 +1,7 @@
 package dev.strahl.material;
 
-import dev.strahl.math.MutableRgb;
-import dev.strahl.texture.Texture;
+import dev.strahl.color.MutableRgb;
+import dev.strahl.texture.TextureLookup;
 import java.util.Objects;
 import org.joml.Vector2dc;
 import org.joml.Vector3d;
@@ -32,7 +32,7 @@ import org.joml.Vector3dc;
  * @param eta   index of refraction of the inside relative to the outside, positive
  * @param alpha GGX roughness α (a scalar texture), clamped below to {@link Ggx#MIN_ALPHA}
  */
-public record RoughDielectric(double eta, Texture alpha) implements Bsdf {
+public record RoughDielectric(double eta, TextureLookup alpha) implements Glass {
 
     /**
      * Checks the index and the roughness.
@@ -51,7 +51,7 @@ public record RoughDielectric(double eta, Texture alpha) implements Bsdf {
     }
 
     /** Smooth glass ({@link Dielectric}) if α is the constant 0, rough glass otherwise. */
-    public static Bsdf of(double eta, Texture alpha) {
+    public static Bsdf of(double eta, TextureLookup alpha) {
         if (alpha.isConstant() && alpha.value(0, 0) == 0) {
             return new Dielectric(eta);
         }
@@ -140,23 +140,6 @@ public record RoughDielectric(double eta, Texture alpha) implements Bsdf {
             out.eta = Fresnel.relativeEta(wo.z(), eta);   // the roulette undoes the radiance's 1/η'² (BsdfSample.eta)
         }
         out.delta = false;
-        out.pdf = pdf(uv, wo, out.wi);
-        if (!(out.pdf > 0) || !Double.isFinite(out.pdf)) {
-            return false;
-        }
-        eval(uv, wo, out.wi, out.weight);
-        out.weight.mul(Math.abs(out.wi.z) / out.pdf);
-        return out.weight.isFinite();
-    }
-
-    @Override
-    public boolean isTwoSided() {
-        return false;
-    }
-
-    /** Clear glass scatters all it receives, reflected or transmitted: 1, as for smooth glass. */
-    @Override
-    public void albedo(Vector2dc uv, Vector3dc wo, MutableRgb dest) {
-        dest.set(1, 1, 1);
+        return weighByPdf(uv, wo, out);
     }
 }

@@ -1,7 +1,7 @@
 package dev.strahl.material;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import org.joml.Vector2dc;
 import org.joml.Vector3dc;
 
@@ -27,15 +27,11 @@ public record SmoothConductor(Rgb eta, Rgb k) implements DeltaBsdf {
 
     @Override
     public boolean sample(Vector2dc uv, Vector3dc wo, double uc, double u1, double u2, BsdfSample out) {
-        if (wo.z() <= 0) {
+        if (!out.reflectSpecularly(wo)) {
             return false;
         }
-        Fresnel.reflect(wo, out.wi);
         double c = wo.z();
         out.weight.set(Fresnel.conductor(c, eta.r(), k.r()), Fresnel.conductor(c, eta.g(), k.g()), Fresnel.conductor(c, eta.b(), k.b()));
-        out.pdf = 1;
-        out.delta = true;
-        out.eta = 1;
         return true;
     }
 

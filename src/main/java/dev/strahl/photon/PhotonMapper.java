@@ -3,7 +3,7 @@ package dev.strahl.photon;
 import dev.strahl.integrator.Parallel;
 import dev.strahl.integrator.PathTracer;
 import dev.strahl.integrator.TracingWorker;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.integrator.DirectLight;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Shading;

@@ -1,6 +1,6 @@
 package dev.strahl.photon;
 
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.SurfacePoint;

@@ -2,7 +2,7 @@ package dev.strahl.photon;
 
 import dev.strahl.integrator.Shading;
 import dev.strahl.integrator.Tracer;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.SurfacePoint;
 import dev.strahl.material.Bsdf;

@@ -1,8 +1,9 @@
 package dev.strahl.render;
 
 import dev.strahl.scene.Camera;
-import dev.strahl.io.image.AtomicFile;
+import dev.strahl.files.AtomicFile;
 import dev.strahl.film.Film;
+import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.world.World;
 import dev.strahl.scene.Scene;
 import java.io.BufferedInputStream;
@@ -12,7 +13,6 @@ import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.UTFDataFormatException;
-import java.lang.reflect.RecordComponent;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
@@ -81,7 +81,7 @@ final class Checkpoint {
 
     /** Bytes per pixel: the count, the r, g, b sums, the squared luminance and any feature sums. */
     private int pixelBytes() {
-        return 4 + 4 * 8 + (features ? Film.FEATURES * 8 : 0);
+        return 4 + 4 * 8 + (features ? FeatureTracer.CHANNELS * 8 : 0);
     }
 
     /**
@@ -93,7 +93,7 @@ final class Checkpoint {
      * @return the identity, to save and restore checkpoints of that render
      */
     static Checkpoint of(Scene scene, RenderSettings settings) {
-        return new Checkpoint(sceneDigest(scene), settingsKey(settings), settings.width(), settings.height(), !settings.aovs().isEmpty());
+        return new Checkpoint(sceneDigest(scene), settingsKey(settings), settings.output().width(), settings.output().height(), !settings.output().aovs().isEmpty());
     }
 
     /** The fingerprint of the scene's content (SHA-256). */
@@ -291,9 +291,9 @@ final class Checkpoint {
         if (saved.equals(settingsKey)) {
             return null;
         }
-        Map<String, String> then = parse(saved);
+        Map<String, String> then = new LinkedHashMap<>(SettingsCodec.parse(saved));
         ADDED_LATER.forEach(then::putIfAbsent);
-        Map<String, String> now = parse(settingsKey);
+        Map<String, String> now = SettingsCodec.parse(settingsKey);
         if (then.equals(now)) {
             return null;                           // an older checkpoint, of the settings it could not name
         }
@@ -308,47 +308,19 @@ final class Checkpoint {
         return sb.length() == 0 ? "unknown settings " + saved : sb.toString();
     }
 
-    private static Map<String, String> parse(String key) {
-        Map<String, String> m = new LinkedHashMap<>();
-        for (String part : key.split(";")) {
-            int eq = part.indexOf('=');
-            if (eq > 0) {
-                m.put(part.substring(0, eq), part.substring(eq + 1));
-            }
-        }
-        return m;
-    }
-
     /**
-     * "width=512;height=512;maxDepth=-1;...;photons.photonsPerIteration=100000;...;sampler=stratified"
-     * over everything that decides the image; nested records give one entry per component.
+     * "width=512;height=512;seed=0;integrator=PATH;maxDepth=-1;...;photons.photonsPerIteration=100000;...;sampler=stratified"
+     * over everything that decides the image: the settings as {@link SettingsCodec} names them,
+     * without those that do not change the bits.
      */
     static String settingsKey(RenderSettings settings) {
-        StringBuilder sb = new StringBuilder();
-        appendComponents(sb, "", settings);
+        Map<String, Object> entries = new LinkedHashMap<>(SettingsCodec.entries(settings));
+        entries.keySet().removeAll(NOT_IN_FINGERPRINT);
         // Not a setting but decides the samples as much: the sample mode of the JVM (-Dstrahl.sampler).
-        sb.append(";sampler=").append(RenderWorkers.stratifiedSampler() ? "stratified" : "independent");
+        entries.put("sampler", SampleLoop.stratifiedSampler() ? "stratified" : "independent");
         // Which buffers are written does not matter, whether the film keeps features does (its layout).
-        return sb.append(";features=").append(!settings.aovs().isEmpty()).toString();
-    }
-
-    private static void appendComponents(StringBuilder sb, String prefix, Record record) {
-        for (RecordComponent c : record.getClass().getRecordComponents()) {
-            if (NOT_IN_FINGERPRINT.contains(prefix + c.getName())) {
-                continue;
-            }
-            Object value;
-            try {
-                value = c.getAccessor().invoke(record);
-            } catch (ReflectiveOperationException e) {
-                throw new IllegalStateException("cannot read setting " + c.getName(), e);
-            }
-            if (value instanceof Record nested) {
-                appendComponents(sb, prefix + c.getName() + ".", nested);
-            } else {
-                sb.append(sb.length() == 0 ? "" : ";").append(prefix).append(c.getName()).append('=').append(value);
-            }
-        }
+        entries.put("features", !settings.output().aovs().isEmpty());
+        return SettingsCodec.text(entries);
     }
 
     /** SHA-256 of the geometry arrays, the materials (exact parameters), the camera and the environment. */

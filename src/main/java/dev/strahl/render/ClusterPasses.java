@@ -4,6 +4,7 @@ import dev.strahl.film.Film;
 import dev.strahl.integrator.Parallel;
 import dev.strahl.units.JobChannel;
 import dev.strahl.units.WorkUnit;
+import java.util.List;
 import java.util.concurrent.CompletionException;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.atomic.AtomicLong;
@@ -33,13 +34,17 @@ final class ClusterPasses implements PassRunner {
     private int out;
     private boolean cancelled;
     private Throwable failure;
-    private final AtomicLong samplesDone = new AtomicLong();
-    private final AtomicLong invalidSamples = new AtomicLong();
+    private final Tally tally = new Tally();
     private final AtomicLong rays = new AtomicLong();
 
     ClusterPasses(Film film, JobChannel channel) {
         this.film = film;
         this.channel = channel;
+    }
+
+    @Override
+    public List<RenderStats.Member> members() {
+        return channel.figures(RenderStats.Member::new);
     }
 
     @Override
@@ -124,8 +129,8 @@ final class ClusterPasses implements PassRunner {
                     film.restorePixel(done.x0() + tx, done.y0() + ty, counts[i], state);
                 }
             }
-            samplesDone.addAndGet(samples);
-            invalidSamples.addAndGet(done.invalidSamples());
+            tally.samples.addAndGet(samples);
+            tally.invalid.addAndGet(done.invalidSamples());
             rays.addAndGet(done.rays());
         }
     }
@@ -175,13 +180,8 @@ final class ClusterPasses implements PassRunner {
     }
 
     @Override
-    public long samplesDone() {
-        return samplesDone.get();
-    }
-
-    @Override
-    public long invalidSamples() {
-        return invalidSamples.get();
+    public Tally tally() {
+        return tally;
     }
 
     @Override

@@ -13,16 +13,16 @@ final class Integrators {
 
     static Integrator create(World scene, RenderSettings s) {
         // the teaching option --accel none: the same world, every ray against every primitive
-        World world = s.bruteForce() ? scene.bruteForce() : scene;
-        boolean uniform = s.hemisphere() == HemisphereSampling.UNIFORM;
+        World world = s.execution().bruteForce() ? scene.bruteForce() : scene;
+        boolean uniform = s.transport().hemisphere() == HemisphereSampling.UNIFORM;
         // the teaching option without shadows: next-event estimation takes every light sample as visible
-        PathTracer.Strategy path = s.shadows() ? PathTracer.Strategy.MIS : PathTracer.Strategy.UNOCCLUDED;
-        return switch (s.integrator()) {
-            case PATH -> new PathTracer(world, s.maxDepth(), uniform, s.cullBackFaces(), path);
-            case DIRECT -> new DirectLighting(world, uniform, s.cullBackFaces(), s.lightSamples(), s.shadows());
-            case WHITTED -> new Whitted(world, s.maxDepth(), s.cullBackFaces(), s.lightSamples(), s.shadows());
-            case PHOTON -> new PhotonMapper(world, s.maxDepth(), uniform, s.cullBackFaces(), s.photons().photonsPerIteration(),
-                    s.photons().initialRadius(), s.shadows());
+        PathTracer.Strategy path = s.transport().shadows() ? PathTracer.Strategy.MIS : PathTracer.Strategy.UNOCCLUDED;
+        return switch (s.transport().integrator()) {
+            case PATH -> new PathTracer(world, s.transport().maxDepth(), uniform, s.transport().cullBackFaces(), path);
+            case DIRECT -> new DirectLighting(world, uniform, s.transport().cullBackFaces(), s.transport().lightSamples(), s.transport().shadows());
+            case WHITTED -> new Whitted(world, s.transport().maxDepth(), s.transport().cullBackFaces(), s.transport().lightSamples(), s.transport().shadows());
+            case PHOTON -> new PhotonMapper(world, s.transport().maxDepth(), uniform, s.transport().cullBackFaces(), s.transport().photons().photonsPerIteration(),
+                    s.transport().photons().initialRadius(), s.transport().shadows());
         };
     }
 }

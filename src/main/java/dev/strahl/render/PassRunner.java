@@ -1,6 +1,8 @@
 package dev.strahl.render;
 
 import dev.strahl.integrator.Parallel;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.ExecutionException;
 
 /**
@@ -28,15 +30,35 @@ interface PassRunner {
     /** While held: waits until nothing writes into the film. */
     void awaitStill() throws InterruptedException;
 
-    long samplesDone();
+    /** What the runner has counted: camera samples taken, and those that were NaN or infinite. */
+    Tally tally();
 
-    long invalidSamples();
+    /** Camera samples taken. */
+    default long samplesDone() {
+        return tally().samples.get();
+    }
+
+    /** Samples that were NaN or infinite (added as black). */
+    default long invalidSamples() {
+        return tally().invalid.get();
+    }
+
+    /** The counts of a runner, added to by its threads. */
+    final class Tally {
+        final AtomicLong samples = new AtomicLong();
+        final AtomicLong invalid = new AtomicLong();
+    }
 
     long rayCount();
 
     /** Seconds, summed over threads, that threads waited at the ends of passes for the others (0 where not measured: a cluster). */
     default double idleSeconds() {
         return 0;
+    }
+
+    /** What each member of a cluster did for the job so far; none for the job's own threads. */
+    default List<RenderStats.Member> members() {
+        return List.of();
     }
 
     /** Threads that render (of all members, for a cluster). */
@@ -46,6 +68,6 @@ interface PassRunner {
 
     /** Samples per pixel of automatic pass {@code pass} (from 0). */
     default int passSize(int pass) {
-        return RenderJob.autoPassSize(pass);
+        return PassLoop.autoPassSize(pass);
     }
 }

@@ -5,7 +5,7 @@ import java.util.Objects;
 
 /**
  * What a render leaves beside its image: the variance of every pixel's mean and the feature
- * buffers it was asked to keep ({@link RenderSettings#aovs()}); everything the EXR output writes
+ * buffers it was asked to keep ({@link RenderSettings.Output#aovs()}); everything the EXR output writes
  * and a {@link Denoiser} is guided by. All images have the size of the render.
  *
  * @param color    the image: the mean radiance of every pixel

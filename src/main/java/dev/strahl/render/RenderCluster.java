@@ -4,7 +4,6 @@ import dev.strahl.scene.Scene;
 import dev.strahl.units.ClusterBackend;
 import dev.strahl.units.JobChannel;
 import dev.strahl.units.JobSpec;
-import dev.strahl.units.MemberFigures;
 import dev.strahl.units.MemberOptions;
 import dev.strahl.units.UnitService;
 import java.io.IOException;
@@ -37,12 +36,7 @@ import java.util.function.Consumer;
 public final class RenderCluster implements AutoCloseable {
     private static final String BACKEND = "dev.strahl.cluster.HazelcastMember";
 
-    static {
-        MemberFigures.installClusterAccess(cluster -> ((RenderCluster) cluster).figures());
-    }
-
     private final ClusterBackend backend;
-    private final List<JobChannel> channels = new ArrayList<>();
 
     private RenderCluster(ClusterBackend backend) {
         this.backend = backend;
@@ -103,15 +97,12 @@ public final class RenderCluster implements AutoCloseable {
         Objects.requireNonNull(sceneFile, "sceneFile");
         Objects.requireNonNull(settings, "settings");
         Objects.requireNonNull(listener, "listener");
-        if (settings.integrator() == IntegratorKind.PHOTON) {
+        if (settings.transport().integrator() == IntegratorKind.PHOTON) {
             throw new IllegalArgumentException("the photon mapper cannot render on a cluster (each sample needs the photon map of the whole scene)");
         }
         byte[] digest = Checkpoint.of(scene, settings).sceneDigestBytes();
         JobChannel channel = backend.open(new JobSpec(sceneFile, scene.camera(),
-                UnitRenderers.encode(settings, RenderWorkers.stratifiedSampler()), digest, scene));
-        synchronized (channels) {
-            channels.add(channel);
-        }
+                UnitRenderers.encode(settings, SampleLoop.stratifiedSampler()), digest, scene));
         try {
             return RenderJob.launch(scene, settings, listener, checkpoint, film -> new ClusterPasses(film, channel));
         } catch (CheckpointException | IOException | RuntimeException e) {
@@ -127,30 +118,6 @@ public final class RenderCluster implements AutoCloseable {
      */
     public int memberCount() {
         return backend.memberCount();
-    }
-
-    /**
-     * What each member has done for the renders this one coordinated, one line per member of
-     * each render: its address (and "(coordinator)" for this one), threads, units, samples, bytes
-     * sent and received, the mean time from sending a unit to merging it, and units it handed
-     * back by leaving, as {@code name=value}. ({@code render --stats} writes the same figures as
-     * JSON numbers, docs/cluster.md.)
-     *
-     * @return the lines, for a report
-     */
-    public List<String> memberFigures() {
-        return figures().stream().map(MemberFigures::line).toList();
-    }
-
-    /** The figures behind {@link #memberFigures()}, for strahl's own packages (through {@code MemberFigures.of}). */
-    private List<MemberFigures> figures() {
-        List<MemberFigures> all = new ArrayList<>();
-        synchronized (channels) {
-            for (JobChannel c : channels) {
-                all.addAll(c.figures());
-            }
-        }
-        return all;
     }
 
     /** Leaves the cluster: the renders it coordinates end, the members drop them. */

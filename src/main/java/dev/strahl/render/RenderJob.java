@@ -1,11 +1,8 @@
 package dev.strahl.render;
 
-import dev.strahl.camera.CameraRays;
 import dev.strahl.film.Film;
 import dev.strahl.image.Image;
-import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
-import dev.strahl.scene.Camera;
 import dev.strahl.scene.Scene;
 import dev.strahl.world.World;
 import java.io.IOException;
@@ -38,7 +35,6 @@ import java.util.function.Function;
  * {@link #cancel()} stops it.
  */
 public final class RenderJob implements AutoCloseable {
-    private static final int MAX_AUTO_PASS = 16;
     private static final AtomicInteger JOB_NUMBER = new AtomicInteger();
 
     private final RenderSettings settings;
@@ -65,23 +61,17 @@ public final class RenderJob implements AutoCloseable {
                       Checkpoint.Restored restored, Function<Film, PassRunner> cluster) {
         this.settings = Objects.requireNonNull(settings, "settings");
         this.listener = Objects.requireNonNull(listener, "listener");
-        boolean features = !settings.aovs().isEmpty();
-        this.film = restored != null ? restored.film() : new Film(settings.width(), settings.height(), features);
+        this.film = restored != null ? restored.film()
+                : new Film(settings.output().width(), settings.output().height(), !settings.output().aovs().isEmpty());
         this.integrator = Objects.requireNonNull(integrator, "integrator");
         this.scene = Objects.requireNonNull(scene, "scene");
         this.identity = identity;
         this.earlierInvalid = restored != null ? restored.invalidSamples() : 0;
         this.earlierSeconds = restored != null ? restored.seconds() : 0;
-        Camera c = scene.camera();
-        var rays = new CameraRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), c.aperture(), c.focusDistance(),
-                settings.width(), settings.height());
-        World world = World.of(scene);
         int number = JOB_NUMBER.incrementAndGet();
-        this.workers = cluster != null ? cluster.apply(film)
-                : new RenderWorkers(film, rays, integrator, features ? () -> new FeatureTracer(world, settings.cullBackFaces()) : null,
-                        settings.seed(), settings.effectiveThreads(), settings.stripes(), "strahl-render-" + number);
-        this.completedSpp = this.earlierSpp = Math.min(film.minSampleCount(), settings.samplesPerPixel());   // 0, unless restored
-        this.passes = new PassBuffers(film, settings.aovs());
+        this.workers = cluster != null ? cluster.apply(film) : RenderWorkers.of(scene, settings, film, integrator, "strahl-render-" + number);
+        this.completedSpp = this.earlierSpp = Math.min(film.minSampleCount(), settings.sampling().samplesPerPixel());   // 0, unless restored
+        this.passes = new PassBuffers(film, settings.output().aovs());
         this.restoredSamples = film.totalSamples();
     }
 
@@ -198,7 +188,7 @@ public final class RenderJob implements AutoCloseable {
      * @return a number in [0, 1]
      */
     public double progress() {
-        double total = (double) settings.samplesPerPixel() * settings.width() * settings.height();
+        double total = (double) settings.sampling().samplesPerPixel() * settings.output().width() * settings.output().height();
         return Math.min(1, (restoredSamples + workers.samplesDone()) / total);
     }
 
@@ -332,7 +322,7 @@ public final class RenderJob implements AutoCloseable {
 
     /**
      * Waits for the render to end and returns its image with the per-pixel variance and the
-     * feature buffers of the settings ({@link RenderSettings#aovs()}): what a {@link Denoiser}
+     * feature buffers of the settings ({@link RenderSettings.Output#aovs()}): what a {@link Denoiser}
      * and the EXR output take.
      *
      * @return the buffers
@@ -397,57 +387,13 @@ public final class RenderJob implements AutoCloseable {
     }
 
     private void run() {
-        try {
-            int spp = settings.samplesPerPixel();
-            boolean prepares = integrator.preparesEachSample();
-            int start = film.minSampleCount();
-            if (restoredSamples > 0) {
-                passes.ended(film.toImage());              // what the restored film holds, until a pass ends
-            }
-            int pass = 0;
-            while (start < spp && !workers.cancelled()) {
-                int size = prepares ? 1 : settings.samplesPerPass() > 0 ? settings.samplesPerPass() : workers.passSize(pass);
-                int end = Math.min(spp, start + size);
-                if (prepares) {
-                    integrator.prepareSample(settings.seed(), start, workers.parallel());
-                    if (workers.cancelled()) {
-                        break;
-                    }
-                }
-                passes.starting();
-                workers.renderPass(start, end);
-                if (workers.cancelled()) {
-                    break;
-                }
-                completedSpp = end;
-                Image image = film.toImage();
-                passes.ended(image);
-                listener.passFinished(new RenderListener.Pass(pass + 1, end, workers.samplesDone(), elapsedSeconds()), image);
-                start = end;
-                pass++;
-                if (!settings.timeLimit().isZero() && elapsedSeconds() >= settings.timeLimit().toNanos() * 1e-9) {
-                    break;                             // the pass that crossed the time limit is kept
-                }
-            }
-            RenderStats stats = stats();
-            listener.finished(stats);
-            result.complete(stats);
-        } catch (ExecutionException e) {
-            result.completeExceptionally(e.getCause());    // what failed on a render thread, not its wrapper
-        } catch (Throwable t) {
-            result.completeExceptionally(t);
-        } finally {
-            workers.shutdown();
-        }
+        new PassLoop(settings, integrator, workers, film, passes, listener)
+                .run(restoredSamples > 0, spp -> completedSpp = spp, this::stats, this::elapsedSeconds, result);
     }
 
-    /** Passes of 1, 1, 2, 4, 8 and then 16 samples per pixel: a first image at once, little overhead later. */
-    static int autoPassSize(int pass) {
-        return pass == 0 ? 1 : Math.min(MAX_AUTO_PASS, 1 << Math.min(pass - 1, 4));
-    }
-
-    private RenderStats stats() {
+    /** The figures after {@code passCount} passes of this job. */
+    private RenderStats stats(int passCount) {
         return new RenderStats(elapsedSeconds(), workers.samplesDone(), workers.rayCount(), completedSpp, workers.threads(), workers.cancelled(),
-                invalidSamples(), workers.idleSeconds());
+                invalidSamples(), workers.idleSeconds(), passCount, workers.members());
     }
 }

@@ -9,32 +9,13 @@ import dev.strahl.image.Image;
 public interface RenderListener {
 
     /**
-     * Where a render stands at the end of a pass.
-     *
-     * @param number          passes completed, from 1
-     * @param samplesPerPixel samples per pixel of all completed passes
-     * @param samples         camera samples taken so far
-     * @param seconds         time since the render started
-     */
-    record Pass(int number, int samplesPerPixel, long samples, double seconds) {
-        /**
-         * The mean sampling rate so far.
-         *
-         * @return camera samples per second
-         */
-        public double samplesPerSecond() {
-            return seconds > 0 ? samples / seconds : 0;
-        }
-    }
-
-    /**
      * A pass over the whole image finished. By default hands on to {@link #passCompleted}.
      *
-     * @param pass  the figures of the render so far
+     * @param soFar the figures of the render so far (its passes, samples per pixel, samples and rays per second)
      * @param image the mean of all samples so far
      */
-    default void passFinished(Pass pass, Image image) {
-        passCompleted(pass.samplesPerPixel(), image);
+    default void passFinished(RenderStats soFar, Image image) {
+        passCompleted(soFar.samplesPerPixel(), image);
     }
 
     /**

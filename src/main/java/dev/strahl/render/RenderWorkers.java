@@ -2,15 +2,11 @@ package dev.strahl.render;
 
 import dev.strahl.camera.CameraRays;
 import dev.strahl.film.Film;
-import dev.strahl.geometry.Ray;
 import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Parallel;
-import dev.strahl.math.MutableRgb;
-import dev.strahl.sampling.IndependentSampler;
-import dev.strahl.sampling.Sample2D;
-import dev.strahl.sampling.Sampler;
-import dev.strahl.sampling.StratifiedSampler;
+import dev.strahl.scene.Scene;
+import dev.strahl.world.World;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ExecutionException;
@@ -21,7 +17,6 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
-import org.joml.Vector3d;
 
 /**
  * The threads of one render job and what each owns: a fixed pool whose workers take
@@ -40,9 +35,8 @@ final class RenderWorkers implements Parallel, PassRunner {
     private final long seed;
     private final CameraRays cameraRays;
     private final ExecutorService pool;
-    private final WorkerState[] workers;
-    private final AtomicLong samplesDone = new AtomicLong();
-    private final AtomicLong invalidSamples = new AtomicLong();
+    private final SampleLoop.WorkerState[] workers;
+    private final Tally tally = new Tally();
     /** Summed over threads and passes: how long a thread that had finished its part of a pass waited for the last one. */
     private final AtomicLong idleNanos = new AtomicLong();
     /** Teaching option: one stripe per thread instead of tiles. */
@@ -54,9 +48,16 @@ final class RenderWorkers implements Parallel, PassRunner {
     /** Workers running a task and not waiting at the gate. */
     private int busy;
 
-    /** The {@link StratifiedSampler} (the default), or the {@link IndependentSampler} with {@code -Dstrahl.sampler=independent}. */
-    static boolean stratifiedSampler() {
-        return !"independent".equals(System.getProperty("strahl.sampler"));
+    /**
+     * The workers of a local render of {@code scene}: its camera's rays at the settings' size, the
+     * settings' seed, threads and schedule, and the feature tracer when the settings keep feature buffers.
+     */
+    static RenderWorkers of(Scene scene, RenderSettings settings, Film film, Integrator integrator, String name) {
+        World world = World.of(scene);
+        boolean cull = settings.transport().cullBackFaces();
+        return new RenderWorkers(film, CameraRays.of(scene.camera(), settings.output().width(), settings.output().height()), integrator,
+                settings.output().aovs().isEmpty() ? null : () -> new FeatureTracer(world, cull), settings.sampling().seed(),
+                settings.execution().effectiveThreads(), settings.execution().stripes(), name);
     }
 
     /**
@@ -72,16 +73,16 @@ final class RenderWorkers implements Parallel, PassRunner {
         this.film = film;
         this.cameraRays = cameraRays;
         this.stripes = stripes;
-        boolean stratified = stratifiedSampler();
+        boolean stratified = SampleLoop.stratifiedSampler();
         AtomicInteger workerNumber = new AtomicInteger();
         this.pool = Executors.newFixedThreadPool(threads, r -> {
             Thread t = new Thread(r, name + "-" + workerNumber.incrementAndGet());
             t.setDaemon(true);
             return t;
         });
-        this.workers = new WorkerState[threads];
+        this.workers = new SampleLoop.WorkerState[threads];
         for (int i = 0; i < threads; i++) {
-            workers[i] = new WorkerState(i, integrator.newWorker(), newSampler(stratified, seed), features != null ? features.get() : null);
+            workers[i] = new SampleLoop.WorkerState(i, integrator.newWorker(), SampleLoop.newSampler(stratified, seed), features != null ? features.get() : null);
         }
     }
 
@@ -157,13 +158,8 @@ final class RenderWorkers implements Parallel, PassRunner {
     }
 
     @Override
-    public long samplesDone() {
-        return samplesDone.get();
-    }
-
-    @Override
-    public long invalidSamples() {
-        return invalidSamples.get();
+    public Tally tally() {
+        return tally;
     }
 
     @Override
@@ -174,7 +170,7 @@ final class RenderWorkers implements Parallel, PassRunner {
     @Override
     public long rayCount() {
         long rays = 0;
-        for (WorkerState w : workers) {
+        for (SampleLoop.WorkerState w : workers) {
             rays += w.integrator.rayCount() + (w.features != null ? w.features.rayCount() : 0);
         }
         return rays;
@@ -201,11 +197,11 @@ final class RenderWorkers implements Parallel, PassRunner {
         } finally {
             // Idle time: each thread from its own end of the pass to the last thread's end.
             long last = 0;
-            for (WorkerState w : workers) {
+            for (SampleLoop.WorkerState w : workers) {
                 last = Math.max(last, w.finished);
             }
             long idle = 0;
-            for (WorkerState w : workers) {
+            for (SampleLoop.WorkerState w : workers) {
                 idle += last - w.finished;
             }
             idleNanos.addAndGet(idle);
@@ -218,9 +214,9 @@ final class RenderWorkers implements Parallel, PassRunner {
      * chunks) and waited for too, so that no thread still writes into the film once the job has
      * ended; then the first failure is thrown.
      */
-    private void onEveryThread(Consumer<WorkerState> body) throws InterruptedException, ExecutionException {
+    private void onEveryThread(Consumer<SampleLoop.WorkerState> body) throws InterruptedException, ExecutionException {
         List<Future<?>> tasks = new ArrayList<>(workers.length);
-        for (WorkerState w : workers) {
+        for (SampleLoop.WorkerState w : workers) {
             tasks.add(pool.submit(() -> {
                 synchronized (gate) {
                     busy++;
@@ -278,7 +274,7 @@ final class RenderWorkers implements Parallel, PassRunner {
         }
     }
 
-    private void renderTiles(WorkerState w, AtomicInteger nextTile, int firstSample, int endSample) {
+    private void renderTiles(SampleLoop.WorkerState w, AtomicInteger nextTile, int firstSample, int endSample) {
         int tilesX = film.tileCountX();
         int tileCount = tilesX * film.tileCountY();
         for (int tile = nextTile.getAndIncrement(); tile < tileCount && !cancelled; tile = nextTile.getAndIncrement()) {
@@ -293,7 +289,7 @@ final class RenderWorkers implements Parallel, PassRunner {
      * Teaching option with stripes (a teaching option: thread i of n renders rows [i·h/n, (i+1)·h/n)
      * and nothing else (it may hold still between rows, as between tiles).
      */
-    private void renderStripe(WorkerState w, int firstSample, int endSample) {
+    private void renderStripe(SampleLoop.WorkerState w, int firstSample, int endSample) {
         int n = workers.length, h = film.height();
         int y0 = (int) ((long) w.index * h / n), y1 = (int) ((long) (w.index + 1) * h / n);
         for (int y = y0; y < y1 && !cancelled; y++) {
@@ -303,7 +299,7 @@ final class RenderWorkers implements Parallel, PassRunner {
     }
 
     /** Samples [firstSample, endSample) of every pixel of the rectangle [x0, x1) × [y0, y1). */
-    private void renderRect(WorkerState w, int x0, int y0, int x1, int y1, int firstSample, int endSample) {
+    private void renderRect(SampleLoop.WorkerState w, int x0, int y0, int x1, int y1, int firstSample, int endSample) {
         long invalid = 0;
         for (int y = y0; y < y1 && !cancelled; y++) {
             long rowSamples = 0;
@@ -312,89 +308,12 @@ final class RenderWorkers implements Parallel, PassRunner {
                 // a restored film may hold more samples in some pixels: they go on from there
                 int s0 = Math.max(firstSample, film.sampleCountAt(pixel));
                 rowSamples += Math.max(0, endSample - s0);
-                invalid += samplePixel(w, cameraRays, seed, film, pixel, x, y, s0, endSample);
+                invalid += SampleLoop.samplePixel(w, cameraRays, seed, film, pixel, x, y, s0, endSample);
             }
-            samplesDone.addAndGet(rowSamples);
+            tally.samples.addAndGet(rowSamples);
         }
         if (invalid > 0) {
-            invalidSamples.addAndGet(invalid);
-        }
-    }
-
-    /**
-     * Takes sample {@code s} of pixel (x, y) into {@code w.radiance}: the one place where a sample
-     * is made, for the local passes and for a cluster's work units ({@link UnitRenderers}) alike.
-     *
-     * @return whether the radiance is finite (otherwise the caller adds black and counts it)
-     */
-    /**
-     * Samples [s0, end) of image pixel (x, y), added in index order to {@code pixel} of {@code film}
-     * (the image's, or a cluster unit's tile): the one place a sample reaches a film. Returns the
-     * samples that were NaN or infinite (added as black).
-     */
-    static int samplePixel(WorkerState w, CameraRays cameraRays, long seed, Film film, int pixel, int x, int y, int s0, int end) {
-        int invalid = 0;
-        for (int s = s0; s < end; s++) {
-            boolean finite = sample(w, cameraRays, seed, x, y, s);
-            if (w.features != null) {
-                film.addFeatures(pixel, w.featureValues);
-            }
-            if (finite) {
-                film.add(pixel, w.radiance.r, w.radiance.g, w.radiance.b);
-            } else {
-                film.add(pixel, 0, 0, 0);
-                invalid++;
-            }
-        }
-        return invalid;
-    }
-
-    static boolean sample(WorkerState w, CameraRays cameraRays, long seed, int x, int y, int s) {
-        w.sampler.startPixelSample(x, y, s);
-        w.sampler.getPixel2D(w.filmPosition);
-        if (cameraRays.hasLens()) {
-            w.sampler.get2D(w.lensPosition);     // a thin lens: the next pair, before the integrator's
-            cameraRays.generate(x + w.filmPosition.u1, y + w.filmPosition.u2, w.lensPosition.u1, w.lensPosition.u2, w.disk, w.ray);
-        } else {
-            cameraRays.generate(x + w.filmPosition.u1, y + w.filmPosition.u2, w.ray);
-        }
-        if (w.features != null) {
-            // before the integrator, which may change the ray; from streams of its own
-            w.featureRay.o.set(w.ray.o);
-            w.featureRay.d.set(w.ray.d);
-            w.featureRay.tMax = w.ray.tMax;
-            w.features.trace(w.featureRay, seed, x, y, s, w.featureValues);
-        }
-        w.integrator.radiance(w.ray, w.sampler, w.radiance);
-        return w.radiance.isFinite();
-    }
-
-    /** The sampler a render's settings choose, for a worker of one thread. */
-    static Sampler newSampler(boolean stratified, long seed) {
-        return stratified ? new StratifiedSampler(seed) : new IndependentSampler(seed);
-    }
-
-    /** What one worker thread owns: reused for every sample, so the loop allocates nothing. */
-    static final class WorkerState {
-        final int index;
-        /** When this thread finished its part of the last pass (System.nanoTime). */
-        long finished;
-        final Integrator.Worker integrator;
-        final Sampler sampler;
-        final Sample2D filmPosition = new Sample2D();
-        final Sample2D lensPosition = new Sample2D();
-        final Vector3d disk = new Vector3d();
-        final Ray ray = new Ray();
-        final MutableRgb radiance = new MutableRgb();
-        final FeatureTracer features;
-        final Ray featureRay = new Ray();
-        final double[] featureValues = new double[FeatureTracer.CHANNELS];
-
-        WorkerState(int index, Integrator.Worker integrator, Sampler sampler, FeatureTracer features) {
-            this.index = index;
-            this.integrator = integrator;
-            this.sampler = sampler;
-            this.features = features;
+            tally.invalid.addAndGet(invalid);
         }
     }
 }

@@ -4,116 +4,62 @@ import dev.strahl.camera.CameraRays;
 import dev.strahl.film.Film;
 import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
-import dev.strahl.scene.Camera;
 import dev.strahl.scene.Scene;
 import dev.strahl.units.UnitRenderer;
 import dev.strahl.units.UnitService;
 import dev.strahl.units.WorkUnit;
 import dev.strahl.world.World;
-import java.io.ByteArrayInputStream;
-import java.io.ByteArrayOutputStream;
-import java.io.DataInputStream;
-import java.io.DataOutputStream;
-import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.time.Duration;
 import java.util.Arrays;
-import java.util.EnumSet;
-import java.util.Set;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.function.Supplier;
 
 /**
  * The render package's side of a cluster member: makes the renderer of a job's work units from
  * the scene the member loaded and the settings the coordinator sent. A unit is rendered with the
- * very sample loop of the local passes ({@link RenderWorkers#sample}), going on from the state of
+ * very sample loop of the local passes ({@link SampleLoop#sample}), going on from the state of
  * its tile, so its sums are those of a local render.
  */
 final class UnitRenderers implements UnitService {
-    private static final int SETTINGS_FORMAT = 3;
+    private static final String SAMPLER = "sampler";
 
     @Override
-    public UnitRenderer open(Scene scene, byte[] settingsBytes, byte[] digest, int threads) {
-        Decoded d = decode(settingsBytes);
+    public UnitRenderer open(Scene scene, String settingsText, byte[] digest, int threads) {
+        Decoded d = decode(settingsText);
         if (!Arrays.equals(Checkpoint.of(scene, d.settings).sceneDigestBytes(), digest)) {
             throw new IllegalArgumentException("the scene loaded here differs from the coordinator's"
                     + " (a file it references may be missing from what was shipped, or be named by an absolute path)");
         }
         Integrator integrator = Integrators.create(World.of(scene), d.settings);
         if (integrator.preparesEachSample()) {
-            throw new IllegalArgumentException("the " + d.settings.integrator().id() + " integrator cannot render on a cluster");
+            throw new IllegalArgumentException("the " + d.settings.transport().integrator().id() + " integrator cannot render on a cluster");
         }
-        Camera c = scene.camera();
-        var rays = new CameraRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), c.aperture(), c.focusDistance(), d.settings.width(), d.settings.height());
+        var rays = CameraRays.of(scene.camera(), d.settings.output().width(), d.settings.output().height());
         World world = World.of(scene);
-        Supplier<FeatureTracer> features = d.settings.aovs().isEmpty() ? null : () -> new FeatureTracer(world, d.settings.cullBackFaces());
-        return new Renderer(integrator, features, rays, d.settings.seed(), d.stratified);
+        Supplier<FeatureTracer> features = d.settings.output().aovs().isEmpty() ? null : () -> new FeatureTracer(world, d.settings.transport().cullBackFaces());
+        return new Renderer(integrator, features, rays, d.settings.sampling().seed(), d.stratified);
     }
 
     /** The settings and the sampler choice, as a coordinator sends them. */
     record Decoded(RenderSettings settings, boolean stratified) {
     }
 
-    /** Every setting (the members render with exactly the coordinator's), and the sampler. */
-    static byte[] encode(RenderSettings s, boolean stratified) {
-        var bytes = new ByteArrayOutputStream();
-        try (var out = new DataOutputStream(bytes)) {
-            out.writeInt(SETTINGS_FORMAT);
-            out.writeInt(s.width());
-            out.writeInt(s.height());
-            out.writeInt(s.samplesPerPixel());
-            out.writeInt(s.maxDepth());
-            out.writeLong(s.seed());
-            out.writeInt(s.threads());
-            out.writeUTF(s.hemisphere().name());
-            out.writeBoolean(s.cullBackFaces());
-            out.writeInt(s.samplesPerPass());
-            out.writeUTF(s.integrator().name());
-            out.writeInt(s.lightSamples());
-            out.writeLong(s.timeLimit().toNanos());
-            out.writeInt(s.photons().photonsPerIteration());
-            out.writeDouble(s.photons().initialRadius());
-            out.writeBoolean(s.bruteForce());
-            out.writeBoolean(s.stripes());
-            out.writeBoolean(s.shadows());
-            out.writeBoolean(stratified);
-            out.writeInt(s.aovs().size());
-            for (Aov aov : s.aovs()) {
-                out.writeUTF(aov.name());
-            }
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-        return bytes.toByteArray();
+    /** Every setting by its name (the members render with exactly the coordinator's), and the sampler. */
+    static String encode(RenderSettings s, boolean stratified) {
+        Map<String, Object> entries = new LinkedHashMap<>(SettingsCodec.entries(s));
+        entries.put(SAMPLER, stratified ? "stratified" : "independent");
+        return SettingsCodec.text(entries);
     }
 
-    static Decoded decode(byte[] bytes) {
-        try (var in = new DataInputStream(new ByteArrayInputStream(bytes))) {
-            int format = in.readInt();
-            if (format != SETTINGS_FORMAT) {
-                throw new IllegalArgumentException("settings of format " + format + "; this strahl reads " + SETTINGS_FORMAT);
-            }
-            int width = in.readInt(), height = in.readInt(), spp = in.readInt(), depth = in.readInt();
-            long seed = in.readLong();
-            int threads = in.readInt();
-            var hemisphere = HemisphereSampling.valueOf(in.readUTF());
-            boolean cull = in.readBoolean();
-            int perPass = in.readInt();
-            var kind = IntegratorKind.valueOf(in.readUTF());
-            int lightSamples = in.readInt();
-            var timeLimit = Duration.ofNanos(in.readLong());
-            var photons = new PhotonParameters(in.readInt(), in.readDouble());
-            boolean bruteForce = in.readBoolean(), stripes = in.readBoolean(), shadows = in.readBoolean(), stratified = in.readBoolean();
-            Set<Aov> aovs = EnumSet.noneOf(Aov.class);
-            for (int n = in.readInt(); n > 0; n--) {
-                aovs.add(Aov.valueOf(in.readUTF()));
-            }
-            var settings = new RenderSettings(width, height, spp, depth, seed, threads, hemisphere, cull, perPass, kind, lightSamples,
-                    timeLimit, photons, bruteForce, stripes, shadows, aovs);
-            return new Decoded(settings, stratified);
-        } catch (IOException e) {
-            throw new IllegalArgumentException("unreadable settings: " + e.getMessage(), e);
+    /** What {@link #encode} wrote; a setting missing, unknown or of a bad value is refused naming it. */
+    static Decoded decode(String text) {
+        Map<String, String> values = new LinkedHashMap<>(SettingsCodec.parse(text));
+        String sampler = values.remove(SAMPLER);
+        if (!"stratified".equals(sampler) && !"independent".equals(sampler)) {
+            throw new IllegalArgumentException("settings without a sampler: '" + text + "'");
         }
+        return new Decoded(SettingsCodec.settings(values), sampler.equals("stratified"));
     }
 
     /** Renders units on any thread; each thread takes a worker (integrator scratch and sampler) from a pool. */
@@ -123,7 +69,7 @@ final class UnitRenderers implements UnitService {
         private final CameraRays rays;
         private final long seed;
         private final boolean stratified;
-        private final ConcurrentLinkedQueue<RenderWorkers.WorkerState> idle = new ConcurrentLinkedQueue<>();
+        private final ConcurrentLinkedQueue<SampleLoop.WorkerState> idle = new ConcurrentLinkedQueue<>();
 
         Renderer(Integrator integrator, Supplier<FeatureTracer> features, CameraRays rays, long seed, boolean stratified) {
             this.integrator = integrator;
@@ -135,9 +81,9 @@ final class UnitRenderers implements UnitService {
 
         @Override
         public void render(WorkUnit unit) {
-            RenderWorkers.WorkerState w = idle.poll();
+            SampleLoop.WorkerState w = idle.poll();
             if (w == null) {
-                w = new RenderWorkers.WorkerState(0, integrator.newWorker(), RenderWorkers.newSampler(stratified, seed),
+                w = new SampleLoop.WorkerState(0, integrator.newWorker(), SampleLoop.newSampler(stratified, seed),
                         features != null ? features.get() : null);
             }
             try {
@@ -158,7 +104,7 @@ final class UnitRenderers implements UnitService {
                         System.arraycopy(sums, perPixel * i, state, 0, perPixel);
                         tile.restorePixel(tx, ty, counts[i], state);
                         int s0 = Math.max(unit.firstSample(), counts[i]);
-                        invalid += RenderWorkers.samplePixel(w, rays, seed, tile, tile.pixelIndex(tx, ty), unit.x0() + tx, unit.y0() + ty,
+                        invalid += SampleLoop.samplePixel(w, rays, seed, tile, tile.pixelIndex(tx, ty), unit.x0() + tx, unit.y0() + ty,
                                 s0, unit.endSample());
                         counts[i] = tile.pixelState(tx, ty, state);
                         System.arraycopy(state, 0, sums, perPixel * i, perPixel);

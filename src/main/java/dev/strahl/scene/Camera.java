@@ -1,5 +1,6 @@
 package dev.strahl.scene;
 
+import dev.strahl.camera.CameraRays;
 import dev.strahl.geometry.Aabb;
 import org.joml.Vector3d;
 import org.joml.Vector3dc;
@@ -18,6 +19,14 @@ import org.joml.Vector3dc;
  * @param focusDistance distance of the plane in focus from the camera along the viewing direction, positive
  */
 public record Camera(Vector3dc lookFrom, Vector3dc lookAt, Vector3dc up, double fovDegrees, double aperture, double focusDistance) {
+    static {
+        // the one conversion of this API record to the renderer's rays (CameraRays.of)
+        CameraRays.installCameraAccess((c, pinhole, width, height) -> {
+            Camera k = (Camera) c;
+            return pinhole ? new CameraRays(k.lookFrom, k.lookAt, k.up, k.fovDegrees, width, height)
+                    : new CameraRays(k.lookFrom, k.lookAt, k.up, k.fovDegrees, k.aperture, k.focusDistance, width, height);
+        });
+    }
 
     /** Azimuth of the framing camera, degrees from +Z towards +X, around the scene's centre. */
     static final double FRAMING_AZIMUTH = 40;

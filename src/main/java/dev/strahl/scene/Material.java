@@ -1,5 +1,6 @@
 package dev.strahl.scene;
 
+import dev.strahl.texture.TextureLookup;
 import dev.strahl.image.Rgb;
 import dev.strahl.material.Bsdf;
 import dev.strahl.material.Conductor;
@@ -79,7 +80,7 @@ public final class Material {
         return surface.images();
     }
 
-    private static List<Bitmap> images(dev.strahl.texture.Texture... textures) {
+    private static List<Bitmap> images(TextureLookup... textures) {
         return Surface.images(textures);
     }
 
@@ -92,7 +93,7 @@ public final class Material {
      * @return the material
      */
     public static Material diffuse(String name, Texture albedo) {
-        dev.strahl.texture.Texture a = albedo.colour();
+        TextureLookup a = albedo.colour();
         return new Material(name, new Lambert(a, false), Rgb.BLACK, images(a));
     }
 
@@ -130,7 +131,7 @@ public final class Material {
      * @return the material
      */
     public static Material conductor(String name, Rgb eta, Rgb k, Texture alpha) {
-        dev.strahl.texture.Texture a = alpha.scalar(Channel.LUMINANCE);
+        TextureLookup a = alpha.scalar(Channel.LUMINANCE);
         return new Material(name, Conductor.of(eta, k, a), Rgb.BLACK, images(a));
     }
 
@@ -187,7 +188,7 @@ public final class Material {
      * @return the material
      */
     public static Material dielectric(String name, double ior, Texture alpha) {
-        dev.strahl.texture.Texture a = alpha.scalar(Channel.LUMINANCE);
+        TextureLookup a = alpha.scalar(Channel.LUMINANCE);
         return new Material(name, RoughDielectric.of(ior, a), Rgb.BLACK, images(a));
     }
 

@@ -1,5 +1,6 @@
 package dev.strahl.scene;
 
+import dev.strahl.texture.TextureLookup;
 import dev.strahl.image.Rgb;
 import dev.strahl.texture.Channel;
 import java.util.Objects;
@@ -11,16 +12,16 @@ import java.util.Objects;
  */
 abstract class PrincipledParameters {
     final String name;
-    dev.strahl.texture.Texture baseColor = dev.strahl.texture.Texture.of(Rgb.WHITE);
-    dev.strahl.texture.Texture metallic = dev.strahl.texture.Texture.of(1);
-    dev.strahl.texture.Texture roughness = dev.strahl.texture.Texture.of(1);
-    dev.strahl.texture.Texture specular = dev.strahl.texture.Texture.of(1);
-    dev.strahl.texture.Texture specularColor = dev.strahl.texture.Texture.of(Rgb.WHITE);
-    dev.strahl.texture.Texture transmission = dev.strahl.texture.Texture.of(0);
+    TextureLookup baseColor = TextureLookup.of(Rgb.WHITE);
+    TextureLookup metallic = TextureLookup.of(1);
+    TextureLookup roughness = TextureLookup.of(1);
+    TextureLookup specular = TextureLookup.of(1);
+    TextureLookup specularColor = TextureLookup.of(Rgb.WHITE);
+    TextureLookup transmission = TextureLookup.of(0);
     double ior = 1.5;
     /** Le for constant emission; the strength (grey) with {@link #emissionTexture}. */
     Rgb emission = Rgb.BLACK;
-    dev.strahl.texture.Texture emissionTexture;
+    TextureLookup emissionTexture;
 
     PrincipledParameters(String name) {
         this.name = Objects.requireNonNull(name, "name");
@@ -37,7 +38,7 @@ abstract class PrincipledParameters {
      * @return this builder
      */
     public Material.PrincipledBuilder baseColor(Rgb colour) {
-        baseColor = dev.strahl.texture.Texture.of(Surface.unit(colour, "baseColor", name));
+        baseColor = TextureLookup.of(Surface.unit(colour, "baseColor", name));
         return self();
     }
 
@@ -59,7 +60,7 @@ abstract class PrincipledParameters {
      * @return this builder
      */
     public Material.PrincipledBuilder metallic(double value) {
-        metallic = dev.strahl.texture.Texture.of(Surface.unit(value, "metallic", name));
+        metallic = TextureLookup.of(Surface.unit(value, "metallic", name));
         return self();
     }
 
@@ -81,7 +82,7 @@ abstract class PrincipledParameters {
      * @return this builder
      */
     public Material.PrincipledBuilder roughness(double value) {
-        roughness = dev.strahl.texture.Texture.of(Surface.unit(value, "roughness", name));
+        roughness = TextureLookup.of(Surface.unit(value, "roughness", name));
         return self();
     }
 
@@ -115,7 +116,7 @@ abstract class PrincipledParameters {
      * @return this builder
      */
     public Material.PrincipledBuilder specular(double value) {
-        specular = dev.strahl.texture.Texture.of(Surface.unit(value, "specular", name));
+        specular = TextureLookup.of(Surface.unit(value, "specular", name));
         return self();
     }
 
@@ -137,7 +138,7 @@ abstract class PrincipledParameters {
      * @return this builder
      */
     public Material.PrincipledBuilder specularColor(Rgb colour) {
-        specularColor = dev.strahl.texture.Texture.of(Surface.nonNegative(colour, "specularColor", name));
+        specularColor = TextureLookup.of(Surface.nonNegative(colour, "specularColor", name));
         return self();
     }
 
@@ -159,7 +160,7 @@ abstract class PrincipledParameters {
      * @return this builder
      */
     public Material.PrincipledBuilder transmission(double value) {
-        transmission = dev.strahl.texture.Texture.of(Surface.unit(value, "transmission", name));
+        transmission = TextureLookup.of(Surface.unit(value, "transmission", name));
         return self();
     }
 

@@ -8,7 +8,6 @@ import dev.strahl.image.Image;
 import dev.strahl.image.Rgb;
 import dev.strahl.light.Emission;
 import dev.strahl.light.Environment;
-import dev.strahl.light.PunctualLight;
 import dev.strahl.material.Bsdf;
 import dev.strahl.world.SurfaceMaps;
 import dev.strahl.world.World;
@@ -98,6 +97,32 @@ public final class Scene {
     }
 
     /**
+     * How long building the BVH took, when the scene was built (its share of the time to load a
+     * scene; a render's time excludes it).
+     *
+     * @return seconds
+     */
+    public double bvhBuildSeconds() {
+        return world.bvhBuildSeconds();
+    }
+
+    /**
+     * The thin lens's focus distance that makes the surface seen at a point of the image sharp:
+     * the distance, along {@code camera}'s viewing direction, of the first surface its pinhole ray
+     * through that point meets, found as the renderer finds it (the cut-away parts of an alpha
+     * cut-out are passed through). The viewer focuses so on Ctrl+click.
+     *
+     * @param camera the camera looking at this scene
+     * @param fx     the point's x as a fraction of the image width, 0 at the left
+     * @param fy     its y as a fraction of the height, 0 at the top
+     * @param aspect the image's width / height
+     * @return the distance, or NaN where the image shows no surface
+     */
+    public double focusDistance(Camera camera, double fx, double fy, double aspect) {
+        return FocusPicker.focusDistance(this, Objects.requireNonNull(camera, "camera"), fx, fy, aspect);
+    }
+
+    /**
      * The camera: the scene's own, or one framing the scene (from a raised three-quarter view if
      * the scene has no light, else from +Z).
      *
@@ -144,19 +169,20 @@ public final class Scene {
      * @return a scene sharing everything else with this one
      */
     public Scene withEnvironmentMap(Image map, double scale, double rotateDegrees) {
-        Environment env = Builder.mapOf(map, scale, rotateDegrees);
+        Environment env = SceneLighting.mapOf(map, scale, rotateDegrees);
         return new Scene(world.withEnvironment(env), materials, camera, notes, false, framed);
     }
 
-    /** Collects shapes, materials, camera and environment, then builds the BVH once. Not thread-safe. */
-    public static final class Builder {
+    /**
+     * Collects shapes, materials, camera, lights and environment, then builds the BVH once. Not
+     * thread-safe. (The lights and the environment are set by the methods of a package-private base.)
+     */
+    public static final class Builder extends SceneLighting {
         private final GeometryBuilder geometry = new GeometryBuilder();
         private final List<Material> materials = new ArrayList<>();
         private final Map<Material, Integer> materialIndex = new IdentityHashMap<>();
         private final List<String> notes = new ArrayList<>();
-        private final List<PunctualLight> punctual = new ArrayList<>();
         private Camera camera;
-        private Environment environment;
 
         private Builder() {}
 
@@ -268,86 +294,6 @@ public final class Scene {
          */
         public Builder camera(Camera camera) {
             this.camera = Objects.requireNonNull(camera);
-            return this;
-        }
-
-        /**
-         * Radiance arriving from every direction where rays leave the scene. Without an
-         * environment, a scene with lights has a black one and a scene without lights strahl's
-         * studio sky (a procedural blue sky with a soft sun, built in code).
-         *
-         * @param radiance the constant environment radiance
-         * @return this builder
-         */
-        public Builder environment(Rgb radiance) {
-            this.environment = Environment.constant(Objects.requireNonNull(radiance));
-            return this;
-        }
-
-        /**
-         * A latitude–longitude environment map, oriented as Mitsuba 3's {@code envmap}: +Y is up
-         * and the image's top row is the +Y pole; the centre column is seen looking along +Z, the
-         * column at a quarter of the width along +X, at three quarters along −X, the left and
-         * right edges along −Z. Texel (x, y) sits at u = (x + ½)/W, v = y/(H − 1), bilinear in
-         * between. The map is importance-sampled (luminance · sin θ) for next-event estimation.
-         * Read one from a file with {@code SceneLoader.readImage}.
-         *
-         * @param map           linear radiance, at least 1×2 pixels; negative and NaN values count as black
-         * @param scale         factor on the radiance, finite and ≥ 0
-         * @param rotateDegrees rotation of the map about +Y (right-handed), in degrees
-         * @return this builder
-         * @throws IllegalArgumentException if the map is too small or the scale or rotation is not finite
-         */
-        public Builder environmentMap(Image map, double scale, double rotateDegrees) {
-            this.environment = mapOf(map, scale, rotateDegrees);
-            return this;
-        }
-
-        static Environment mapOf(Image map, double scale, double rotateDegrees) {
-            Objects.requireNonNull(map, "map");
-            return Environment.map(map.width(), map.height(), map.rgb(), scale, rotateDegrees, "map");
-        }
-
-        /**
-         * Adds a point light (glTF {@code KHR_lights_punctual} "point"): the irradiance it gives a
-         * surface at distance d, facing it, is I/d². A delta light: only light sampling finds it.
-         * @param position  where it is
-         * @param intensity radiant intensity I, W/sr per channel, ≥ 0
-         * @return this builder
-         * @throws IllegalArgumentException if the position is not finite or the intensity negative
-         */
-        public Builder pointLight(Vector3dc position, Rgb intensity) {
-            punctual.add(PunctualLight.point(position, intensity));
-            return this;
-        }
-
-        /**
-         * Adds a spot light (glTF "spot"): a point light whose intensity I is scaled by glTF's
-         * falloff clamp((cd − cos outer) / (cos inner − cos outer), 0, 1)², cd the cosine between
-         * {@code direction} and the way from the light to the lit point.
-         *
-         * @param position          where it is
-         * @param direction         its axis, the direction it shines in (any length but zero)
-         * @param intensity         radiant intensity I on the axis, W/sr per channel, ≥ 0
-         * @param innerConeRadians  full intensity within this angle of the axis, ≥ 0
-         * @param outerConeRadians  no light beyond this angle, ≥ inner, &gt; 0 and ≤ π/2
-         * @return this builder
-         * @throws IllegalArgumentException for angles out of range, a zero direction or a negative intensity
-         */
-        public Builder spotLight(Vector3dc position, Vector3dc direction, Rgb intensity, double innerConeRadians, double outerConeRadians) {
-            punctual.add(PunctualLight.spot(position, direction, intensity, innerConeRadians, outerConeRadians));
-            return this;
-        }
-
-        /**
-         * Adds a directional light (glTF "directional"): parallel light, as from a distant sun.
-         * @param direction  the direction the light travels (any length but zero)
-         * @param irradiance irradiance E on a surface facing the light, W/m² per channel, ≥ 0
-         * @return this builder
-         * @throws IllegalArgumentException for a zero direction or a negative irradiance
-         */
-        public Builder directionalLight(Vector3dc direction, Rgb irradiance) {
-            punctual.add(PunctualLight.directional(direction, irradiance));
             return this;
         }
 

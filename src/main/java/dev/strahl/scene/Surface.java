@@ -4,7 +4,7 @@ import dev.strahl.image.Rgb;
 import dev.strahl.light.Emission;
 import dev.strahl.material.Bsdf;
 import dev.strahl.texture.Bitmap;
-import dev.strahl.texture.Texture;
+import dev.strahl.texture.TextureLookup;
 import dev.strahl.world.SurfaceMaps;
 import java.util.ArrayList;
 import java.util.List;
@@ -25,7 +25,7 @@ import java.util.Objects;
  * @param cutoff          the surface is absent where alpha &lt; cutoff
  * @param images          the images of all textures, each once
  */
-record Surface(Bsdf bsdf, Rgb emission, Texture emissionTexture, Texture normalMap, double normalScale, Texture alpha, double cutoff,
+record Surface(Bsdf bsdf, Rgb emission, TextureLookup emissionTexture, TextureLookup normalMap, double normalScale, TextureLookup alpha, double cutoff,
                List<Bitmap> images) {
 
     Surface {
@@ -39,15 +39,15 @@ record Surface(Bsdf bsdf, Rgb emission, Texture emissionTexture, Texture normalM
         return new Surface(bsdf, emission, null, null, 1, null, 0.5, images);
     }
 
-    Surface withEmission(Rgb scale, Texture texture) {
+    Surface withEmission(Rgb scale, TextureLookup texture) {
         return new Surface(bsdf, scale, texture, normalMap, normalScale, alpha, cutoff, union(images, texture));
     }
 
-    Surface withNormalMap(Texture map, double scale) {
+    Surface withNormalMap(TextureLookup map, double scale) {
         return new Surface(bsdf, emission, emissionTexture, map, scale, alpha, cutoff, union(images, map));
     }
 
-    Surface withAlpha(Texture a, double c) {
+    Surface withAlpha(TextureLookup a, double c) {
         return new Surface(bsdf, emission, emissionTexture, normalMap, normalScale, a, c, union(images, a));
     }
 
@@ -71,13 +71,13 @@ record Surface(Bsdf bsdf, Rgb emission, Texture emissionTexture, Texture normalM
     }
 
     /** The images behind some textures, each once (their sRGB-decoded twins where colours are read). */
-    static List<Bitmap> images(Texture... textures) {
+    static List<Bitmap> images(TextureLookup... textures) {
         return union(List.of(), textures);
     }
 
-    private static List<Bitmap> union(List<Bitmap> known, Texture... textures) {
+    private static List<Bitmap> union(List<Bitmap> known, TextureLookup... textures) {
         List<Bitmap> out = new ArrayList<>(known);
-        for (Texture t : textures) {
+        for (TextureLookup t : textures) {
             Bitmap b = t == null ? null : t.bitmap();
             if (b != null && out.stream().noneMatch(x -> x == b)) {
                 out.add(b);

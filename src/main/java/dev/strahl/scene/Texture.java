@@ -1,5 +1,6 @@
 package dev.strahl.scene;
 
+import dev.strahl.texture.TextureLookup;
 import dev.strahl.image.Rgb;
 import dev.strahl.texture.Bitmap;
 import dev.strahl.texture.Channel;
@@ -7,6 +8,7 @@ import dev.strahl.texture.ConstantTexture;
 import dev.strahl.texture.ImageTexture;
 import dev.strahl.texture.ScaledTexture;
 import dev.strahl.texture.UvTransform;
+import dev.strahl.texture.Wrap;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Objects;
@@ -21,8 +23,8 @@ import java.util.Objects;
  * <p>Texture coordinates (0, 0) are the image's bottom-left corner and (1, 1) its top-right one
  * (OBJ's convention); a {@link TriangleMesh} gives them per vertex, spheres have u = φ/2π and
  * v = 1 − θ/π about their y axis. They are scaled, rotated and offset ({@link #withUvScale},
- * {@link #withUvRotation}, {@link #withUvOffset}, in this order) and wrapped ({@link #withWrap},
- * repeating by default) before the lookup.
+ * {@link #withUvRotation}, {@link #withUvOffset}, in this order) and wrapped (repeating by default, or
+ * {@link #clamped}, {@link #mirrored}) before the lookup.
  *
  * <p>Values: a colour texture (an albedo, a base colour) is decoded from sRGB to linear unless it is
  * declared {@link #linear()}; a number (roughness, metallic) reads a linear channel (the grey value,
@@ -34,16 +36,6 @@ import java.util.Objects;
  * }</pre>
  */
 public final class Texture {
-    /** How texture coordinates outside [0, 1) read the image. */
-    public enum Wrap {
-        /** The image repeats (the default). */
-        REPEAT,
-        /** The border texels extend outwards. */
-        CLAMP,
-        /** The image repeats, mirrored every other time. */
-        MIRRORED_REPEAT
-    }
-
     private final Path file;
     private final Bitmap bitmap;
     private final Rgb constant;
@@ -235,13 +227,27 @@ public final class Texture {
     }
 
     /**
-     * This texture with another wrap mode.
+     * This texture with the image's border texels extended outwards where the coordinates leave
+     * [0, 1) (glTF's CLAMP_TO_EDGE), instead of the image repeating.
      *
-     * @param mode the wrap mode
      * @return a new texture
      */
-    public Texture withWrap(Wrap mode) {
-        return new Texture(file, bitmap, constant, linear, transform, Objects.requireNonNull(mode, "mode"), channel, factor);
+    public Texture clamped() {
+        return withWrap(Wrap.CLAMP);
+    }
+
+    /**
+     * This texture with the image repeating mirrored every other time (glTF's MIRRORED_REPEAT),
+     * instead of repeating as it is.
+     *
+     * @return a new texture
+     */
+    public Texture mirrored() {
+        return withWrap(Wrap.MIRRORED_REPEAT);
+    }
+
+    private Texture withWrap(Wrap mode) {
+        return new Texture(file, bitmap, constant, linear, transform, mode, channel, factor);
     }
 
     /**
@@ -268,30 +274,30 @@ public final class Texture {
     }
 
     /** The texture as a colour: sRGB-decoded texels unless linear (a one-channel texture: its grey value), times the factor. */
-    dev.strahl.texture.Texture colour() {
+    TextureLookup colour() {
         if (constant != null) {
-            return dev.strahl.texture.Texture.of(constant);
+            return TextureLookup.of(constant);
         }
         if (channel != null) {
-            return withFactor(new ImageTexture(bitmap, wrap(), transform, channel), Channel.LUMINANCE);
+            return withFactor(new ImageTexture(bitmap, wrap, transform, channel), Channel.LUMINANCE);
         }
-        return withFactor(new ImageTexture(linear ? bitmap : bitmap.srgbDecoded(), wrap(), transform, Channel.LUMINANCE), Channel.LUMINANCE);
+        return withFactor(new ImageTexture(linear ? bitmap : bitmap.srgbDecoded(), wrap, transform, Channel.LUMINANCE), Channel.LUMINANCE);
     }
 
     /** The texture as linear data (normal maps): the texels as stored, never sRGB-decoded, times the factor. */
-    dev.strahl.texture.Texture data() {
+    TextureLookup data() {
         if (constant != null) {
-            return dev.strahl.texture.Texture.of(constant);
+            return TextureLookup.of(constant);
         }
-        return withFactor(new ImageTexture(bitmap, wrap(), transform, channel != null ? channel : Channel.LUMINANCE), Channel.LUMINANCE);
+        return withFactor(new ImageTexture(bitmap, wrap, transform, channel != null ? channel : Channel.LUMINANCE), Channel.LUMINANCE);
     }
 
     /** The texture as a number from a channel of the linear texels (its own channel if it has one), times the factor. */
-    dev.strahl.texture.Texture scalar(Channel channel) {
+    TextureLookup scalar(Channel channel) {
         if (constant != null) {
             return new ConstantTexture(constant, channelOf(constant, channel));
         }
-        return withFactor(new ImageTexture(bitmap, wrap(), transform, this.channel != null ? this.channel : channel), channel);
+        return withFactor(new ImageTexture(bitmap, wrap, transform, this.channel != null ? this.channel : channel), channel);
     }
 
     /**
@@ -299,7 +305,7 @@ public final class Texture {
      * that channel's factor, or (a luminance, or a one-channel texture, whose number is its grey
      * value) by the factor's luminance.
      */
-    private dev.strahl.texture.Texture withFactor(dev.strahl.texture.Texture t, Channel read) {
+    private TextureLookup withFactor(TextureLookup t, Channel read) {
         if (factor == null) {
             return t;
         }
@@ -323,10 +329,6 @@ public final class Texture {
             default:
                 return c.luminance();
         }
-    }
-
-    private dev.strahl.texture.Wrap wrap() {
-        return dev.strahl.texture.Wrap.valueOf(wrap.name());
     }
 
     @Override

@@ -1,8 +1,8 @@
 package dev.strahl.scene;
 
-import dev.strahl.io.image.ChannelImage;
-import dev.strahl.io.image.FileReads;
-import dev.strahl.io.image.TextureImages;
+import dev.strahl.codec.ChannelImage;
+import dev.strahl.files.FileReads;
+import dev.strahl.codec.TextureImages;
 import dev.strahl.texture.Bitmap;
 import java.io.IOException;
 import java.lang.ref.WeakReference;

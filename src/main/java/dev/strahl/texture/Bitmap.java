@@ -1,5 +1,6 @@
 package dev.strahl.texture;
 
+import dev.strahl.color.Srgb;
 import java.util.Arrays;
 import java.util.Objects;
 

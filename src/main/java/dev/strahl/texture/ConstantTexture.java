@@ -1,7 +1,7 @@
 package dev.strahl.texture;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import java.util.Objects;
 
 /**
@@ -10,7 +10,7 @@ import java.util.Objects;
  * @param colour the colour, linear RGB
  * @param number the scalar value
  */
-public record ConstantTexture(Rgb colour, double number) implements Texture {
+public record ConstantTexture(Rgb colour, double number) implements TextureLookup {
 
     /** Checks that the colour is given and the number finite. */
     public ConstantTexture {

@@ -1,7 +1,7 @@
 package dev.strahl.texture;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import java.util.Objects;
 
 /**
@@ -17,7 +17,7 @@ import java.util.Objects;
  * @param transform the texture-coordinate transform
  * @param channel   the channel {@link #value} reads
  */
-public record ImageTexture(Bitmap bitmap, Wrap wrap, UvTransform transform, Channel channel) implements Texture {
+public record ImageTexture(Bitmap bitmap, Wrap wrap, UvTransform transform, Channel channel) implements TextureLookup {
 
     /** Checks for nulls. */
     public ImageTexture {
@@ -34,38 +34,25 @@ public record ImageTexture(Bitmap bitmap, Wrap wrap, UvTransform transform, Chan
             dest.set(a, a, a);
             return;
         }
-        Bitmap b = bitmap;
-        double su = transform.mapU(u, v) * b.width() - 0.5, sv = transform.mapV(u, v) * b.height() - 0.5;
-        if (!Double.isFinite(su) || !Double.isFinite(sv)) {
-            dest.setZero();
-            return;
-        }
-        double fx0 = Math.floor(su), fy0 = Math.floor(sv);
-        double fx = su - fx0, fy = sv - fy0;
-        int ix = (int) Math.max(Integer.MIN_VALUE / 4, Math.min(Integer.MAX_VALUE / 4, fx0));
-        int iy = (int) Math.max(Integer.MIN_VALUE / 4, Math.min(Integer.MAX_VALUE / 4, fy0));
-        int x0 = wrap.index(ix, b.width()), x1 = wrap.index(ix + 1, b.width());
-        int y0 = wrap.index(iy, b.height()), y1 = wrap.index(iy + 1, b.height());
-        double w00 = (1 - fx) * (1 - fy), w10 = fx * (1 - fy), w01 = (1 - fx) * fy, w11 = fx * fy;
-        int n = b.channels();
-        float[] d = b.data;
-        int i00 = (y0 * b.width() + x0) * n, i10 = (y0 * b.width() + x1) * n;
-        int i01 = (y1 * b.width() + x0) * n, i11 = (y1 * b.width() + x1) * n;
-        double r = w00 * d[i00] + w10 * d[i10] + w01 * d[i01] + w11 * d[i11];
-        if (n <= 2) {
-            dest.set(r, r, r);
-            return;
-        }
-        double g = w00 * d[i00 + 1] + w10 * d[i10 + 1] + w01 * d[i01 + 1] + w11 * d[i11 + 1];
-        double bl = w00 * d[i00 + 2] + w10 * d[i10 + 2] + w01 * d[i01 + 2] + w11 * d[i11 + 2];
-        dest.set(r, g, bl);
+        bilinear(u, v, dest);
     }
 
     @Override
     public double value(double u, double v) {
+        return bilinear(u, v, null);
+    }
+
+    /**
+     * The bilinear lookup at (u, v): into {@code dest} the colour of the texels, or, with
+     * {@code dest} null, the number of {@link #channel} (returned). Outside a finite p: black, 0.
+     */
+    private double bilinear(double u, double v, MutableRgb dest) {
         Bitmap b = bitmap;
         double su = transform.mapU(u, v) * b.width() - 0.5, sv = transform.mapV(u, v) * b.height() - 0.5;
         if (!Double.isFinite(su) || !Double.isFinite(sv)) {
+            if (dest != null) {
+                dest.setZero();
+            }
             return 0;
         }
         double fx0 = Math.floor(su), fy0 = Math.floor(sv);
@@ -74,8 +61,24 @@ public record ImageTexture(Bitmap bitmap, Wrap wrap, UvTransform transform, Chan
         int iy = (int) Math.max(Integer.MIN_VALUE / 4, Math.min(Integer.MAX_VALUE / 4, fy0));
         int x0 = wrap.index(ix, b.width()), x1 = wrap.index(ix + 1, b.width());
         int y0 = wrap.index(iy, b.height()), y1 = wrap.index(iy + 1, b.height());
-        return (1 - fx) * (1 - fy) * b.value(x0, y0, channel) + fx * (1 - fy) * b.value(x1, y0, channel)
-                + (1 - fx) * fy * b.value(x0, y1, channel) + fx * fy * b.value(x1, y1, channel);
+        if (dest == null) {
+            return (1 - fx) * (1 - fy) * b.value(x0, y0, channel) + fx * (1 - fy) * b.value(x1, y0, channel)
+                    + (1 - fx) * fy * b.value(x0, y1, channel) + fx * fy * b.value(x1, y1, channel);
+        }
+        double w00 = (1 - fx) * (1 - fy), w10 = fx * (1 - fy), w01 = (1 - fx) * fy, w11 = fx * fy;
+        int n = b.channels();
+        float[] d = b.data;
+        int i00 = (y0 * b.width() + x0) * n, i10 = (y0 * b.width() + x1) * n;
+        int i01 = (y1 * b.width() + x0) * n, i11 = (y1 * b.width() + x1) * n;
+        double r = w00 * d[i00] + w10 * d[i10] + w01 * d[i01] + w11 * d[i11];
+        if (n <= 2) {
+            dest.set(r, r, r);
+            return 0;
+        }
+        double g = w00 * d[i00 + 1] + w10 * d[i10 + 1] + w01 * d[i01 + 1] + w11 * d[i11 + 1];
+        double bl = w00 * d[i00 + 2] + w10 * d[i10 + 2] + w01 * d[i01 + 2] + w11 * d[i11 + 2];
+        dest.set(r, g, bl);
+        return 0;
     }
 
     @Override

@@ -1,7 +1,7 @@
 package dev.strahl.texture;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import java.util.Objects;
 
 /**
@@ -18,7 +18,7 @@ import java.util.Objects;
  * @param colourFactor multiplies {@link #rgb}, channel by channel; not negative (an {@code Rgb} is finite)
  * @param valueFactor  multiplies {@link #value}; finite, not negative
  */
-public record ScaledTexture(Texture texture, Rgb colourFactor, double valueFactor) implements Texture {
+public record ScaledTexture(TextureLookup texture, Rgb colourFactor, double valueFactor) implements TextureLookup {
 
     /** Checks for nulls and that the factors are finite and not negative. */
     public ScaledTexture {

@@ -15,6 +15,6 @@
  *
  * <p>This package sits below {@code material} (BSDFs hold textures) and {@code geometry} (alpha
  * cut-outs are decided during traversal); it reads no files: {@code dev.strahl.scene} loads them
- * with the readers of {@code dev.strahl.io.image} and hands the pixels over as a {@link Bitmap}.
+ * with the readers of {@code dev.strahl.codec} and hands the pixels over as a {@link Bitmap}.
  */
 package dev.strahl.texture;

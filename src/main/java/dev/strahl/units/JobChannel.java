@@ -20,8 +20,15 @@ public interface JobChannel extends AutoCloseable {
     /** Threads of those members. */
     int threads();
 
-    /** What each member has done for this job so far. */
-    List<MemberFigures> figures();
+    /**
+     * What each member has done for this job so far (a unit lost is counted where it was rendered
+     * in the end, not where it was lost).
+     *
+     * @param make makes the record of one member's figures
+     * @param <M>  the record
+     * @return one record per member that took part
+     */
+    <M> List<M> figures(MemberFigures<M> make);
 
     /** The job has ended: members drop it. */
     @Override

@@ -14,5 +14,5 @@ public interface UnitService {
      * @return the renderer
      * @throws IllegalArgumentException if the settings cannot be read or the scene is not the coordinator's
      */
-    UnitRenderer open(Scene scene, byte[] settings, byte[] digest, int threads);
+    UnitRenderer open(Scene scene, String settings, byte[] digest, int threads);
 }

@@ -1,6 +1,6 @@
 package dev.strahl.viewer;
 
-import dev.strahl.film.Tonemap;
+import dev.strahl.color.DisplayEncoding;
 import dev.strahl.image.ToneMapping;
 import java.awt.image.BufferedImage;
 import java.util.List;
@@ -15,7 +15,7 @@ import java.util.function.Consumer;
  * neither the render threads nor the event dispatch thread spend time on tone mapping. Frames are
  * coalesced: only the newest waiting frame is converted, older ones are dropped, and so are frames
  * of a job older than one already shown. Each result is a new {@link BufferedImage} (written
- * through its data buffer by {@link Tonemap}), published whole by one reference: the display never
+ * through its data buffer by {@link DisplayEncoding}), published whole by one reference: the display never
  * sees half of one pass and half of the next. Changing the exposure or the tone curve
  * ({@link ToneMapping}: clamp, ACES, AgX, as {@code --tonemap} for PNGs) re-converts the last
  * frame and never restarts rendering.
@@ -150,7 +150,7 @@ final class FramePresenter implements Consumer<RenderController.Frame>, AutoClos
             return;
         }
         RenderController.Frame f = p.frame();
-        shown = new Shown(Tonemap.toBufferedImage(f.image(), e, c), f, e, c, p.denoised());
+        shown = new Shown(DisplayEncoding.toBufferedImage(f.image(), e, c), f, e, c, p.denoised());
         onShown.forEach(Runnable::run);
     }
 

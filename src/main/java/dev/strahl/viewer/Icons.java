@@ -54,6 +54,23 @@ final class Icons {
         };
     }
 
+    /** The open path through the points (x0, y0, x1, y1, ...). */
+    private static Path2D polyline(double... xy) {
+        Path2D p = new Path2D.Double();
+        p.moveTo(xy[0], xy[1]);
+        for (int i = 2; i < xy.length; i += 2) {
+            p.lineTo(xy[i], xy[i + 1]);
+        }
+        return p;
+    }
+
+    /** The closed path through the points (x0, y0, x1, y1, ...). */
+    private static Path2D polygon(double... xy) {
+        Path2D p = polyline(xy);
+        p.closePath();
+        return p;
+    }
+
     static Icon pause() {
         return of(g -> {
             g.fill(new RoundRectangle2D.Double(3.5, 2.5, 3, 11, 1, 1));
@@ -63,57 +80,27 @@ final class Icons {
 
     static Icon resume() {
         return of(g -> {
-            Path2D p = new Path2D.Double();
-            p.moveTo(4, 2.5);
-            p.lineTo(13.5, 8);
-            p.lineTo(4, 13.5);
-            p.closePath();
-            g.fill(p);
+            g.fill(polygon(4, 2.5, 13.5, 8, 4, 13.5));
         });
     }
 
     static Icon restart() {
         return of(g -> {
             g.draw(new Arc2D.Double(2.5, 2.5, 11, 11, 60, 280, Arc2D.OPEN));
-            Path2D head = new Path2D.Double();
-            head.moveTo(9.5, 0.8);
-            head.lineTo(13.6, 3.2);
-            head.lineTo(9.6, 6.2);
-            head.closePath();
-            g.fill(head);
+            g.fill(polygon(9.5, 0.8, 13.6, 3.2, 9.6, 6.2));
         });
     }
 
     static Icon open() {
         return of(g -> {
-            Path2D p = new Path2D.Double();
-            p.moveTo(1.5, 13.5);
-            p.lineTo(1.5, 3);
-            p.lineTo(6, 3);
-            p.lineTo(7.5, 4.5);
-            p.lineTo(13, 4.5);
-            p.lineTo(13, 6.5);
-            g.draw(p);
-            Path2D front = new Path2D.Double();
-            front.moveTo(1.5, 13.5);
-            front.lineTo(4, 7);
-            front.lineTo(15, 7);
-            front.lineTo(12.5, 13.5);
-            front.closePath();
-            g.draw(front);
+            g.draw(polyline(1.5, 13.5, 1.5, 3, 6, 3, 7.5, 4.5, 13, 4.5, 13, 6.5));
+            g.draw(polygon(1.5, 13.5, 4, 7, 15, 7, 12.5, 13.5));
         });
     }
 
     static Icon save() {
         return of(g -> {
-            Path2D p = new Path2D.Double();
-            p.moveTo(2, 2);
-            p.lineTo(11.5, 2);
-            p.lineTo(14, 4.5);
-            p.lineTo(14, 14);
-            p.lineTo(2, 14);
-            p.closePath();
-            g.draw(p);
+            g.draw(polygon(2, 2, 11.5, 2, 14, 4.5, 14, 14, 2, 14));
             g.draw(new java.awt.geom.Rectangle2D.Double(5, 2, 5, 3.5));
             g.draw(new java.awt.geom.Rectangle2D.Double(4.5, 9, 7, 5));
         });
@@ -121,17 +108,8 @@ final class Icons {
 
     static Icon home() {
         return of(g -> {
-            Path2D p = new Path2D.Double();
-            p.moveTo(1.5, 8);
-            p.lineTo(8, 2);
-            p.lineTo(14.5, 8);
-            g.draw(p);
-            Path2D body = new Path2D.Double();
-            body.moveTo(3.5, 7);
-            body.lineTo(3.5, 14);
-            body.lineTo(12.5, 14);
-            body.lineTo(12.5, 7);
-            g.draw(body);
+            g.draw(polyline(1.5, 8, 8, 2, 14.5, 8));
+            g.draw(polyline(3.5, 7, 3.5, 14, 12.5, 14, 12.5, 7));
             g.draw(new java.awt.geom.Rectangle2D.Double(6.5, 9.5, 3, 4.5));
         });
     }

@@ -62,14 +62,11 @@ final class RenderController {
 
     private final RenderJobs.Starter starter;
     private final Consumer<Frame> sink;
-    private final RenderJobs.Scheduler scheduler;
+    private final SettleTimer settle;
     private final ActiveTime clock;
 
     private Scene scene;
-    private OrbitCamera home;
-    private OrbitCamera camera;
-    private double aperture;                  // the thin lens: the scene camera's, focus set by Ctrl+click
-    private double focusDistance;
+    private ViewCamera view;
     private RenderSettings settings;          // full-resolution settings (size = the window's film)
     private int stopAt;
     private State state = State.RUNNING;
@@ -84,21 +81,16 @@ final class RenderController {
     private boolean waitingForDisplay;
     /** The glance pass has shown while the window was not yet on screen: full resolution starts with it. */
     private boolean fullAfterDisplay;
-    private Runnable cancelSettle;
-    private long settleToken;
 
     RenderController(Scene scene, RenderSettings settings, int stopAt, RenderJobs.Starter starter, Consumer<Frame> sink,
                      RenderJobs.Scheduler scheduler, LongSupplier nanoTime) {
         this.scene = Objects.requireNonNull(scene, "scene");
-        this.home = OrbitCamera.of(scene.camera());
-        this.aperture = scene.camera().aperture();
-        this.focusDistance = scene.camera().focusDistance();
-        this.camera = home;
+        this.view = new ViewCamera(scene.camera());
         this.settings = Objects.requireNonNull(settings, "settings");
         this.stopAt = ViewerOptions.checkStopAt(stopAt);
         this.starter = starter;
         this.sink = sink;
-        this.scheduler = scheduler;
+        this.settle = new SettleTimer(scheduler, SETTLE_MILLIS);
         this.clock = new ActiveTime(nanoTime);
     }
 
@@ -192,10 +184,7 @@ final class RenderController {
     synchronized void setScene(Scene newScene, RenderSettings newSettings) {
         scene = Objects.requireNonNull(newScene, "scene");
         settings = Objects.requireNonNull(newSettings, "settings");
-        home = OrbitCamera.of(newScene.camera());
-        camera = home;
-        aperture = newScene.camera().aperture();
-        focusDistance = newScene.camera().focusDistance();
+        view = new ViewCamera(newScene.camera());
         renderAgain();
     }
 
@@ -206,9 +195,9 @@ final class RenderController {
      * @return the new focus distance, or NaN if nothing was hit
      */
     synchronized double focusAt(double fx, double fy) {
-        double d = FocusPicker.focusDistance(scene, camera.toCamera(), fx, fy, (double) settings.width() / settings.height());
+        double d = scene.focusDistance(view.orbit().toCamera(), fx, fy, (double) settings.output().width() / settings.output().height());
         if (d > 0) {
-            focusDistance = d;
+            view.focus(d);
             renderAgain();
         }
         return d;
@@ -216,25 +205,24 @@ final class RenderController {
 
     /** The thin lens in use: {aperture, focus distance}. */
     synchronized double[] lens() {
-        return new double[] {aperture, focusDistance};
+        return view.lens();
     }
 
     /** Moves the camera (orbit, pan, dolly): preview now, full resolution once the moves stop. */
     synchronized void moveCamera(UnaryOperator<OrbitCamera> move) {
-        camera = move.apply(camera);
+        view.move(move);
         moving();
     }
 
     /** Back to the scene's camera. */
     synchronized void resetCamera() {
-        camera = home;
-        focusDistance = scene.camera().focusDistance();
+        view.reset();
         renderAgain();
     }
 
     /** The film follows the window: a new size previews like a camera move. */
     synchronized void resize(int width, int height) {
-        if (width == settings.width() && height == settings.height()) {
+        if (width == settings.output().width() && height == settings.output().height()) {
             return;
         }
         settings = settings.withSize(width, height);
@@ -249,24 +237,20 @@ final class RenderController {
             job.cancel();
             job = null;
         }
-        if (cancelSettle != null) {
-            cancelSettle.run();
-        }
-        scheduler.shutdown();
+        settle.close();
     }
 
-    // --- queries -----------------------------------------------------------------------------
-
+    /** What the status bar shows now. */
     synchronized Status status() {
         long samples = job != null ? job.samplesDone() : 0;
-        int w = preview ? previewSize(settings.width()) : settings.width();
-        int h = preview ? previewSize(settings.height()) : settings.height();
-        return new Status(state, preview, samplesPerPixel, stopAt, clock.seconds(), samples, w, h, settings.integrator(),
-                settings.maxDepth(), settings.hemisphere(), generation);
+        int w = preview ? previewSize(settings.output().width()) : settings.output().width();
+        int h = preview ? previewSize(settings.output().height()) : settings.output().height();
+        return new Status(state, preview, samplesPerPixel, stopAt, clock.seconds(), samples, w, h, settings.transport().integrator(),
+                settings.transport().maxDepth(), settings.transport().hemisphere(), generation);
     }
 
     synchronized OrbitCamera camera() {
-        return camera;
+        return view.orbit();
     }
 
     synchronized Scene scene() {
@@ -287,7 +271,7 @@ final class RenderController {
         if (state == State.CLOSED) {
             return;
         }
-        scheduleSettle();
+        settle.restart(this::settled);
         glance = false;                      // the settle timer decides when full resolution starts
         if (preview && passes == 0 && job != null) {
             cameraPending = true;            // applied when this preview has shown its first pass
@@ -296,17 +280,8 @@ final class RenderController {
         }
     }
 
-    private void scheduleSettle() {
-        if (cancelSettle != null) {
-            cancelSettle.run();
-        }
-        long token = ++settleToken;
-        cancelSettle = scheduler.schedule(() -> settle(token), SETTLE_MILLIS);
-    }
-
-    private synchronized void settle(long token) {
-        if (token == settleToken && state != State.CLOSED) {
-            cancelSettle = null;
+    private synchronized void settled(long token) {
+        if (state != State.CLOSED && settle.ended(token)) {
             startJob(Mode.FULL);
         }
     }
@@ -324,10 +299,8 @@ final class RenderController {
             job.cancel();
         }
         fullAfterDisplay = false;
-        if (mode != Mode.PREVIEW && cancelSettle != null) {
-            cancelSettle.run();
-            cancelSettle = null;
-            settleToken++;
+        if (mode != Mode.PREVIEW) {
+            settle.stop();
         }
         preview = previewJob;
         glance = mode == Mode.GLANCE;
@@ -340,11 +313,11 @@ final class RenderController {
         }
         RenderSettings s = settings.withTimeLimit(java.time.Duration.ZERO);
         if (previewJob) {
-            s = s.withSize(previewSize(s.width()), previewSize(s.height())).withAovs(Set.of());   // never denoised
+            s = s.withSize(previewSize(s.output().width()), previewSize(s.output().height())).withAovs(Set.of());   // never denoised
         }
         s = s.withSamplesPerPixel(Integer.MAX_VALUE).withSamplesPerPass(1);
         long g = generation;
-        job = starter.start(scene.withCamera(camera.toCamera().withLens(aperture, focusDistance)), s, new RenderListener() {
+        job = starter.start(scene.withCamera(view.camera()), s, new RenderListener() {
             @Override
             public void passCompleted(int spp, Image image) {
                 onPass(g, spp, image);

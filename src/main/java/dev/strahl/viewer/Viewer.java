@@ -50,14 +50,15 @@ public final class Viewer {
     @FunctionalInterface
     public interface FilmCheck {
         /** Accepts every size. */
-        FilmCheck NONE = (width, height) -> { };
+        FilmCheck NONE = (width, height, features) -> { };
 
         /**
-         * Returns if a film of this size may be rendered.
+         * Returns if a film of this size may be rendered, with feature buffers (which the viewer
+         * keeps to denoise, View → Denoise) or without.
          *
          * @throws IllegalArgumentException with the one-line reason if it may not
          */
-        void check(int width, int height);
+        void check(int width, int height, boolean features);
     }
 
     /**

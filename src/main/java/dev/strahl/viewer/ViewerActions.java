@@ -89,10 +89,10 @@ final class ViewerActions {
                 e -> JOptionPane.showMessageDialog(root, CONTROLS, "strahl viewer: controls", JOptionPane.PLAIN_MESSAGE));
         quit = action("Quit", null, "Close the viewer", KeyStroke.getKeyStroke(KeyEvent.VK_Q, menuMask()), e -> onQuit.run());
 
-        integrator = new Choice<>(List.of(IntegratorKind.values()), controller.settings().integrator(), null, IntegratorKind::id,
+        integrator = new Choice<>(List.of(IntegratorKind.values()), controller.settings().transport().integrator(), null, IntegratorKind::id,
                 controller::setIntegrator);
-        maxDepth = new Choice<>(DEPTHS, controller.settings().maxDepth(), DEPTH_ORDER, StatusBar::depthText, controller::setMaxDepth);
-        hemisphere = new Choice<>(List.of(HemisphereSampling.values()), controller.settings().hemisphere(), null,
+        maxDepth = new Choice<>(DEPTHS, controller.settings().transport().maxDepth(), DEPTH_ORDER, StatusBar::depthText, controller::setMaxDepth);
+        hemisphere = new Choice<>(List.of(HemisphereSampling.values()), controller.settings().transport().hemisphere(), null,
                 h -> h.name().toLowerCase(Locale.ROOT), controller::setHemisphere);
         stopAt = new Choice<>(STOP_AT, controller.stopAt(), STOP_AT_ORDER,
                 n -> n == RenderController.UNLIMITED ? "never" : n + " spp", controller::setStopAt);
@@ -154,9 +154,9 @@ final class ViewerActions {
      */
     void setDenoise(boolean on) {
         denoise.putValue(Action.SELECTED_KEY, on);
-        boolean restart = on && !controller.settings().aovs().containsAll(LiveDenoiser.GUIDES);
+        boolean restart = on && !controller.settings().output().aovs().containsAll(LiveDenoiser.GUIDES);
         if (restart) {
-            controller.setAovs(LiveDenoiser.withGuides(controller.settings().aovs()));
+            controller.setAovs(LiveDenoiser.withGuides(controller.settings().output().aovs()));
         }
         denoiser.setEnabled(on, !restart);
     }

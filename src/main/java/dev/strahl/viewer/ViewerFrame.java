@@ -43,8 +43,8 @@ final class ViewerFrame {
         this.controller = controller;
         this.presenter = presenter;
         this.denoiser = denoiser;
-        askedWidth = opened.settings().width();
-        askedHeight = opened.settings().height();
+        askedWidth = opened.settings().output().width();
+        askedHeight = opened.settings().output().height();
         frame = new JFrame(title(opened.file()));
         frame.setDefaultCloseOperation(WindowConstants.DO_NOTHING_ON_CLOSE);
         frame.addWindowListener(new WindowAdapter() {
@@ -90,12 +90,12 @@ final class ViewerFrame {
     void showScene(SceneFiles.Opened opened) {
         RenderSettings s = opened.settings();
         if (denoiser.enabled()) {
-            s = s.withAovs(LiveDenoiser.withGuides(s.aovs()));
+            s = s.withAovs(LiveDenoiser.withGuides(s.output().aovs()));
         }
-        boolean newSize = s.width() != askedWidth || s.height() != askedHeight;
-        askedWidth = s.width();
-        askedHeight = s.height();
-        image.setFilm(s.width(), s.height());
+        boolean newSize = s.output().width() != askedWidth || s.output().height() != askedHeight;
+        askedWidth = s.output().width();
+        askedHeight = s.output().height();
+        image.setFilm(s.output().width(), s.output().height());
         if (newSize && (frame.getExtendedState() & Frame.MAXIMIZED_BOTH) == 0) {
             frame.pack();
         }

@@ -1,45 +1,30 @@
 package dev.strahl.viewer;
 
-import dev.strahl.render.Aov;
-import dev.strahl.render.IntegratorKind;
-import dev.strahl.render.PhotonParameters;
-import dev.strahl.render.RenderSettings;
-import dev.strahl.render.HemisphereSampling;
-import dev.strahl.scene.SceneException;
 import dev.strahl.io.json.SceneSettings;
 import dev.strahl.io.json.SceneSettings.Setting;
+import dev.strahl.render.RenderSettings;
 import java.nio.file.Path;
 import java.util.EnumSet;
 import java.util.Objects;
 import java.util.Set;
 
 /**
- * How to start the viewer. A scene file's {@code film} and {@code integrator} keys replace the
- * values here, except those of the options named in {@code given}, which win as they do on the
- * command line, and except {@code spp}: the viewer renders until its own stop-at count
- * ({@link #settingsFor}).
+ * How to start the viewer, by concern: the scene, the render settings (as {@code strahl render}
+ * takes them), when to hold, the look of the window, which settings the command line gave, and what
+ * it changes in every scene opened. A scene file's {@code film} and {@code integrator} keys replace
+ * the settings here, except those named in {@code given}, which win as they do on the command line,
+ * and except {@code spp}: the viewer renders until its own stop-at count ({@link #settingsFor}).
+ * Start from {@link #defaults()} and change parts with the {@code with...} methods.
  *
- * @param scene      the scene file, or null for the default Cornell Box
- * @param width      film width in pixels at start-up (the film keeps this aspect when the window is resized)
- * @param height     film height in pixels at start-up
- * @param stopAt     samples per pixel after which rendering holds; 0 never stops
- * @param maxDepth   path segments including the camera segment; -1 unbounded
- * @param hemisphere diffuse direction sampling
- * @param threads    worker threads; 0 for all processors
- * @param seed       random seed
- * @param integrator   the light transport algorithm
- * @param lightSamples shadow rays per diffuse hit for the direct and Whitted integrators
- * @param theme      light, dark, or follow the system
- * @param given      the settings given explicitly (on the command line): a scene file does not override them
- * @param photons      photons per iteration for the photon mapper
- * @param photonRadius the photon mapper's initial gather radius; 0 = automatic
- * @param aovs         the feature buffers the render keeps ({@code --aov}, a scene file's {@code film.aovs})
- * @param overrides    the environment map and lens that replace every opened scene's own (command-line options)
- * @param shadows      whether shadow rays are traced (false: the teaching option {@code --shadows off})
+ * @param scene     the scene file, or null for the default Cornell Box
+ * @param settings  the render settings; the film size is the window's at start-up (the film keeps its
+ *                  aspect when the window is resized), the sample count is not used
+ * @param stopAt    samples per pixel after which rendering holds; 0 never stops
+ * @param theme     light, dark, or follow the system
+ * @param given     the settings given explicitly (on the command line): a scene file does not override them
+ * @param overrides the environment map and lens that replace every opened scene's own (command-line options)
  */
-public record ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere,
-                            int threads, long seed, IntegratorKind integrator, int lightSamples, Theme theme, Set<Setting> given,
-                            int photons, double photonRadius, Set<Aov> aovs, SceneOverrides overrides, boolean shadows) {
+public record ViewerOptions(Path scene, RenderSettings settings, int stopAt, Theme theme, Set<Setting> given, SceneOverrides overrides) {
 
     /**
      * The scene-file settings the viewer never takes from a file: its stop-at count is an
@@ -48,37 +33,49 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
     static final Set<Setting> NEVER_FROM_FILE = Set.of(Setting.SAMPLES_PER_PIXEL);
 
     public ViewerOptions {
+        Objects.requireNonNull(settings, "settings");
         checkStopAt(stopAt);
-        Objects.requireNonNull(hemisphere, "hemisphere");
-        Objects.requireNonNull(integrator, "integrator");
         Objects.requireNonNull(theme, "theme");
         given = Set.copyOf(Objects.requireNonNull(given, "given"));
-        aovs = Set.copyOf(Objects.requireNonNull(aovs, "aovs"));
         Objects.requireNonNull(overrides, "overrides");
-        renderSettings(width, height, maxDepth, hemisphere, threads, seed, integrator, lightSamples, photons, photonRadius);   // validates
-    }
-
-    /** Options with shadows, without feature buffers, that change nothing in the scenes opened. */
-    public ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere, int threads,
-                         long seed, IntegratorKind integrator, int lightSamples, Theme theme, Set<Setting> given, int photons,
-                         double photonRadius) {
-        this(scene, width, height, stopAt, maxDepth, hemisphere, threads, seed, integrator, lightSamples, theme, given, photons,
-                photonRadius, Set.of(), SceneOverrides.NONE, true);
-    }
-
-    /** Options with the photon mapper's default parameters. */
-    public ViewerOptions(Path scene, int width, int height, int stopAt, int maxDepth, HemisphereSampling hemisphere,
-                         int threads, long seed, IntegratorKind integrator, int lightSamples, Theme theme, Set<Setting> given) {
-        this(scene, width, height, stopAt, maxDepth, hemisphere, threads, seed, integrator, lightSamples, theme, given,
-                PhotonParameters.DEFAULT_PHOTONS, 0);
     }
 
     /**
-     * The Cornell Box at 512×512, stopping at 1024 spp, unbounded depth, cosine sampling, all
-     * processors; nothing given explicitly, so a scene file's settings apply.
+     * The Cornell Box at 512×512, stopping at 1024 spp, with the render defaults (path tracing,
+     * unbounded depth, all processors); nothing given explicitly, so a scene file's settings apply.
      */
     public static ViewerOptions defaults() {
-        return new ViewerOptions(null, 512, 512, 1024, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.SYSTEM, Set.of());
+        return new ViewerOptions(null, RenderSettings.defaults(), 1024, Theme.SYSTEM, Set.of(), SceneOverrides.NONE);
+    }
+
+    /** These options with another scene file (null: the Cornell Box). */
+    public ViewerOptions withScene(Path file) {
+        return new ViewerOptions(file, settings, stopAt, theme, given, overrides);
+    }
+
+    /** These options with other render settings. */
+    public ViewerOptions withSettings(RenderSettings s) {
+        return new ViewerOptions(scene, s, stopAt, theme, given, overrides);
+    }
+
+    /** These options with another stop-at count (0: never stop). */
+    public ViewerOptions withStopAt(int n) {
+        return new ViewerOptions(scene, settings, n, theme, given, overrides);
+    }
+
+    /** These options with another theme. */
+    public ViewerOptions withTheme(Theme t) {
+        return new ViewerOptions(scene, settings, stopAt, t, given, overrides);
+    }
+
+    /** These options with other settings given on the command line. */
+    public ViewerOptions withGiven(Set<Setting> g) {
+        return new ViewerOptions(scene, settings, stopAt, theme, g, overrides);
+    }
+
+    /** These options with other changes to every scene opened. */
+    public ViewerOptions withOverrides(SceneOverrides o) {
+        return new ViewerOptions(scene, settings, stopAt, theme, given, o);
     }
 
     /** Returns {@code n} if it is a stop-at count (0 = never stop, or a positive count of samples per pixel). */
@@ -89,10 +86,9 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
         return n;
     }
 
-    /** The render settings these options describe, without a scene file (validated by {@link RenderSettings}). */
+    /** The render settings the viewer starts jobs with, without a scene file: passes of one sample per pixel. */
     RenderSettings renderSettings() {
-        RenderSettings s = renderSettings(width, height, maxDepth, hemisphere, threads, seed, integrator, lightSamples, photons, photonRadius);
-        return s.withAovs(aovs.isEmpty() ? EnumSet.noneOf(Aov.class) : EnumSet.copyOf(aovs)).withShadows(shadows);
+        return settings.withSamplesPerPass(1);
     }
 
     /**
@@ -106,12 +102,5 @@ public record ViewerOptions(Path scene, int width, int height, int stopAt, int m
         Set<Setting> kept = EnumSet.copyOf(NEVER_FROM_FILE);
         kept.addAll(given);
         return sceneSettings.applyTo(renderSettings(), kept);
-    }
-
-    private static RenderSettings renderSettings(int width, int height, int maxDepth, HemisphereSampling hemisphere, int threads, long seed,
-                                                 IntegratorKind integrator, int lightSamples, int photons, double photonRadius) {
-        return RenderSettings.defaults().withSize(width, height).withMaxDepth(maxDepth).withHemisphere(hemisphere)
-                .withThreads(threads).withSeed(seed).withIntegrator(integrator).withLightSamples(lightSamples).withSamplesPerPass(1)
-                .withPhotons(new PhotonParameters(photons, photonRadius));
     }
 }

@@ -1,8 +1,8 @@
 package dev.strahl.world;
 
 import dev.strahl.geometry.SurfacePoint;
-import dev.strahl.math.MutableRgb;
-import dev.strahl.texture.Texture;
+import dev.strahl.color.MutableRgb;
+import dev.strahl.texture.TextureLookup;
 import org.joml.Vector2dc;
 import org.joml.Vector3d;
 
@@ -18,7 +18,7 @@ import org.joml.Vector3d;
  * @param alpha       the surface is absent where alpha(u, v) &lt; {@code cutoff}; or null
  * @param cutoff      the threshold
  */
-public record SurfaceMaps(Texture normal, double normalScale, Texture alpha, double cutoff) {
+public record SurfaceMaps(TextureLookup normal, double normalScale, TextureLookup alpha, double cutoff) {
 
     /** Checks the numbers. */
     public SurfaceMaps {

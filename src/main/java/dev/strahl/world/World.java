@@ -3,7 +3,6 @@ package dev.strahl.world;
 import dev.strahl.accel.Bvh;
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
-import dev.strahl.image.Rgb;
 import dev.strahl.light.Emission;
 import dev.strahl.light.Environment;
 import dev.strahl.light.LightSampler;
@@ -74,45 +73,12 @@ public final class World {
     /**
      * Builds the BVH over {@code geometry} and the light sampler over its emissive primitives.
      *
-     * @param geometry    every primitive, material indices into the two tables
-     * @param bsdfs       the BSDF of each material index
-     * @param emission    the emitted radiance of each material index (black: not a light)
-     * @param environment the light of rays that leave the scene
-     */
-    public static World build(Geometry geometry, Bsdf[] bsdfs, Rgb[] emission, Environment environment) {
-        return build(geometry, bsdfs, emission, environment, List.of());
-    }
-
-    /**
-     * As {@link #build(Geometry, Bsdf[], Rgb[], Environment)}, with punctual lights.
-     *
-     * @param punctual point, spot and directional lights
-     */
-    public static World build(Geometry geometry, Bsdf[] bsdfs, Rgb[] emission, Environment environment, List<PunctualLight> punctual) {
-        Emission[] e = new Emission[emission.length];
-        for (int m = 0; m < e.length; m++) {
-            e[m] = Emission.of(emission[m]);
-        }
-        return build(geometry, bsdfs, e, new SurfaceMaps[bsdfs.length], environment, punctual);
-    }
-
-    /**
-     * Builds the BVH over {@code geometry} and the light sampler over its emissive primitives.
-     *
      * @param geometry    every primitive, material indices into the tables
      * @param bsdfs       the BSDF of each material index
      * @param emission    the emission of each material index ({@link Emission#BLACK}: not a light)
      * @param maps        the normal map and alpha cut-out of each material index (null: none)
      * @param environment the light of rays that leave the scene
-     */
-    public static World build(Geometry geometry, Bsdf[] bsdfs, Emission[] emission, SurfaceMaps[] maps, Environment environment) {
-        return build(geometry, bsdfs, emission, maps, environment, List.of());
-    }
-
-    /**
-     * As {@link #build(Geometry, Bsdf[], Emission[], SurfaceMaps[], Environment)}, with punctual lights.
-     *
-     * @param punctual point, spot and directional lights
+     * @param punctual    point, spot and directional lights
      */
     public static World build(Geometry geometry, Bsdf[] bsdfs, Emission[] emission, SurfaceMaps[] maps, Environment environment,
                               List<PunctualLight> punctual) {

@@ -2,7 +2,7 @@ package dev.strahl.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.io.image.PfmReader;
+import dev.strahl.codec.PfmReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
@@ -52,9 +52,9 @@ class CheckpointCommandTest {
 
     @Test
     void timeLimitsReadAsWritten() {
-        assertThat(RenderCommand.limitText(java.time.Duration.ofMillis(300))).isEqualTo("0.3 s");
-        assertThat(RenderCommand.limitText(java.time.Duration.ofSeconds(90))).isEqualTo("90 s");
-        assertThat(RenderCommand.limitText(java.time.Duration.ofMinutes(5))).isEqualTo("5:00");
-        assertThat(RenderCommand.limitText(java.time.Duration.ofMinutes(90))).isEqualTo("1:30:00");
+        assertThat(RenderOutcome.limitText(java.time.Duration.ofMillis(300))).isEqualTo("0.3 s");
+        assertThat(RenderOutcome.limitText(java.time.Duration.ofSeconds(90))).isEqualTo("90 s");
+        assertThat(RenderOutcome.limitText(java.time.Duration.ofMinutes(5))).isEqualTo("5:00");
+        assertThat(RenderOutcome.limitText(java.time.Duration.ofMinutes(90))).isEqualTo("1:30:00");
     }
 }

@@ -8,8 +8,8 @@ import dev.strahl.render.RenderCluster;
 import dev.strahl.render.RenderJob;
 import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
+import dev.strahl.render.RenderStats;
 import dev.strahl.scene.Scene;
-import dev.strahl.units.MemberFigures;
 import java.awt.image.BufferedImage;
 import java.io.File;
 import java.io.IOException;
@@ -27,6 +27,7 @@ import java.util.Map;
 import java.util.UUID;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
@@ -142,12 +143,14 @@ class ClusterTest {
         Scene scene = SceneLoader.load(Path.of(SCENE));
         RenderSettings settings = RenderSettings.defaults().withSize(96, 64).withSamplesPerPixel(12).withSeed(3).withThreads(1);
         AtomicInteger passes = new AtomicInteger();
+        AtomicReference<RenderStats> lastPass = new AtomicReference<>();
         try (RenderCluster cluster = RenderCluster.builder().join("127.0.0.1:" + first.port).clusterName(name).threads(1)
                 .port(freePort()).start();
              RenderJob job = cluster.render(scene, Path.of(SCENE), settings, new RenderListener() {
                  @Override
-                 public void passFinished(Pass pass, Image image) {
+                 public void passFinished(RenderStats soFar, Image image) {
                      passes.incrementAndGet();
+                     lastPass.set(soFar);
                  }
              })) {
             assertThat(cluster.memberCount()).isEqualTo(3);
@@ -159,11 +162,11 @@ class ClusterTest {
                 reference = localJob.awaitCompletion();
             }
             assertThat(image.rgb()).as("2 workers, library").isEqualTo(reference.rgb());
-            List<MemberFigures> figures = MemberFigures.of(cluster);
+            List<RenderStats.Member> figures = job.awaitStats().members();
             assertThat(figures).hasSize(3);
-            assertThat(figures.stream().mapToLong(MemberFigures::units).sum()).isEqualTo(UNITS_12_SPP);
-            assertThat(figures.stream().mapToLong(MemberFigures::samples).sum()).isEqualTo(96 * 64 * 12);
-            assertThat(cluster.memberFigures()).containsExactlyElementsOf(figures.stream().map(MemberFigures::line).toList());
+            assertThat(figures.stream().mapToLong(RenderStats.Member::units).sum()).isEqualTo(UNITS_12_SPP);
+            assertThat(figures.stream().mapToLong(RenderStats.Member::samples).sum()).isEqualTo(96 * 64 * 12);
+            assertThat(lastPass.get().members()).as("the listener heard them too").isEqualTo(figures);
         }
     }
 
@@ -189,9 +192,9 @@ class ClusterTest {
             image = job.awaitCompletion();
             assertThat(job.completedSamplesPerPixel()).isEqualTo(128);
             // a unit lost with the killed worker counts where it was rendered in the end
-            List<MemberFigures> figures = MemberFigures.of(cluster);
-            assertThat(figures.stream().mapToLong(MemberFigures::units).sum()).as("%s", figures).isEqualTo(6 * 5);  // 1, 4, 16, 64, 43 spp
-            assertThat(figures.stream().mapToLong(MemberFigures::samples).sum()).as("%s", figures).isEqualTo(96 * 64 * 128);
+            List<RenderStats.Member> figures = job.awaitStats().members();
+            assertThat(figures.stream().mapToLong(RenderStats.Member::units).sum()).as("%s", figures).isEqualTo(6 * 5);  // 1, 4, 16, 64, 43 spp
+            assertThat(figures.stream().mapToLong(RenderStats.Member::samples).sum()).as("%s", figures).isEqualTo(96 * 64 * 128);
         }
         Image reference;
         try (RenderJob localJob = RenderJob.start(scene, settings)) {

@@ -3,7 +3,7 @@ package dev.strahl.cli;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import dev.strahl.io.image.ImageLimits;
+import dev.strahl.codec.ImageLimits;
 import dev.strahl.film.Film;
 import org.junit.jupiter.api.Test;
 
@@ -61,5 +61,21 @@ class HeapCheckTest {
         assertThat(ImageLimits.bytes(512)).isEqualTo("512 bytes");
         assertThat(ImageLimits.bytes(1536)).isEqualTo("1.5 KiB");
         assertThat(ImageLimits.bytes(3L << 30)).isEqualTo("3.0 GiB");
+    }
+
+    /** Feature buffers add their 56 bytes of sums per pixel to the film and their images; the denoiser its working buffers. */
+    @Test
+    void featureBuffersAndTheDenoiserAreCounted() {
+        int w = 1024, h = 512;                         // whole tiles: the film's bytes are per pixel
+        long pixels = (long) w * h;
+        long plain = HeapCheck.renderBytes(w, h, false, false);
+        assertThat(HeapCheck.renderBytes(w, h, true, false) - plain).isEqualTo((56 + HeapCheck.FEATURE_BYTES_PER_PIXEL) * pixels);
+        assertThat(HeapCheck.renderBytes(w, h, true, true) - HeapCheck.renderBytes(w, h, true, false))
+                .isEqualTo(HeapCheck.DENOISE_BYTES_PER_PIXEL * pixels);
+        assertThat(Film.bytesNeeded(w, h, true) - Film.bytesNeeded(w, h, false)).as("the film's feature sums").isEqualTo(56 * pixels);
+        // 4096² fits in 2 GiB without feature buffers, not with them and the denoiser
+        HeapCheck.checkRender(4096, 4096, false, false, 2 * GIB, () -> 0, () -> { });
+        assertThatThrownBy(() -> HeapCheck.checkRender(4096, 4096, true, true, 2 * GIB, () -> 0, () -> { }))
+                .hasMessageStartingWith("a 4096x4096 image needs ");
     }
 }

@@ -75,7 +75,7 @@ class InterruptTest {
         p.destroy();                                                           // SIGTERM
         assertThat(p.waitFor(60, TimeUnit.SECONDS)).isTrue();
         assertThat(p.exitValue()).as(stderr(p)).isEqualTo(Interrupts.SIGTERM_EXIT);
-        assertThat(dev.strahl.io.image.PfmReader.read(pfm).width()).isEqualTo(16);
+        assertThat(dev.strahl.codec.PfmReader.read(pfm).width()).isEqualTo(16);
     }
 
     @Test

@@ -3,7 +3,7 @@ package dev.strahl.cli;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import dev.strahl.image.Image;
-import dev.strahl.io.image.PfmReader;
+import dev.strahl.codec.PfmReader;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;

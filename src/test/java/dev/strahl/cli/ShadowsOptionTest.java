@@ -4,7 +4,7 @@ import static dev.strahl.cli.RenderCommandTest.CORNELL;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import dev.strahl.image.Image;
-import dev.strahl.io.image.PfmReader;
+import dev.strahl.codec.PfmReader;
 import dev.strahl.viewer.ViewerOptions;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -69,9 +69,9 @@ class ShadowsOptionTest {
 
     @Test
     void viewCarriesItIntoTheViewerOptions() {
-        assertThat(ViewCommandTest.parse("view", "s.json").shadows()).isTrue();
+        assertThat(ViewCommandTest.parse("view", "s.json").settings().transport().shadows()).isTrue();
         ViewerOptions off = ViewCommandTest.parse("view", "s.json", "--shadows", "off");
-        assertThat(off.shadows()).isFalse();
+        assertThat(off.settings().transport().shadows()).isFalse();
         assertThat(off.given()).as("not a scene file's setting").isEmpty();
     }
 }

@@ -7,7 +7,6 @@ import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonToken;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
-import dev.strahl.units.MemberFigures;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -54,15 +53,15 @@ class StatsFileTest {
         }
     }
 
-    private static final RenderStats STATS = new RenderStats(2.0, 96 * 64 * 12, 200_000, 12, 1, false, 0, 0);
+    private static final RenderStats STATS = new RenderStats(2.0, 96 * 64 * 12, 200_000, 12, 1, false, 0, 0, 3, List.of());
     private static final RenderSettings SETTINGS = RenderSettings.defaults().withSize(96, 64).withSamplesPerPixel(12);
 
     @Test
     void eachMemberIsAnObjectOfNumbers() throws Exception {
         Path file = dir.resolve("stats.json");
-        StatsFile.write(file, STATS, SETTINGS, 0.5, 0.1, 0, List.of(
-                new MemberFigures("127.0.0.1:5702", true, 1, 7, 30_000, 170_000, 170_007, 1.75, 0),
-                new MemberFigures("127.0.0.1:5701", false, 2, 11, 43_728, 270_000, 270_011, 2.2, 3)));
+        StatsFile.write(file, withMembers(STATS, List.of(
+                new RenderStats.Member("127.0.0.1:5702", true, 1, 7, 30_000, 170_000, 170_007, 1.75, 0),
+                new RenderStats.Member("127.0.0.1:5701", false, 2, 11, 43_728, 270_000, 270_011, 2.2, 3))), SETTINGS, 0.5, 0.1, 0);
         List<Map<String, Object>> members = members(file);
         assertThat(members).hasSize(2);
         Map<String, Object> first = members.get(0);
@@ -87,8 +86,13 @@ class StatsFileTest {
     @Test
     void aLocalRenderHasNoMembers() throws Exception {
         Path file = dir.resolve("local.json");
-        StatsFile.write(file, STATS, SETTINGS, 0.5, 0.1, 0, StatsFile.figures(null));
+        StatsFile.write(file, STATS, SETTINGS, 0.5, 0.1, 0);
         assertThat(members(file)).isNull();
         assertThat(Files.readString(file)).contains("\"samples\"").doesNotContain("members");
+    }
+
+    private static RenderStats withMembers(RenderStats s, List<RenderStats.Member> members) {
+        return new RenderStats(s.seconds(), s.samples(), s.rays(), s.samplesPerPixel(), s.threads(), s.cancelled(), s.invalidSamples(),
+                s.threadIdleSeconds(), s.passes(), members);
     }
 }

@@ -36,13 +36,13 @@ class ViewCommandTest {
         ViewerOptions none = parse("view", "s.json");
         assertThat(none.given()).isEmpty();
         assertThat(none.scene()).isEqualTo(Path.of("s.json"));
-        assertThat(none.width()).isEqualTo(512);
-        assertThat(none.integrator()).isEqualTo(IntegratorKind.PATH);
+        assertThat(none.settings().output().width()).isEqualTo(512);
+        assertThat(none.settings().transport().integrator()).isEqualTo(IntegratorKind.PATH);
 
         ViewerOptions some = parse("view", "s.json", "--width", "300", "--integrator", "whitted", "--spp", "16", "--threads", "1");
         assertThat(some.given()).containsExactlyInAnyOrder(Setting.WIDTH, Setting.INTEGRATOR);
-        assertThat(some.width()).isEqualTo(300);
-        assertThat(some.integrator()).isEqualTo(IntegratorKind.WHITTED);
+        assertThat(some.settings().output().width()).isEqualTo(300);
+        assertThat(some.settings().transport().integrator()).isEqualTo(IntegratorKind.WHITTED);
         assertThat(some.stopAt()).isEqualTo(16);
 
         ViewerOptions all = parse("view", "--width", "300", "--height", "200", "--max-depth", "4", "--hemisphere", "uniform",
@@ -50,11 +50,11 @@ class ViewCommandTest {
                 "--aov", "depth");
         assertThat(all.given()).as("every scene-file setting but spp: view's --spp is the stop-at count, not the file's spp")
                 .isEqualTo(EnumSet.complementOf(EnumSet.of(Setting.SAMPLES_PER_PIXEL)));
-        assertThat(all.hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
-        assertThat(all.lightSamples()).isEqualTo(2);
-        assertThat(all.photons()).isEqualTo(7000);
-        assertThat(all.photonRadius()).isEqualTo(0.5);
-        assertThat(all.aovs()).containsExactly(dev.strahl.render.Aov.DEPTH);
+        assertThat(all.settings().transport().hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
+        assertThat(all.settings().transport().lightSamples()).isEqualTo(2);
+        assertThat(all.settings().transport().photons().photonsPerIteration()).isEqualTo(7000);
+        assertThat(all.settings().transport().photons().initialRadius()).isEqualTo(0.5);
+        assertThat(all.settings().output().aovs()).containsExactly(dev.strahl.render.Aov.DEPTH);
         assertThat(all.scene()).isNull();
 
         assertThat(parse("view", "--max-depth", "-1").given()).as("given at its default value is still given")

@@ -1,5 +1,6 @@
 package dev.strahl.film;
 
+import dev.strahl.integrator.FeatureTracer;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
@@ -10,7 +11,7 @@ class FilmStateTest {
     @Test
     void stateRoundTripsExactlyAcrossTileBoundaries() {
         Film a = new Film(70, 37, true);                     // partial tiles on both edges
-        double[] f = new double[Film.FEATURES];
+        double[] f = new double[FeatureTracer.CHANNELS];
         for (int y = 0; y < 37; y++) {
             for (int x = 0; x < 70; x++) {
                 for (int s = 0; s < (x + y) % 4; s++) {
@@ -24,7 +25,7 @@ class FilmStateTest {
         }
         Film b = new Film(70, 37, true);
         double[] sums = new double[a.stateSums()];
-        assertThat(sums).hasSize(4 + Film.FEATURES);
+        assertThat(sums).hasSize(4 + FeatureTracer.CHANNELS);
         for (int y = 0; y < 37; y++) {
             for (int x = 0; x < 70; x++) {
                 int n = a.pixelState(x, y, sums);

@@ -6,7 +6,7 @@ import dev.strahl.camera.CameraRays;
 import dev.strahl.geometry.Ray;
 import dev.strahl.image.Rgb;
 import dev.strahl.io.SceneLoader;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.photon.PhotonMapper;
 import dev.strahl.sampling.Sample2D;
 import dev.strahl.sampling.Sampler;

@@ -4,7 +4,7 @@ import dev.strahl.world.World;
 import dev.strahl.testing.Meshes;
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.camera.CameraRays;
 import dev.strahl.geometry.Ray;
 import dev.strahl.image.Rgb;

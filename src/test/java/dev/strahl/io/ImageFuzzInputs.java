@@ -1,9 +1,9 @@
 package dev.strahl.io;
 
-import dev.strahl.io.exr.ExrCompression;
-import dev.strahl.io.exr.ExrPixelType;
-import dev.strahl.io.exr.ExrWriter;
-import dev.strahl.io.image.HdrWriter;
+import dev.strahl.codec.exr.ExrCompression;
+import dev.strahl.codec.exr.ExrPixelType;
+import dev.strahl.codec.exr.ExrWriter;
+import dev.strahl.codec.HdrWriter;
 import java.awt.Transparency;
 import java.awt.color.ColorSpace;
 import java.awt.image.BufferedImage;

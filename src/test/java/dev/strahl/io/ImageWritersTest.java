@@ -4,21 +4,21 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import static dev.strahl.io.exr.ExrPixelType.FLOAT;
-import static dev.strahl.io.exr.ExrPixelType.HALF;
+import static dev.strahl.codec.exr.ExrPixelType.FLOAT;
+import static dev.strahl.codec.exr.ExrPixelType.HALF;
 
 import dev.strahl.film.Film;
-import dev.strahl.film.Tonemap;
+import dev.strahl.color.DisplayEncoding;
 import dev.strahl.image.ToneMapping;
-import dev.strahl.io.exr.ExrCompression;
-import dev.strahl.io.exr.ExrHeader;
-import dev.strahl.io.exr.ExrReader;
-import dev.strahl.io.exr.Half;
-import dev.strahl.io.image.ChannelImage;
+import dev.strahl.codec.exr.ExrCompression;
+import dev.strahl.codec.exr.ExrHeader;
+import dev.strahl.codec.exr.ExrReader;
+import dev.strahl.codec.exr.Half;
+import dev.strahl.codec.ChannelImage;
 import dev.strahl.render.Aov;
 import dev.strahl.render.RenderBuffers;
-import dev.strahl.io.image.AtomicFile;
-import dev.strahl.io.image.PfmReader;
+import dev.strahl.files.AtomicFile;
+import dev.strahl.codec.PfmReader;
 import dev.strahl.image.Image;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -105,7 +105,7 @@ class ImageWritersTest {
         film.add(film.pixelIndex(0, 0), 3, 2, 1);
         film.add(film.pixelIndex(2, 1), 0.5, 0.25, 8);
         Path out = dir.resolve("film.pfm");
-        ImageWriters.write(film, out);
+        ImageWriters.write(film.toImage(), out);
         assertThat(PfmReader.read(out)).isEqualTo(film.toImage());
     }
 
@@ -126,7 +126,7 @@ class ImageWritersTest {
                 .isExactlyInstanceOf(IllegalArgumentException.class)
                 .hasMessage("unknown image format '.xyz' of " + out + ": use .png, .pfm or .exr");
         Path bare = dir.resolve("out");
-        assertThatThrownBy(() -> ImageWriters.write(new Film(1, 1), bare))
+        assertThatThrownBy(() -> ImageWriters.write(new Film(1, 1).toImage(), bare))
                 .isExactlyInstanceOf(IllegalArgumentException.class)
                 .hasMessageContaining("no extension");
         assertThat(filesIn(dir)).isEmpty();
@@ -213,7 +213,7 @@ class ImageWritersTest {
     void exrHoldsTheImageAndItsFeatureBuffersInOneFileWithTheNamesOfTheLayers() throws IOException {
         RenderBuffers b = buffers(5, 3);
         Path out = dir.resolve("out.exr");
-        ImageWriters.write(b, out, ImageWriters.Options.DEFAULT);
+        ImageWriters.defaults().write(b, out);
         ExrReader.ExrImage read = ExrReader.readFile(out);
         assertThat(read.header().compression()).isEqualTo(ExrCompression.ZIP);
         assertThat(read.header().channels()).extracting(ExrHeader.Channel::name)
@@ -239,7 +239,7 @@ class ImageWritersTest {
         }
         // float samples, no compression: every value exactly
         Path flat = dir.resolve("flat.exr");
-        ImageWriters.write(b, flat, new ImageWriters.Options(ToneMapping.CLAMP, 0, true, false));
+        ImageWriters.defaults().withExrFloat(true).withExrZip(false).write(b, flat);
         ExrReader.ExrImage f = ExrReader.readFile(flat);
         assertThat(f.header().compression()).isEqualTo(ExrCompression.NONE);
         assertThat(f.header().channels()).extracting(ExrHeader.Channel::type).containsOnly(FLOAT);
@@ -263,7 +263,7 @@ class ImageWritersTest {
         assumeTrue(available, "python3 with the OpenEXR package is not installed");
         RenderBuffers b = buffers(4, 2);
         Path out = dir.resolve("layers.exr");
-        ImageWriters.write(b, out, ImageWriters.Options.DEFAULT);
+        ImageWriters.defaults().write(b, out);
         Process p = new ProcessBuilder("python3", "docs/anchors/exr_dump.py", out.toString()).redirectErrorStream(true).start();
         String dump = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
         assertThat(p.waitFor()).as(dump).isZero();
@@ -280,7 +280,7 @@ class ImageWritersTest {
     void featureBuffersGoBesideAPngOrPfmAsPfmFiles() throws IOException {
         RenderBuffers b = buffers(3, 2);
         Path png = dir.resolve("shot.png");
-        ImageWriters.write(new RenderBuffers(b.color(), b.variance(), b.albedo(), null, b.depth()), png, ImageWriters.Options.DEFAULT);
+        ImageWriters.defaults().write(new RenderBuffers(b.color(), b.variance(), b.albedo(), null, b.depth()), png);
         assertThat(filesIn(dir)).containsExactly("shot.albedo.pfm", "shot.depth.pfm", "shot.png");
         assertThat(PfmReader.read(dir.resolve("shot.albedo.pfm"))).isEqualTo(b.albedo());
         assertThat(PfmReader.read(dir.resolve("shot.depth.pfm"))).isEqualTo(b.depth());
@@ -292,17 +292,17 @@ class ImageWritersTest {
         Image img = new Image(1, 1, new float[] {4, 1, 0.25f});
         Path clamp = dir.resolve("clamp.png");
         Path aces = dir.resolve("aces.png");
-        ImageWriters.write(RenderBuffers.of(img), clamp, ImageWriters.Options.DEFAULT);
-        ImageWriters.write(RenderBuffers.of(img), aces, new ImageWriters.Options(ToneMapping.ACES, -1, false, true));
+        ImageWriters.defaults().write(RenderBuffers.of(img), clamp);
+        ImageWriters.defaults().withToneMapping(ToneMapping.ACES).withExposure(-1).write(RenderBuffers.of(img), aces);
         int c = ImageIO.read(clamp.toFile()).getRGB(0, 0);
         int a = ImageIO.read(aces.toFile()).getRGB(0, 0);
         assertThat(c & 0xFFFFFF).isEqualTo(0xFFFF89);                   // 4 and 1 clamp to 255, 0.25 -> 137
         // ACES at −1 EV: 2 -> 0.908 -> 245, 0.5 -> 0.616 -> 205, 0.125 -> 0.167 -> 114
-        assertThat((a >> 16) & 0xFF).isEqualTo(Tonemap.toSrgb8(Tonemap.aces(2)));
-        assertThat((a >> 8) & 0xFF).isEqualTo(Tonemap.toSrgb8(Tonemap.aces(0.5)));
-        assertThat(a & 0xFF).isEqualTo(Tonemap.toSrgb8(Tonemap.aces(0.125)));
+        assertThat((a >> 16) & 0xFF).isEqualTo(DisplayEncoding.toSrgb8(DisplayEncoding.aces(2)));
+        assertThat((a >> 8) & 0xFF).isEqualTo(DisplayEncoding.toSrgb8(DisplayEncoding.aces(0.5)));
+        assertThat(a & 0xFF).isEqualTo(DisplayEncoding.toSrgb8(DisplayEncoding.aces(0.125)));
         Path pfm = dir.resolve("linear.pfm");
-        ImageWriters.write(RenderBuffers.of(img), pfm, new ImageWriters.Options(ToneMapping.AGX, 3, false, true));
+        ImageWriters.defaults().withToneMapping(ToneMapping.AGX).withExposure(3).write(RenderBuffers.of(img), pfm);
         assertThat(PfmReader.read(pfm)).isEqualTo(img);
     }
 }

@@ -75,13 +75,13 @@ class LightSamplerTest {
 
     @Test
     void totalPowerIsTheSumOfAreaTimesMeanRadiance() {
-        LightSampler lights = new LightSampler(scene(), EMISSION);
+        LightSampler lights = areaLights(scene(), EMISSION);
         assertThat(lights.totalPower()).isCloseTo(totalPower(), within(1e-6));
         assertThat(lights.lightCount()).as("A, B, C, D; not E").isEqualTo(4);
         assertThat(lights.isEmpty()).isFalse();
 
         Geometry withSphere = triangles(new MeshGeometry().addSphere(new Vector3d(0, 0, -3), 0.3, 2));
-        LightSampler all = new LightSampler(withSphere, EMISSION);
+        LightSampler all = areaLights(withSphere, EMISSION);
         assertThat(all.totalPower()).isCloseTo(totalPower() + 4 * Math.PI * 0.09 * 3, within(1e-6));
         assertThat(all.lightCount()).isEqualTo(5);
     }
@@ -94,7 +94,7 @@ class LightSamplerTest {
     @Test
     void selectsLightsInProportionToAreaTimesMeanRadiance() {
         Geometry geometry = triangles(new MeshGeometry().addSphere(new Vector3d(0, 0, -3), 0.3, 2));
-        LightSampler lights = new LightSampler(geometry, EMISSION);
+        LightSampler lights = areaLights(geometry, EMISSION);
         double sphereArea = 4 * Math.PI * 0.09;
         double[] power = {AREA[0] * 4, AREA[1] * 3, AREA[2] * 0.5, AREA[3] * 4, 0, sphereArea * 3};
         double total = totalPower() + sphereArea * 3;
@@ -243,7 +243,7 @@ class LightSamplerTest {
     @Test
     void sampledDirectionsFollowTheSolidAnglePdfChiSquare() {
         Geometry geometry = scene();
-        LightSampler lights = new LightSampler(geometry, EMISSION);
+        LightSampler lights = areaLights(geometry, EMISSION);
         capChiSquare(asDirectionSampler(lights, ORIGIN, 2), w -> directionPdf(lights, geometry, ORIGIN, w),
                 absorbedProbability(), 1_000_000, 3).assertAccepted(ALPHA);
     }
@@ -252,7 +252,7 @@ class LightSamplerTest {
     @Test
     void solidAnglePdfIntegratesToTheSuccessProbability() {
         Geometry geometry = scene();
-        LightSampler lights = new LightSampler(geometry, EMISSION);
+        LightSampler lights = areaLights(geometry, EMISSION);
         assertThat(sum(capMasses(w -> directionPdf(lights, geometry, ORIGIN, w))))
                 .isCloseTo(1 - absorbedProbability(), within(1e-3));
     }
@@ -264,7 +264,7 @@ class LightSamplerTest {
     @Test
     void chiSquareRejectsADensityWithoutTheLightCosine() {
         Geometry geometry = scene();
-        LightSampler lights = new LightSampler(geometry, EMISSION);
+        LightSampler lights = areaLights(geometry, EMISSION);
         // Every light faces -z, so cosLight = w.z: pdf·w.z drops the 1/cosLight.
         ChiSquare.DirectionPdf shapeOnly = w -> directionPdf(lights, geometry, ORIGIN, w) * w.z();
         double scale = (1 - absorbedProbability()) / sum(capMasses(shapeOnly));
@@ -280,7 +280,7 @@ class LightSamplerTest {
     @Test
     void sampleFieldsAreConsistent() {
         Geometry geometry = scene();
-        LightSampler lights = new LightSampler(geometry, EMISSION);
+        LightSampler lights = areaLights(geometry, EMISSION);
         SurfacePoint scratch = new SurfacePoint();
         LightSample out = new LightSample();
         SplittableRandom random = new SplittableRandom(4);
@@ -315,7 +315,7 @@ class LightSamplerTest {
     void lightsAreOneSided() {
         float[] a = java.util.Arrays.copyOf(TRIANGLES, 9);
         Geometry geometry = new MeshGeometry().addMesh(new TriangleMesh(a, new int[] {0, 1, 2}, null), new int[] {1}, false).build();
-        LightSampler lights = new LightSampler(geometry, EMISSION);
+        LightSampler lights = areaLights(geometry, EMISSION);
         SurfacePoint scratch = new SurfacePoint();
         LightSample out = new LightSample();
         SplittableRandom random = new SplittableRandom(5);
@@ -344,7 +344,7 @@ class LightSamplerTest {
         Vector3dc center = new Vector3d(1, 2, 3);
         double radius = 0.5;
         Geometry geometry = new MeshGeometry().addSphere(center, radius, 1).build();
-        LightSampler lights = new LightSampler(geometry, EMISSION);
+        LightSampler lights = areaLights(geometry, EMISSION);
         Vector3dc ref = new Vector3d(center).add(0, 0, 5 * radius);
         SplittableRandom lightChoice = new SplittableRandom(6);
         SurfacePoint scratch = new SurfacePoint();
@@ -368,7 +368,7 @@ class LightSamplerTest {
     @Test
     void nothingIsSampledFromInsideAnEmissiveSphere() {
         Geometry geometry = new MeshGeometry().addSphere(new Vector3d(), 1, 1).build();
-        LightSampler lights = new LightSampler(geometry, EMISSION);
+        LightSampler lights = areaLights(geometry, EMISSION);
         SurfacePoint scratch = new SurfacePoint();
         LightSample out = new LightSample();
         SplittableRandom random = new SplittableRandom(8);
@@ -386,7 +386,7 @@ class LightSamplerTest {
         float[] e = java.util.Arrays.copyOfRange(TRIANGLES, 36, 45);
         Geometry dark = new MeshGeometry().addMesh(new TriangleMesh(e, new int[] {0, 1, 2}, null), new int[] {0}, false).build();
         for (Geometry geometry : new Geometry[] {dark, new MeshGeometry().build()}) {
-            LightSampler lights = new LightSampler(geometry, EMISSION);
+            LightSampler lights = areaLights(geometry, EMISSION);
             assertThat(lights.isEmpty()).isTrue();
             assertThat(lights.lightCount()).isZero();
             assertThat(lights.totalPower()).isZero();
@@ -397,8 +397,13 @@ class LightSamplerTest {
 
     @Test
     void blackEmissionMakesNoLight() {
-        LightSampler lights = new LightSampler(scene(), new Rgb[] {Rgb.BLACK, Rgb.BLACK, Rgb.BLACK, Rgb.BLACK});
+        LightSampler lights = areaLights(scene(), new Rgb[] {Rgb.BLACK, Rgb.BLACK, Rgb.BLACK, Rgb.BLACK});
         assertThat(lights.isEmpty()).isTrue();
         assertThat(lights.sample(ORIGIN, 0.5, 0.5, 0.5, true, new SurfacePoint(), new LightSample())).isFalse();
+    }
+
+    /** Area lights of constant radiance per material, no environment, no punctual lights. */
+    private static LightSampler areaLights(Geometry geometry, Rgb[] emission) {
+        return new LightSampler(geometry, Emission.constants(emission), Environment.BLACK, java.util.List.of());
     }
 }

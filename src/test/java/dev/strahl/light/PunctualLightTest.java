@@ -10,7 +10,7 @@ import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.SurfacePoint;
 import dev.strahl.image.Rgb;
 import dev.strahl.math.Frame;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import java.util.List;
 import java.util.SplittableRandom;
 import org.joml.Vector3d;
@@ -148,8 +148,8 @@ class PunctualLightTest {
     void lightsAreChosenByPowerAndTheAreaLightsDensityShrinksByItsShare() {
         Geometry quad = unitQuad();
         Rgb[] emission = {Rgb.WHITE};
-        LightSampler alone = new LightSampler(quad, emission);
-        LightSampler both = new LightSampler(quad, emission, Environment.BLACK,
+        LightSampler alone = new LightSampler(quad, Emission.constants(emission), Environment.BLACK, List.of());
+        LightSampler both = new LightSampler(quad, Emission.constants(emission), Environment.BLACK,
                 List.of(PunctualLight.point(new Vector3d(0.5, 2, 0.5), Rgb.WHITE)));
         assertThat(both.pdf(0, 2, 0.5)).isCloseTo(alone.pdf(0, 2, 0.5) / 5, within(1e-12));
         SurfacePoint sp = new SurfacePoint();
@@ -165,7 +165,7 @@ class PunctualLightTest {
         }
         assertThat(delta / (double) n).isCloseTo(0.8, within(0.01));
         assertThat(both.isEmpty()).isFalse();
-        assertThat(new LightSampler(new GeometryBuilder().build(), new Rgb[0], Environment.BLACK,
+        assertThat(new LightSampler(new GeometryBuilder().build(), new Emission[0], Environment.BLACK,
                 List.of(PunctualLight.directional(new Vector3d(0, -1, 0), Rgb.WHITE))).isEmpty()).isFalse();
     }
 
@@ -174,7 +174,7 @@ class PunctualLightTest {
     void anEnvironmentMapKeepsItsHalf() {
         Geometry quad = unitQuad();
         Environment env = Environment.map(2, 2, new float[] {1, 1, 1, 2, 2, 2, 1, 1, 1, 2, 2, 2}, 1, 0, "test");
-        LightSampler s = new LightSampler(quad, new Rgb[] {Rgb.WHITE}, env, List.of(PunctualLight.point(new Vector3d(0, 3, 0), Rgb.WHITE)));
+        LightSampler s = new LightSampler(quad, Emission.constants(Rgb.WHITE), env, List.of(PunctualLight.point(new Vector3d(0, 3, 0), Rgb.WHITE)));
         SurfacePoint sp = new SurfacePoint();
         LightSample ls = new LightSample();
         int envCount = 0, pointCount = 0, n = 100_000;

@@ -5,10 +5,10 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.testing.BsdfAssert;
 import dev.strahl.testing.ChiSquare;
-import dev.strahl.texture.Texture;
+import dev.strahl.texture.TextureLookup;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
@@ -42,7 +42,7 @@ class ConductorTest {
     }
 
     private static Conductor gold(double alpha) {
-        return new Conductor(GOLD[0], GOLD[1], Texture.of(alpha));
+        return new Conductor(GOLD[0], GOLD[1], TextureLookup.of(alpha));
     }
 
     @ParameterizedTest(name = "α = {0}, θo = {1}°")
@@ -82,10 +82,10 @@ class ConductorTest {
      */
     @Test
     void aPerfectReflectorLosesOnlyWhatMaskingLoses() {
-        Conductor perfect = new Conductor(Rgb.gray(1), Rgb.gray(1e6), Texture.of(0.01));
+        Conductor perfect = new Conductor(Rgb.gray(1), Rgb.gray(1e6), TextureLookup.of(0.01));
         var e = BsdfAssert.albedoBySampling(perfect, BsdfAssert.direction(30, 0), 200_000, 9);
         assertThat(e.r()).isCloseTo(1, within(1e-3));
-        var rough = new Conductor(Rgb.gray(1), Rgb.gray(1e6), Texture.of(0.5));
+        var rough = new Conductor(Rgb.gray(1), Rgb.gray(1e6), TextureLookup.of(0.5));
         var bySampling = BsdfAssert.albedoBySampling(rough, BsdfAssert.direction(60, 0), 400_000, 10);
         var byEval = BsdfAssert.albedoByEval(rough, BsdfAssert.direction(60, 0), 2_000_000, 11);
         assertThat(Math.abs(bySampling.r() - byEval.r())).isLessThan(5 * Math.hypot(bySampling.errR(), byEval.errR()));
@@ -114,15 +114,15 @@ class ConductorTest {
         assertThat(out.delta).isTrue();
         assertThat(out.wi.z).isCloseTo(wo.z, within(1e-15));
         assertThat(out.weight.r).isCloseTo(Fresnel.conductor(wo.z, GOLD[0].r(), GOLD[1].r()), within(1e-15));
-        assertThat(Conductor.of(GOLD[0], GOLD[1], Texture.of(0))).isInstanceOf(SmoothConductor.class);
-        assertThat(Conductor.of(GOLD[0], GOLD[1], Texture.of(0.1))).isInstanceOf(Conductor.class);
+        assertThat(Conductor.of(GOLD[0], GOLD[1], TextureLookup.of(0))).isInstanceOf(SmoothConductor.class);
+        assertThat(Conductor.of(GOLD[0], GOLD[1], TextureLookup.of(0.1))).isInstanceOf(Conductor.class);
     }
 
     @Test
     void refusesBadParameters() {
-        assertThatThrownBy(() -> new Conductor(new Rgb(0, 1, 1), Rgb.BLACK, Texture.of(0.1))).hasMessageContaining("eta");
-        assertThatThrownBy(() -> new Conductor(Rgb.WHITE, new Rgb(-1, 0, 0), Texture.of(0.1))).hasMessageContaining("k");
-        assertThatThrownBy(() -> new Conductor(Rgb.WHITE, Rgb.WHITE, Texture.of(-0.1))).hasMessageContaining("alpha");
+        assertThatThrownBy(() -> new Conductor(new Rgb(0, 1, 1), Rgb.BLACK, TextureLookup.of(0.1))).hasMessageContaining("eta");
+        assertThatThrownBy(() -> new Conductor(Rgb.WHITE, new Rgb(-1, 0, 0), TextureLookup.of(0.1))).hasMessageContaining("k");
+        assertThatThrownBy(() -> new Conductor(Rgb.WHITE, Rgb.WHITE, TextureLookup.of(-0.1))).hasMessageContaining("alpha");
     }
 
     /** Sampling is allocation-free: the visible-normal sample writes into the caller's BsdfSample. */

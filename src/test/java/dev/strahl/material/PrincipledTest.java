@@ -4,10 +4,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.testing.BsdfAssert;
 import dev.strahl.testing.ChiSquare;
-import dev.strahl.texture.Texture;
+import dev.strahl.texture.TextureLookup;
 import java.util.List;
 import org.joml.Vector3d;
 import org.junit.jupiter.api.Test;
@@ -21,8 +21,8 @@ class PrincipledTest {
     private static final double ALPHA = ChiSquare.sidak(0.01, 5 * 3);
 
     private static Principled material(Rgb base, double metallic, double roughness, double specular, double transmission) {
-        return new Principled(Texture.of(base), Texture.of(metallic), Texture.of(roughness), Texture.of(specular), Texture.of(Rgb.WHITE),
-                Texture.of(transmission), 1.5);
+        return new Principled(TextureLookup.of(base), TextureLookup.of(metallic), TextureLookup.of(roughness), TextureLookup.of(specular), TextureLookup.of(Rgb.WHITE),
+                TextureLookup.of(transmission), 1.5);
     }
 
     private static final List<Principled> CASES = List.of(

@@ -3,11 +3,11 @@ package dev.strahl.material;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.sampling.Warp;
 import dev.strahl.testing.BsdfAssert;
 import dev.strahl.testing.ChiSquare;
-import dev.strahl.texture.Texture;
+import dev.strahl.texture.TextureLookup;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
@@ -57,7 +57,7 @@ class RoughDielectricTest {
     }
 
     private static RoughDielectric glass(double alpha) {
-        return new RoughDielectric(ETA, Texture.of(alpha));
+        return new RoughDielectric(ETA, TextureLookup.of(alpha));
     }
 
     @ParameterizedTest(name = "α = {0}, θo = {1}°")
@@ -132,8 +132,8 @@ class RoughDielectricTest {
 
     @Test
     void alphaZeroIsSmoothGlass() {
-        assertThat(RoughDielectric.of(ETA, Texture.of(0))).isEqualTo(new Dielectric(ETA));
-        assertThat(RoughDielectric.of(ETA, Texture.of(0.2))).isInstanceOf(RoughDielectric.class);
+        assertThat(RoughDielectric.of(ETA, TextureLookup.of(0))).isEqualTo(new Dielectric(ETA));
+        assertThat(RoughDielectric.of(ETA, TextureLookup.of(0.2))).isInstanceOf(RoughDielectric.class);
         assertThat(glass(0.2).isTwoSided()).isFalse();
     }
 }

@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import dev.strahl.world.World;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Parallel;
 import dev.strahl.integrator.PathTracer;

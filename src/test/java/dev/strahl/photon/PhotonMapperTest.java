@@ -11,7 +11,7 @@ import dev.strahl.integrator.Parallel;
 import dev.strahl.integrator.Shading;
 import dev.strahl.integrator.Tracer;
 import dev.strahl.render.PhotonParameters;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.render.IntegratorKind;
 import dev.strahl.scene.Camera;
 import dev.strahl.image.Image;

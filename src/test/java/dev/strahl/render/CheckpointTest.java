@@ -85,7 +85,7 @@ class CheckpointTest {
      */
     @Test
     void resumingAfterACancelInTheMiddleOfAPassIsBitIdentical() throws Exception {
-        int pixels = SETTINGS.width() * SETTINGS.height();
+        int pixels = SETTINGS.output().width() * SETTINGS.output().height();
         Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
         Path file = dir.resolve("m.ck");
         boolean midPass = false;
@@ -169,7 +169,7 @@ class CheckpointTest {
             assertSameBits(TestJobs.awaitFilm(resumed), uninterrupted);
             // what it began with, not what it has reached (render --resume's message; it once raced with the first pass)
             assertThat(resumed.earlierSamplesPerPixel()).isEqualTo(8);
-            assertThat(resumed.completedSamplesPerPixel()).isEqualTo(SETTINGS.samplesPerPixel()).isNotEqualTo(8);
+            assertThat(resumed.completedSamplesPerPixel()).isEqualTo(SETTINGS.sampling().samplesPerPixel()).isNotEqualTo(8);
         }
     }
 

@@ -3,7 +3,7 @@ package dev.strahl.render;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import dev.strahl.image.Image;
-import dev.strahl.film.Tonemap;
+import dev.strahl.color.DisplayEncoding;
 import dev.strahl.scene.Material;
 import dev.strahl.image.Rgb;
 import dev.strahl.scene.Scene;
@@ -59,21 +59,21 @@ class EmbeddingTest {
 
     @Test
     void theListenerHearsEveryPassWithItsFiguresAndTheSnapshotIsTheLastPass() throws Exception {
-        List<RenderListener.Pass> passes = new CopyOnWriteArrayList<>();
+        List<RenderStats> passes = new CopyOnWriteArrayList<>();
         List<Image> images = new CopyOnWriteArrayList<>();
         RenderSettings s = RenderSettings.defaults().withSize(20, 20).withSamplesPerPixel(16).withSeed(4);
         try (RenderJob job = RenderJob.start(inCode(), s, new RenderListener() {
             @Override
-            public void passFinished(Pass pass, Image image) {
-                passes.add(pass);
+            public void passFinished(RenderStats soFar, Image image) {
+                passes.add(soFar);
                 images.add(image);
             }
         })) {
             job.awaitCompletion();
             assertThat(job.snapshot()).isEqualTo(images.get(images.size() - 1)).isEqualTo(job.film().toImage());
         }
-        assertThat(passes).extracting(RenderListener.Pass::samplesPerPixel).containsExactly(1, 2, 4, 8, 16);
-        assertThat(passes).extracting(RenderListener.Pass::number).containsExactly(1, 2, 3, 4, 5);
+        assertThat(passes).extracting(RenderStats::samplesPerPixel).containsExactly(1, 2, 4, 8, 16);
+        assertThat(passes).extracting(RenderStats::passes).containsExactly(1, 2, 3, 4, 5);
         assertThat(passes.get(4).samples()).isEqualTo(16L * 20 * 20);
         assertThat(passes).allSatisfy(p -> assertThat(p.samplesPerSecond()).isPositive());
     }
@@ -125,13 +125,13 @@ class EmbeddingTest {
     @Test
     void theSnapshotToneMapsToTheDisplayImage() {
         Image img = Renders.render(inCode(), RenderSettings.defaults().withSize(16, 12).withSamplesPerPixel(2));
-        BufferedImage bi = Tonemap.toBufferedImage(img, 0);
+        BufferedImage bi = DisplayEncoding.toBufferedImage(img, 0);
         assertThat(bi.getWidth()).isEqualTo(16);
         assertThat(bi.getHeight()).isEqualTo(12);
         float[] rgb = img.rgb();
         assertThat(rgb).hasSize(3 * 16 * 12);
         int x = 7, y = 5, o = 3 * (y * 16 + x);
-        int expected = Tonemap.toSrgb8(rgb[o]) << 16 | Tonemap.toSrgb8(rgb[o + 1]) << 8 | Tonemap.toSrgb8(rgb[o + 2]);
+        int expected = DisplayEncoding.toSrgb8(rgb[o]) << 16 | DisplayEncoding.toSrgb8(rgb[o + 1]) << 8 | DisplayEncoding.toSrgb8(rgb[o + 2]);
         assertThat(bi.getRGB(x, y) & 0xFFFFFF).isEqualTo(expected);
     }
 }

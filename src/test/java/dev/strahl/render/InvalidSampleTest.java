@@ -2,7 +2,7 @@ package dev.strahl.render;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.scene.Camera;
 import dev.strahl.film.Film;
 import dev.strahl.image.Image;

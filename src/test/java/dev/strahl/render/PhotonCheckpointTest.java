@@ -56,6 +56,6 @@ class PhotonCheckpointTest {
         Path file = dir.resolve("q.ck");
         Checkpoint.of(scene, SETTINGS).save(file, uninterrupted, 0, 0);
         assertThatThrownBy(() -> Checkpoint.of(scene, SETTINGS.withPhotons(new PhotonParameters(6000, 0))).restore(file)).hasMessageContaining("photons");
-        assertThatThrownBy(() -> Checkpoint.of(scene, SETTINGS.withPhotons(new PhotonParameters(SETTINGS.photons().photonsPerIteration(), 0.05))).restore(file)).hasMessageContaining("initialRadius");
+        assertThatThrownBy(() -> Checkpoint.of(scene, SETTINGS.withPhotons(new PhotonParameters(SETTINGS.transport().photons().photonsPerIteration(), 0.05))).restore(file)).hasMessageContaining("initialRadius");
     }
 }

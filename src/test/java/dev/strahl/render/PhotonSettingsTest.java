@@ -12,21 +12,21 @@ class PhotonSettingsTest {
     @Test
     void defaultsAreTheAutomaticRadiusAndTheDefaultPhotonCount() {
         RenderSettings d = RenderSettings.defaults();
-        assertThat(d.photons().photonsPerIteration()).isEqualTo(PhotonParameters.DEFAULT_PHOTONS);
-        assertThat(d.photons().initialRadius()).isZero();
-        assertThat(d.integrator()).isEqualTo(IntegratorKind.PATH);
-        assertThat(d.photons()).isEqualTo(PhotonParameters.defaults());
+        assertThat(d.transport().photons().photonsPerIteration()).isEqualTo(PhotonParameters.DEFAULT_PHOTONS);
+        assertThat(d.transport().photons().initialRadius()).isZero();
+        assertThat(d.transport().integrator()).isEqualTo(IntegratorKind.PATH);
+        assertThat(d.transport().photons()).isEqualTo(PhotonParameters.defaults());
     }
 
     @Test
     void withMethodsKeepThePhotonFieldsAndChangeOnlyTheirOwn() {
         RenderSettings s = RenderSettings.defaults().withPhotons(new PhotonParameters(5000, 0.02));
-        assertThat(s.photons()).isEqualTo(new PhotonParameters(5000, 0.02));
+        assertThat(s.transport().photons()).isEqualTo(new PhotonParameters(5000, 0.02));
         RenderSettings t = s.withSize(7, 9).withSamplesPerPixel(3).withMaxDepth(4).withSeed(5).withThreads(2)
                 .withHemisphere(HemisphereSampling.UNIFORM).withCullBackFaces(true).withSamplesPerPass(2)
                 .withIntegrator(IntegratorKind.PHOTON).withLightSamples(3).withTimeLimit(Duration.ofSeconds(1));
-        assertThat(t.photons()).isEqualTo(new PhotonParameters(5000, 0.02));
-        assertThat(t.withPhotons(new PhotonParameters(7, 0)).photons()).isEqualTo(new PhotonParameters(7, 0));
+        assertThat(t.transport().photons()).isEqualTo(new PhotonParameters(5000, 0.02));
+        assertThat(t.withPhotons(new PhotonParameters(7, 0)).transport().photons()).isEqualTo(new PhotonParameters(7, 0));
     }
 
     @Test

@@ -3,7 +3,7 @@ package dev.strahl.render;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.scene.Camera;
 import dev.strahl.image.Image;
 import dev.strahl.geometry.Ray;

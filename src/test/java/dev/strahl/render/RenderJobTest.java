@@ -25,7 +25,7 @@ class RenderJobTest {
 
     @Test
     void automaticPassesGrowToSixteenAndStayThere() {
-        int[] sizes = IntStream.range(0, 100).map(RenderJob::autoPassSize).toArray();
+        int[] sizes = IntStream.range(0, 100).map(PassLoop::autoPassSize).toArray();
         assertThat(sizes).startsWith(1, 1, 2, 4, 8, 16, 16);
         assertThat(IntStream.of(sizes).boxed()).allMatch(s -> s >= 1 && s <= 16);
     }

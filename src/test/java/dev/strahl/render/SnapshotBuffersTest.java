@@ -7,7 +7,7 @@ import dev.strahl.image.Image;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Parallel;
 import dev.strahl.io.SceneLoader;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.sampling.Sampler;
 import dev.strahl.scene.Scene;
 import java.nio.file.Path;
@@ -55,15 +55,15 @@ class SnapshotBuffersTest {
         volatile long sleepMillis;
 
         @Override
-        public void passFinished(Pass pass, Image image) {
+        public void passFinished(RenderStats soFar, Image image) {
             try {
                 started.await();
                 Optional<RenderBuffers> b = job.get().snapshotBuffers();
                 assertThat(b).as("in a listener the film holds the pass").isPresent();
                 assertThat(b.get().color()).isSameAs(image);
-                bySpp.put(pass.samplesPerPixel(), b.get());
-                images.put(pass.samplesPerPixel(), image);
-                spps.add(pass.samplesPerPixel());
+                bySpp.put(soFar.samplesPerPixel(), b.get());
+                images.put(soFar.samplesPerPixel(), image);
+                spps.add(soFar.samplesPerPixel());
                 Thread.sleep(sleepMillis);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();

@@ -6,7 +6,7 @@ import dev.strahl.geometry.Ray;
 import dev.strahl.image.Image;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.io.SceneLoader;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.sampling.Sampler;
 import dev.strahl.scene.Scene;
 import dev.strahl.testing.Renders;
@@ -26,15 +26,11 @@ class TeachingOptionsTest {
 
     @Test
     void defaultsAreTheBvhAndTiles() {
-        assertThat(RenderSettings.defaults().bruteForce()).isFalse();
-        assertThat(RenderSettings.defaults().stripes()).isFalse();
-        assertThat(RenderSettings.defaults().shadows()).isTrue();
+        assertThat(RenderSettings.defaults().execution().bruteForce()).isFalse();
+        assertThat(RenderSettings.defaults().execution().stripes()).isFalse();
+        assertThat(RenderSettings.defaults().transport().shadows()).isTrue();
         assertThat(SETTINGS.withBruteForce(true).withStripes(true).withShadows(false))
-                .extracting(RenderSettings::bruteForce, RenderSettings::stripes, RenderSettings::shadows).containsExactly(true, true, false);
-        RenderSettings d = RenderSettings.defaults();
-        assertThat(new RenderSettings(d.width(), d.height(), d.samplesPerPixel(), d.maxDepth(), d.seed(), d.threads(), d.hemisphere(),
-                d.cullBackFaces(), d.samplesPerPass(), d.integrator(), d.lightSamples(), d.timeLimit(), d.photons(), d.bruteForce(),
-                d.stripes(), d.aovs())).as("the constructor without shadows keeps them").isEqualTo(d);
+                .extracting(r -> r.execution().bruteForce(), r -> r.execution().stripes(), r -> r.transport().shadows()).containsExactly(true, true, false);
     }
 
     /** Without shadows the image is lighter (no light is blocked) and, like every image, the same bits on any number of threads. */

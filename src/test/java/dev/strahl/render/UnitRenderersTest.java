@@ -25,11 +25,15 @@ class UnitRenderersTest {
         }
     }
 
+    /** A member of another strahl version (a setting more or less) refuses the settings naming the setting, as before it named the format. */
     @Test
-    void settingsOfAnotherFormatAreRefusedNamingBoth() {
-        byte[] bytes = UnitRenderers.encode(RenderSettings.defaults(), true);
-        bytes[3] = 2;                                   // the format before the shadows setting
-        assertThatThrownBy(() -> UnitRenderers.decode(bytes)).isInstanceOf(IllegalArgumentException.class)
-                .hasMessage("settings of format 2; this strahl reads 3");
+    void settingsOfAnotherStrahlAreRefusedNamingTheSetting() {
+        String text = UnitRenderers.encode(RenderSettings.defaults(), true);
+        assertThatThrownBy(() -> UnitRenderers.decode(text.replace("shadows=true;", ""))).isInstanceOf(IllegalArgumentException.class)
+                .hasMessage("setting 'shadows' missing");
+        assertThatThrownBy(() -> UnitRenderers.decode(text + ";mediaSteps=4")).isInstanceOf(IllegalArgumentException.class)
+                .hasMessage("unknown setting 'mediaSteps'");
+        assertThatThrownBy(() -> UnitRenderers.decode(text.replace("maxDepth=-1", "maxDepth=0"))).isInstanceOf(IllegalArgumentException.class)
+                .hasMessage("max depth must be -1 (unbounded) or >= 1, got 0");
     }
 }

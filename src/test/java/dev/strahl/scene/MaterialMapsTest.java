@@ -1,12 +1,13 @@
 package dev.strahl.scene;
 
+import dev.strahl.texture.TextureLookup;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import dev.strahl.image.Rgb;
 import dev.strahl.light.Emission;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.texture.Channel;
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
@@ -38,21 +39,21 @@ class MaterialMapsTest {
         assertThat(rgb.hasAlpha()).isFalse();
         assertThat(Texture.constant(0.3).hasAlpha()).isFalse();
         // Texel centres at u = 1/4 and 3/4 (clamped so the bilinear lookup reads one texel).
-        dev.strahl.texture.Texture a = rgba.alpha().withWrap(Texture.Wrap.CLAMP).scalar(Channel.LUMINANCE);
+        TextureLookup a = rgba.alpha().clamped().scalar(Channel.LUMINANCE);
         assertEquals(0, a.value(0.1, 0.5), 1e-6);
         assertEquals(1, a.value(0.9, 0.5), 1e-6);
         assertEquals(0.5, a.mean().r(), 1e-6, "an alpha texture's mean is its alpha's");
-        dev.strahl.texture.Texture none = rgb.alpha().scalar(Channel.LUMINANCE);
+        TextureLookup none = rgb.alpha().scalar(Channel.LUMINANCE);
         assertEquals(1, none.value(0.1, 0.5), 0);
         assertThat(Texture.constant(0.2).alpha()).isEqualTo(Texture.constant(1));
         MutableRgb c = new MutableRgb();
-        rgba.alpha().withWrap(Texture.Wrap.CLAMP).colour().rgb(0.9, 0.5, c);
+        rgba.alpha().clamped().colour().rgb(0.9, 0.5, c);
         assertThat(c.toRgb()).as("an alpha texture used as a colour is grey").isEqualTo(Rgb.gray(1));
     }
 
     @Test
     void texturedEmissionIsTextureTimesStrength() throws Exception {
-        Texture t = Texture.image(png("e.png", false, 255, 255)).linear().withWrap(Texture.Wrap.CLAMP);
+        Texture t = Texture.image(png("e.png", false, 255, 255)).linear().clamped();
         Material m = Material.diffuse("lamp", Rgb.gray(0.5)).withEmission(t, 4);
         assertThat(m.isEmissive()).isTrue();
         Emission e = m.surface().emissionTable();

@@ -5,10 +5,10 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.texture.Channel;
 import dev.strahl.texture.ImageTexture;
-import dev.strahl.texture.Srgb;
+import dev.strahl.color.Srgb;
 import dev.strahl.texture.UvTransform;
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;

@@ -6,7 +6,7 @@ import dev.strahl.accel.TraversalStack;
 import dev.strahl.camera.CameraRays;
 import dev.strahl.image.Image;
 import dev.strahl.io.ImageWriters;
-import dev.strahl.io.image.PfmReader;
+import dev.strahl.codec.PfmReader;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.SurfacePoint;

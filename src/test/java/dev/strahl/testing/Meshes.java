@@ -92,7 +92,7 @@ public final class Meshes {
 
     /** The camera's ray generator for a film size. */
     public static CameraRays rays(Camera c, int width, int height) {
-        return new CameraRays(c.lookFrom(), c.lookAt(), c.up(), c.fovDegrees(), width, height);
+        return CameraRays.pinholeOf(c, width, height);
     }
 
     /**

@@ -5,7 +5,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -39,12 +39,12 @@ class ScaledTextureTest {
         assertThat(t.mean()).isEqualTo(new Rgb(0.5 * mean.r(), 0.25 * mean.g(), 2 * mean.b()));
         assertThat(t.bitmap()).isSameAs(image.bitmap());
         assertThat(t.isConstant()).isFalse();
-        assertThat(new ScaledTexture(Texture.of(0.5), Rgb.gray(0.5), 0.5).value(0.3, 0.7)).isEqualTo(0.25);
+        assertThat(new ScaledTexture(TextureLookup.of(0.5), Rgb.gray(0.5), 0.5).value(0.3, 0.7)).isEqualTo(0.25);
     }
 
     @Test
     void aFactorMustBeFiniteAndNotNegative() {
-        Texture one = Texture.of(1);
+        TextureLookup one = TextureLookup.of(1);
         assertThatThrownBy(() -> new ScaledTexture(one, new Rgb(1, -0.5, 1), 1)).hasMessageContaining("factor");
         assertThatThrownBy(() -> new ScaledTexture(one, Rgb.WHITE, -1)).hasMessageContaining("factor");
         assertThatThrownBy(() -> new ScaledTexture(one, Rgb.WHITE, Double.NaN)).hasMessageContaining("factor");

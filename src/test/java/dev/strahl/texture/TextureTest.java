@@ -1,10 +1,11 @@
 package dev.strahl.texture;
 
+import dev.strahl.color.Srgb;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import dev.strahl.image.Rgb;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -17,7 +18,7 @@ class TextureTest {
         return Bitmap.fromTopDown("quad", 2, 2, 3, new float[] {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1});
     }
 
-    private static MutableRgb at(Texture t, double u, double v) {
+    private static MutableRgb at(TextureLookup t, double u, double v) {
         MutableRgb c = new MutableRgb();
         t.rgb(u, v, c);
         return c;
@@ -25,7 +26,7 @@ class TextureTest {
 
     @Test
     void texelCentresReadTheirTexelAndVZeroIsTheBottomRow() {
-        Texture t = new ImageTexture(quad(), Wrap.CLAMP, UvTransform.IDENTITY, Channel.LUMINANCE);
+        TextureLookup t = new ImageTexture(quad(), Wrap.CLAMP, UvTransform.IDENTITY, Channel.LUMINANCE);
         assertThat(at(t, 0.25, 0.25).toRgb()).isEqualTo(new Rgb(0, 0, 1));     // bottom-left: blue
         assertThat(at(t, 0.75, 0.25).toRgb()).isEqualTo(new Rgb(1, 1, 1));     // bottom-right: white
         assertThat(at(t, 0.25, 0.75).toRgb()).isEqualTo(new Rgb(1, 0, 0));     // top-left: red
@@ -34,7 +35,7 @@ class TextureTest {
 
     @Test
     void bilinearWeightsBetweenTexelCentres() {
-        Texture t = new ImageTexture(quad(), Wrap.CLAMP, UvTransform.IDENTITY, Channel.LUMINANCE);
+        TextureLookup t = new ImageTexture(quad(), Wrap.CLAMP, UvTransform.IDENTITY, Channel.LUMINANCE);
         MutableRgb c = at(t, 0.5, 0.5);          // the mean of all four
         assertThat(c.r).isCloseTo(0.5, within(1e-12));
         assertThat(c.g).isCloseTo(0.5, within(1e-12));
@@ -54,14 +55,14 @@ class TextureTest {
         assertThat(Wrap.MIRRORED_REPEAT.index(-1, 4)).isEqualTo(0);
         assertThat(Wrap.MIRRORED_REPEAT.index(9, 4)).isEqualTo(1);
         assertThat(Wrap.MIRRORED_REPEAT.index(-5, 4)).isEqualTo(3);
-        Texture t = new ImageTexture(quad(), Wrap.REPEAT, UvTransform.IDENTITY, Channel.LUMINANCE);
+        TextureLookup t = new ImageTexture(quad(), Wrap.REPEAT, UvTransform.IDENTITY, Channel.LUMINANCE);
         assertThat(at(t, 1.25, 3.25).toRgb()).isEqualTo(at(t, 0.25, 0.25).toRgb());
         assertThat(at(t, -0.75, -0.25).toRgb()).isEqualTo(at(t, 0.25, 0.75).toRgb());
     }
 
     @Test
     void uvTransformScalesThenOffsets() {
-        Texture t = new ImageTexture(quad(), Wrap.REPEAT, UvTransform.of(2, 2, 0.5, 0), Channel.LUMINANCE);
+        TextureLookup t = new ImageTexture(quad(), Wrap.REPEAT, UvTransform.of(2, 2, 0.5, 0), Channel.LUMINANCE);
         // u' = 2·0.125 + 0.5 = 0.75, v' = 2·0.125 = 0.25: bottom-right
         assertThat(at(t, 0.125, 0.125).toRgb()).isEqualTo(new Rgb(1, 1, 1));
     }

@@ -5,7 +5,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import dev.strahl.image.Image;
 import dev.strahl.image.ToneMapping;
-import dev.strahl.film.Tonemap;
+import dev.strahl.color.DisplayEncoding;
 import java.awt.image.BufferedImage;
 import java.util.Optional;
 import java.util.concurrent.Semaphore;
@@ -46,7 +46,7 @@ class FramePresenterTest {
         presenter.accept(frame(0.2f, 1));
         FramePresenter.Shown s = awaitShown();
         assertThat(s.image().getWidth()).isEqualTo(2);
-        assertThat(red(s.image(), 0)).isEqualTo(Tonemap.toSrgb8(0.2f));
+        assertThat(red(s.image(), 0)).isEqualTo(DisplayEncoding.toSrgb8(0.2f));
         assertThat(red(s.image(), 1)).isZero();
         assertThat(s.image().getType()).isEqualTo(BufferedImage.TYPE_INT_RGB);
     }
@@ -60,7 +60,7 @@ class FramePresenterTest {
             presenter.setToneMapping(curve);
             FramePresenter.Shown s = awaitShown();
             assertThat(s.curve()).isEqualTo(curve);
-            BufferedImage expected = Tonemap.toBufferedImage(new Image(2, 1, new float[] {2.5f, 2.5f, 2.5f, 0, 0, 0}), 0, curve);
+            BufferedImage expected = DisplayEncoding.toBufferedImage(new Image(2, 1, new float[] {2.5f, 2.5f, 2.5f, 0, 0, 0}), 0, curve);
             assertThat(s.image().getRGB(0, 0)).as("%s", curve).isEqualTo(expected.getRGB(0, 0));
             assertThat(red(s.image(), 0)).as("%s keeps 2.5 below white", curve).isLessThan(255);
         }
@@ -73,12 +73,12 @@ class FramePresenterTest {
         BufferedImage before = awaitShown().image();
         presenter.setExposure(1);
         FramePresenter.Shown after = awaitShown();
-        assertThat(red(after.image(), 0)).isEqualTo(Tonemap.toSrgb8(0.1f * 2.0));
+        assertThat(red(after.image(), 0)).isEqualTo(DisplayEncoding.toSrgb8(0.1f * 2.0));
         assertThat(after.exposure()).isEqualTo(1);
         assertThat(after.image()).as("a new image is swapped in, the old one is not changed").isNotSameAs(before);
-        assertThat(red(before, 0)).isEqualTo(Tonemap.toSrgb8(0.1f));
+        assertThat(red(before, 0)).isEqualTo(DisplayEncoding.toSrgb8(0.1f));
         presenter.setExposure(-2);
-        assertThat(red(awaitShown().image(), 0)).isEqualTo(Tonemap.toSrgb8(0.1f * 0.25));
+        assertThat(red(awaitShown().image(), 0)).isEqualTo(DisplayEncoding.toSrgb8(0.1f * 0.25));
     }
 
     @Test
@@ -95,7 +95,7 @@ class FramePresenterTest {
         presenter.accept(frame(0.9f, 2));
         assertThat(presenter.latest().generation()).isEqualTo(3);
         assertThat(shown.tryAcquire(200, TimeUnit.MILLISECONDS)).isFalse();
-        assertThat(red(presenter.shown().image(), 0)).isEqualTo(Tonemap.toSrgb8(0.5f));
+        assertThat(red(presenter.shown().image(), 0)).isEqualTo(DisplayEncoding.toSrgb8(0.5f));
     }
 
     /** View → Denoise: the denoised frame of the job on screen is shown (and would be saved) instead of its noisy frames. */
@@ -107,7 +107,7 @@ class FramePresenterTest {
         presenter.acceptDenoised(frame(0.4f, 1));
         FramePresenter.Shown s = awaitShown();
         assertThat(s.denoised()).isTrue();
-        assertThat(red(s.image(), 0)).isEqualTo(Tonemap.toSrgb8(0.4f));
+        assertThat(red(s.image(), 0)).isEqualTo(DisplayEncoding.toSrgb8(0.4f));
         presenter.accept(frame(0.3f, 1));
         assertThat(presenter.pick().denoised()).as("a newer noisy frame of the same job waits for its denoise").isTrue();
         assertThat(presenter.pick().frame().image().get(0, 0, 0)).isEqualTo(0.4f);
@@ -115,14 +115,14 @@ class FramePresenterTest {
         presenter.setDenoised(false);
         s = awaitShown();
         assertThat(s.denoised()).isFalse();
-        assertThat(red(s.image(), 0)).isEqualTo(Tonemap.toSrgb8(0.3f));
+        assertThat(red(s.image(), 0)).isEqualTo(DisplayEncoding.toSrgb8(0.3f));
         presenter.setDenoised(true);
         assertThat(awaitShown().denoised()).isTrue();
 
         presenter.accept(frame(0.6f, 2));
         s = awaitShown();
         assertThat(s.denoised()).as("a new job: noisy until its first denoised frame").isFalse();
-        assertThat(red(s.image(), 0)).isEqualTo(Tonemap.toSrgb8(0.6f));
+        assertThat(red(s.image(), 0)).isEqualTo(DisplayEncoding.toSrgb8(0.6f));
         presenter.acceptDenoised(frame(0.5f, 1));
         assertThat(presenter.pick().denoised()).as("a late result of the old job is dropped").isFalse();
     }

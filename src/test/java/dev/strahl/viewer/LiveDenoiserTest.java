@@ -289,11 +289,11 @@ class LiveDenoiserTest {
         assertThat(actions.denoise.getValue(javax.swing.Action.SELECTED_KEY)).isEqualTo(true);
         assertThat(jobs).as("a restart with the guides").hasSize(3);
         jobs.get(2).pass(1);
-        assertThat(jobs.get(3).settings.aovs()).isEqualTo(EnumSet.allOf(Aov.class));
+        assertThat(jobs.get(3).settings.output().aovs()).isEqualTo(EnumSet.allOf(Aov.class));
         actions.setDenoise(false);
         actions.setDenoise(true);
         assertThat(jobs).as("the render has its guides: no restart").hasSize(4);
-        assertThat(controller.settings().aovs()).isEqualTo(EnumSet.allOf(Aov.class));
+        assertThat(controller.settings().output().aovs()).isEqualTo(EnumSet.allOf(Aov.class));
         controller.close();
     }
 

@@ -46,7 +46,7 @@ class RenderControllerTest {
 
         /** Reports a finished pass (on the calling thread: the controller never holds it). */
         void pass(int spp) {
-            listener.passCompleted(spp, new Image(settings.width(), settings.height(), new float[3 * settings.width() * settings.height()]));
+            listener.passCompleted(spp, new Image(settings.output().width(), settings.output().height(), new float[3 * settings.output().width() * settings.output().height()]));
         }
 
         @Override
@@ -131,10 +131,10 @@ class RenderControllerTest {
     /** Lets the quick reduced-resolution pass that precedes every full restart finish; returns the full job. */
     FakeJob glance() {
         FakeJob quick = job();
-        assertThat(quick.settings.width()).as("a glance at a quarter of the resolution").isEqualTo(16);
+        assertThat(quick.settings.output().width()).as("a glance at a quarter of the resolution").isEqualTo(16);
         quick.pass(1);
         assertThat(quick.cancelled).isTrue();
-        assertThat(job().settings.width()).isEqualTo(64);
+        assertThat(job().settings.output().width()).isEqualTo(64);
         return job();
     }
 
@@ -145,13 +145,13 @@ class RenderControllerTest {
     @Test
     void startsWithAGlanceThenOneFullResolutionJobOfOneSamplePerPassWithoutEnd() {
         assertThat(jobs).hasSize(2);
-        assertThat(jobs.get(0).settings.width()).isEqualTo(16);
-        assertThat(jobs.get(0).settings.height()).isEqualTo(12);
+        assertThat(jobs.get(0).settings.output().width()).isEqualTo(16);
+        assertThat(jobs.get(0).settings.output().height()).isEqualTo(12);
         RenderSettings s = job().settings;
-        assertThat(s.width()).isEqualTo(64);
-        assertThat(s.height()).isEqualTo(48);
-        assertThat(s.samplesPerPass()).isEqualTo(1);
-        assertThat(s.samplesPerPixel()).isEqualTo(Integer.MAX_VALUE);
+        assertThat(s.output().width()).isEqualTo(64);
+        assertThat(s.output().height()).isEqualTo(48);
+        assertThat(s.execution().samplesPerPass()).isEqualTo(1);
+        assertThat(s.sampling().samplesPerPixel()).isEqualTo(Integer.MAX_VALUE);
         assertThat(controller.status().state()).isEqualTo(RenderController.State.RUNNING);
         assertThat(controller.status().preview()).isFalse();
     }
@@ -246,8 +246,8 @@ class RenderControllerTest {
         controller.moveCamera(c -> c.orbit(0.3, 0.1));
         assertThat(full.cancelled).isTrue();
         FakeJob preview = job();
-        assertThat(preview.settings.width()).isEqualTo(16);
-        assertThat(preview.settings.height()).isEqualTo(12);
+        assertThat(preview.settings.output().width()).isEqualTo(16);
+        assertThat(preview.settings.output().height()).isEqualTo(12);
         assertThat(preview.scene.camera().lookFrom().distance(cornell.camera().lookFrom())).isGreaterThan(0.1);
         RenderController.Status s = controller.status();
         assertThat(s.preview()).isTrue();
@@ -259,7 +259,7 @@ class RenderControllerTest {
         timer.runAll();                          // 150 ms without a move
         FakeJob again = job();
         assertThat(preview.cancelled).isTrue();
-        assertThat(again.settings.width()).isEqualTo(64);
+        assertThat(again.settings.output().width()).isEqualTo(64);
         assertThat(again.scene.camera().lookFrom()).isEqualTo(preview.scene.camera().lookFrom());
         assertThat(controller.status().preview()).isFalse();
     }
@@ -298,10 +298,10 @@ class RenderControllerTest {
         controller.resize(64, 48);
         assertThat(jobs).as("same size: nothing to do").hasSize(2);
         controller.resize(200, 150);
-        assertThat(job().settings.width()).isEqualTo(50);
+        assertThat(job().settings.output().width()).isEqualTo(50);
         timer.runAll();
-        assertThat(job().settings.width()).isEqualTo(200);
-        assertThat(job().settings.height()).isEqualTo(150);
+        assertThat(job().settings.output().width()).isEqualTo(200);
+        assertThat(job().settings.output().height()).isEqualTo(150);
     }
 
     @Test
@@ -311,11 +311,11 @@ class RenderControllerTest {
         controller.setIntegrator(IntegratorKind.PATH);
         assertThat(jobs).hasSize(2);
         controller.setMaxDepth(3);
-        assertThat(glance().settings.maxDepth()).isEqualTo(3);
+        assertThat(glance().settings.transport().maxDepth()).isEqualTo(3);
         controller.setHemisphere(HemisphereSampling.UNIFORM);
-        assertThat(glance().settings.hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
+        assertThat(glance().settings.transport().hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
         controller.setIntegrator(IntegratorKind.WHITTED);
-        assertThat(glance().settings.integrator()).isEqualTo(IntegratorKind.WHITTED);
+        assertThat(glance().settings.transport().integrator()).isEqualTo(IntegratorKind.WHITTED);
         assertThat(controller.status().integrator()).isEqualTo(IntegratorKind.WHITTED);
         assertThat(jobs).hasSize(8);
         assertThat(jobs.subList(0, 7)).allSatisfy(j -> assertThat(j.cancelled).isTrue());
@@ -327,14 +327,14 @@ class RenderControllerTest {
         Set<Aov> all = EnumSet.allOf(Aov.class);
         controller.setAovs(all);
         FakeJob full = glance();
-        assertThat(full.settings.aovs()).isEqualTo(all);
-        assertThat(jobs.get(jobs.size() - 2).settings.aovs()).as("the glance").isEmpty();
+        assertThat(full.settings.output().aovs()).isEqualTo(all);
+        assertThat(jobs.get(jobs.size() - 2).settings.output().aovs()).as("the glance").isEmpty();
         controller.setAovs(EnumSet.allOf(Aov.class));
         assertThat(job()).as("the same buffers: no restart").isSameAs(full);
         controller.moveCamera(c -> c.orbit(0.1, 0));
-        assertThat(job().settings.aovs()).as("a preview").isEmpty();
+        assertThat(job().settings.output().aovs()).as("a preview").isEmpty();
         timer.runAll();
-        assertThat(job().settings.aovs()).as("full resolution again").isEqualTo(all);
+        assertThat(job().settings.output().aovs()).as("full resolution again").isEqualTo(all);
     }
 
     /** A frame's buffers are its job's, asked for when the frame's user wants them (the denoiser). */
@@ -364,19 +364,19 @@ class RenderControllerTest {
                 .withSeed(42).withLightSamples(3).withHemisphere(HemisphereSampling.UNIFORM);
         controller.setScene(cornell, asked);
         FakeJob quick = job();
-        assertThat(quick.settings.width()).as("the glance at a quarter of the new film").isEqualTo(20);
-        assertThat(quick.settings.height()).isEqualTo(10);
+        assertThat(quick.settings.output().width()).as("the glance at a quarter of the new film").isEqualTo(20);
+        assertThat(quick.settings.output().height()).isEqualTo(10);
         quick.pass(1);
         RenderSettings s = job().settings;
-        assertThat(s.width()).isEqualTo(80);
-        assertThat(s.height()).isEqualTo(40);
-        assertThat(s.integrator()).isEqualTo(IntegratorKind.DIRECT);
-        assertThat(s.maxDepth()).isEqualTo(7);
-        assertThat(s.seed()).isEqualTo(42);
-        assertThat(s.lightSamples()).isEqualTo(3);
-        assertThat(s.hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
-        assertThat(s.samplesPerPass()).isEqualTo(1);
-        assertThat(s.samplesPerPixel()).isEqualTo(Integer.MAX_VALUE);
+        assertThat(s.output().width()).isEqualTo(80);
+        assertThat(s.output().height()).isEqualTo(40);
+        assertThat(s.transport().integrator()).isEqualTo(IntegratorKind.DIRECT);
+        assertThat(s.transport().maxDepth()).isEqualTo(7);
+        assertThat(s.sampling().seed()).isEqualTo(42);
+        assertThat(s.transport().lightSamples()).isEqualTo(3);
+        assertThat(s.transport().hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
+        assertThat(s.execution().samplesPerPass()).isEqualTo(1);
+        assertThat(s.sampling().samplesPerPixel()).isEqualTo(Integer.MAX_VALUE);
         RenderController.Status status = controller.status();
         assertThat(status.integrator()).isEqualTo(IntegratorKind.DIRECT);
         assertThat(status.maxDepth()).isEqualTo(7);
@@ -405,10 +405,10 @@ class RenderControllerTest {
         controller.moveCamera(c -> c.orbit(0.2, 0));
         assertThat(job()).isSameAs(quick);
         quick.pass(1);
-        assertThat(job().settings.width()).as("a preview, not the full job the glance would start").isEqualTo(16);
+        assertThat(job().settings.output().width()).as("a preview, not the full job the glance would start").isEqualTo(16);
         assertThat(controller.status().preview()).isTrue();
         timer.runAll();
-        assertThat(job().settings.width()).isEqualTo(64);
+        assertThat(job().settings.output().width()).isEqualTo(64);
     }
 
     @Test
@@ -427,7 +427,7 @@ class RenderControllerTest {
         assertThat(frames).as("but its image is shown").hasSize(1);
         c.displayReady();
         assertThat(jobs).hasSize(2);
-        assertThat(job().settings.width()).isEqualTo(64);
+        assertThat(job().settings.output().width()).isEqualTo(64);
         c.close();
     }
 

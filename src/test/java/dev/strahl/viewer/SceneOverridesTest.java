@@ -3,6 +3,7 @@ package dev.strahl.viewer;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import dev.strahl.render.PhotonParameters;
 import dev.strahl.image.Image;
 import dev.strahl.io.ImageWriters;
 import dev.strahl.render.HemisphereSampling;
@@ -24,8 +25,8 @@ class SceneOverridesTest {
     Path dir;
 
     static ViewerOptions with(SceneOverrides overrides) {
-        return new ViewerOptions(null, 16, 16, 4, -1, HemisphereSampling.COSINE, 1, 0, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of(),
-                5000, 0, Set.of(), overrides, true);
+        return new ViewerOptions(null, RenderSettings.defaults().withSize(16, 16).withThreads(1).withPhotons(new PhotonParameters(5000, 0)).withShadows(true),
+                4, Theme.LIGHT, Set.of(), overrides);
     }
 
     private Path scene() throws Exception {

@@ -3,6 +3,7 @@ package dev.strahl.viewer;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import dev.strahl.render.RenderSettings;
 import dev.strahl.render.IntegratorKind;
 import dev.strahl.render.HemisphereSampling;
 import dev.strahl.io.json.SceneSettings;
@@ -52,8 +53,8 @@ class ViewerEndToEndTest {
         assumeTrue(!GraphicsEnvironment.isHeadless(), "no display (headless): run under xvfb-run to include this test");
 
         List<RenderController.Frame> shown = new CopyOnWriteArrayList<>();
-        ViewerOptions options = new ViewerOptions(Path.of("scenes", "cornell-box.json"), SIZE, SIZE, RenderController.UNLIMITED,
-                -1, HemisphereSampling.COSINE, 0, 1, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of());
+        ViewerOptions options = new ViewerOptions(Path.of("scenes", "cornell-box.json"), RenderSettings.defaults().withSize(SIZE, SIZE).withSeed(1),
+                RenderController.UNLIMITED, Theme.LIGHT, Set.of(), SceneOverrides.NONE);
         Viewer viewer = Viewer.open(options);
         try {
             viewer.presenter().onShown(() -> shown.add(viewer.presenter().shown().frame()));
@@ -129,15 +130,15 @@ class ViewerEndToEndTest {
                 + " \"integrator\": { \"type\": \"whitted\", \"maxDepth\": 2, \"lightSamples\": 2 },");
         Path bad = scene(dir, "bad.json", "\"integrator\": { \"type\": \"bidir\" },");
         Path huge = scene(dir, "huge.json", "\"film\": { \"width\": 30000, \"height\": 30000 },");
-        Viewer.FilmCheck atMost4k = (w, h) -> {          // stands in for the command line's heap check
+        Viewer.FilmCheck atMost4k = (w, h, features) -> {          // stands in for the command line's heap check
             if (w > 4096 || h > 4096) {
                 throw new IllegalArgumentException("a " + w + "x" + h + " image is too large");
             }
         };
 
         // As 'strahl view a.json --integrator path': the option given wins over both files
-        ViewerOptions options = new ViewerOptions(a, 512, 512, RenderController.UNLIMITED, -1, HemisphereSampling.COSINE, 0, 0,
-                IntegratorKind.PATH, 1, Theme.LIGHT, Set.of(SceneSettings.Setting.INTEGRATOR));
+        ViewerOptions options = new ViewerOptions(a, RenderSettings.defaults().withSize(512, 512),
+                RenderController.UNLIMITED, Theme.LIGHT, Set.of(SceneSettings.Setting.INTEGRATOR), SceneOverrides.NONE);
         Viewer viewer = Viewer.open(options, atMost4k);
         try {
             ViewerFrame ui = viewer.ui();
@@ -163,7 +164,7 @@ class ViewerEndToEndTest {
             assertThat(s.integrator()).as("--integrator still wins").isEqualTo(IntegratorKind.PATH);
             assertThat(s.maxDepth()).isEqualTo(2);
             assertThat(s.hemisphere()).as("b.json says nothing: the option's value, not a.json's").isEqualTo(HemisphereSampling.COSINE);
-            assertThat(c.settings().lightSamples()).isEqualTo(2);
+            assertThat(c.settings().transport().lightSamples()).isEqualTo(2);
             assertThat(onEdt(ui.actions.maxDepth::value)).isEqualTo(2);
             assertThat(onEdt(ui.actions.hemisphere::value)).isEqualTo(HemisphereSampling.COSINE);
             assertThat(onEdt(ui.frame::getTitle)).endsWith("b.json");
@@ -197,8 +198,8 @@ class ViewerEndToEndTest {
     @Timeout(value = 60, unit = TimeUnit.SECONDS)
     void theDenoiseToggleShowsAndSavesTheDenoisedImage(@TempDir Path dir) throws Exception {
         assumeTrue(!GraphicsEnvironment.isHeadless(), "no display (headless): run under xvfb-run to include this test");
-        ViewerOptions options = new ViewerOptions(Path.of("scenes", "cornell-box.json"), 96, 96, 8, -1, HemisphereSampling.COSINE,
-                0, 1, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of());
+        ViewerOptions options = new ViewerOptions(Path.of("scenes", "cornell-box.json"), RenderSettings.defaults().withSize(96, 96).withSeed(1),
+                8, Theme.LIGHT, Set.of(), SceneOverrides.NONE);
         Viewer viewer = Viewer.open(options);
         try {
             ViewerFrame ui = viewer.ui();
@@ -206,13 +207,13 @@ class ViewerEndToEndTest {
             Robot robot = new Robot();
             waitFor("a full-resolution pass", 20, () -> !c.status().preview() && c.status().samplesPerPixel() >= 1);
             long generation = c.status().generation();
-            assertThat(c.settings().aovs()).isEmpty();
+            assertThat(c.settings().output().aovs()).isEmpty();
 
             pressKey(robot, ui, java.awt.event.KeyEvent.VK_N);
             waitFor("Denoise on", 5, () -> viewer.denoiser().enabled());
             assertThat(onEdt(() -> ui.actions.denoise.getValue(javax.swing.Action.SELECTED_KEY))).isEqualTo(true);
             assertThat(c.status().generation()).as("restarted with the guides").isGreaterThan(generation);
-            assertThat(c.settings().aovs()).containsAll(LiveDenoiser.GUIDES);
+            assertThat(c.settings().output().aovs()).containsAll(LiveDenoiser.GUIDES);
             waitFor("the denoised image at the stop-at count, 8 spp", 30, () -> {
                 FramePresenter.Shown s = viewer.presenter().shown();
                 return s != null && s.denoised() && s.frame().samplesPerPixel() == 8;
@@ -232,7 +233,7 @@ class ViewerEndToEndTest {
             Path saved = dir.resolve("denoised.pfm");
             SwingUtilities.invokeAndWait(() -> ui.files.saveImage(viewer.presenter().pick(), saved));
             waitFor("the saved file", 10, () -> Files.exists(saved));
-            assertThat(dev.strahl.io.image.PfmReader.read(saved)).as("saving writes the denoised image").isEqualTo(shown.frame().image());
+            assertThat(dev.strahl.codec.PfmReader.read(saved)).as("saving writes the denoised image").isEqualTo(shown.frame().image());
 
             pressKey(robot, ui, java.awt.event.KeyEvent.VK_N);
             waitFor("Denoise off", 5, () -> !viewer.denoiser().enabled());

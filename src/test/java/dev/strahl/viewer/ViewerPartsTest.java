@@ -32,7 +32,8 @@ class ViewerPartsTest {
     Path dir;
 
     static ViewerOptions options(Set<Setting> given) {
-        return new ViewerOptions(null, 200, 100, 256, 5, HemisphereSampling.COSINE, 2, 9, IntegratorKind.WHITTED, 2, Theme.LIGHT, given);
+        return new ViewerOptions(null, RenderSettings.defaults().withSize(200, 100).withMaxDepth(5).withThreads(2).withSeed(9).withIntegrator(IntegratorKind.WHITTED).withLightSamples(2),
+                256, Theme.LIGHT, given, SceneOverrides.NONE);
     }
 
     @Test
@@ -79,33 +80,37 @@ class ViewerPartsTest {
     @Test
     void optionsAreCheckedWhenMade() {
         ViewerOptions d = ViewerOptions.defaults();
-        assertThat(d.renderSettings().samplesPerPass()).isEqualTo(1);
-        assertThat(d.integrator()).isEqualTo(IntegratorKind.PATH);
-        assertThat(d.renderSettings().integrator()).isEqualTo(IntegratorKind.PATH);
-        assertThatThrownBy(() -> new ViewerOptions(null, 0, 512, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of()))
+        assertThat(d.renderSettings().execution().samplesPerPass()).isEqualTo(1);
+        assertThat(d.settings().transport().integrator()).isEqualTo(IntegratorKind.PATH);
+        assertThat(d.renderSettings().transport().integrator()).isEqualTo(IntegratorKind.PATH);
+        assertThatThrownBy(() -> new ViewerOptions(null, RenderSettings.defaults().withSize(0, 512),
+                0, Theme.LIGHT, Set.of(), SceneOverrides.NONE))
                 .hasMessageContaining("image size");
-        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, -1, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of()))
+        assertThatThrownBy(() -> new ViewerOptions(null, RenderSettings.defaults().withSize(64, 64),
+                -1, Theme.LIGHT, Set.of(), SceneOverrides.NONE))
                 .hasMessageContaining("stop-at");
-        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, 0, 0, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT, Set.of()))
+        assertThatThrownBy(() -> new ViewerOptions(null, RenderSettings.defaults().withSize(64, 64).withMaxDepth(0),
+                0, Theme.LIGHT, Set.of(), SceneOverrides.NONE))
                 .hasMessageContaining("max depth");
-        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.DIRECT, 0, Theme.LIGHT, Set.of()))
+        assertThatThrownBy(() -> new ViewerOptions(null, RenderSettings.defaults().withSize(64, 64).withIntegrator(IntegratorKind.DIRECT).withLightSamples(0),
+                0, Theme.LIGHT, Set.of(), SceneOverrides.NONE))
                 .hasMessageContaining("light samples");
     }
 
     @Test
     void aSceneFilesSettingsReplaceTheOptionsNotGiven() throws Exception {
         RenderSettings s = options(Set.of()).settingsFor(FILE);
-        assertThat(s.width()).isEqualTo(320);
-        assertThat(s.height()).isEqualTo(160);
-        assertThat(s.integrator()).isEqualTo(IntegratorKind.DIRECT);
-        assertThat(s.maxDepth()).isEqualTo(3);
-        assertThat(s.seed()).isEqualTo(42);
-        assertThat(s.lightSamples()).isEqualTo(4);
-        assertThat(s.hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
-        assertThat(s.threads()).as("not a scene-file key").isEqualTo(2);
-        assertThat(s.samplesPerPass()).isEqualTo(1);
-        assertThat(s.samplesPerPixel()).as("the file's spp is not the viewer's stop-at count")
-                .isEqualTo(options(Set.of()).renderSettings().samplesPerPixel());
+        assertThat(s.output().width()).isEqualTo(320);
+        assertThat(s.output().height()).isEqualTo(160);
+        assertThat(s.transport().integrator()).isEqualTo(IntegratorKind.DIRECT);
+        assertThat(s.transport().maxDepth()).isEqualTo(3);
+        assertThat(s.sampling().seed()).isEqualTo(42);
+        assertThat(s.transport().lightSamples()).isEqualTo(4);
+        assertThat(s.transport().hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
+        assertThat(s.execution().threads()).as("not a scene-file key").isEqualTo(2);
+        assertThat(s.execution().samplesPerPass()).isEqualTo(1);
+        assertThat(s.sampling().samplesPerPixel()).as("the file's spp is not the viewer's stop-at count")
+                .isEqualTo(options(Set.of()).renderSettings().sampling().samplesPerPixel());
         assertThat(options(Set.of()).settingsFor(SceneSettings.NONE)).as("a file that says nothing")
                 .isEqualTo(options(Set.of()).renderSettings());
     }
@@ -116,21 +121,21 @@ class ViewerPartsTest {
         assertThat(all).isEqualTo(options(Set.of()).renderSettings());
 
         RenderSettings widthOnly = options(Set.of(Setting.WIDTH)).settingsFor(FILE);
-        assertThat(widthOnly.width()).isEqualTo(200);
-        assertThat(widthOnly.height()).as("the file's height with the given width, as render does").isEqualTo(160);
-        assertThat(widthOnly.integrator()).isEqualTo(IntegratorKind.DIRECT);
-        assertThat(options(Set.of(Setting.HEIGHT)).settingsFor(FILE).width()).isEqualTo(320);
-        assertThat(options(Set.of(Setting.HEIGHT)).settingsFor(FILE).height()).isEqualTo(100);
+        assertThat(widthOnly.output().width()).isEqualTo(200);
+        assertThat(widthOnly.output().height()).as("the file's height with the given width, as render does").isEqualTo(160);
+        assertThat(widthOnly.transport().integrator()).isEqualTo(IntegratorKind.DIRECT);
+        assertThat(options(Set.of(Setting.HEIGHT)).settingsFor(FILE).output().width()).isEqualTo(320);
+        assertThat(options(Set.of(Setting.HEIGHT)).settingsFor(FILE).output().height()).isEqualTo(100);
 
         // Each one alone: that setting from the option, every other one from the file
         RenderSettings fromFile = options(Set.of()).settingsFor(FILE);
         RenderSettings fromOptions = options(Set.of()).renderSettings();
-        assertThat(options(Set.of(Setting.MAX_DEPTH)).settingsFor(FILE)).isEqualTo(fromFile.withMaxDepth(fromOptions.maxDepth()));
-        assertThat(options(Set.of(Setting.HEMISPHERE)).settingsFor(FILE)).isEqualTo(fromFile.withHemisphere(fromOptions.hemisphere()));
-        assertThat(options(Set.of(Setting.SEED)).settingsFor(FILE)).isEqualTo(fromFile.withSeed(fromOptions.seed()));
-        assertThat(options(Set.of(Setting.INTEGRATOR)).settingsFor(FILE)).isEqualTo(fromFile.withIntegrator(fromOptions.integrator()));
+        assertThat(options(Set.of(Setting.MAX_DEPTH)).settingsFor(FILE)).isEqualTo(fromFile.withMaxDepth(fromOptions.transport().maxDepth()));
+        assertThat(options(Set.of(Setting.HEMISPHERE)).settingsFor(FILE)).isEqualTo(fromFile.withHemisphere(fromOptions.transport().hemisphere()));
+        assertThat(options(Set.of(Setting.SEED)).settingsFor(FILE)).isEqualTo(fromFile.withSeed(fromOptions.sampling().seed()));
+        assertThat(options(Set.of(Setting.INTEGRATOR)).settingsFor(FILE)).isEqualTo(fromFile.withIntegrator(fromOptions.transport().integrator()));
         assertThat(options(Set.of(Setting.LIGHT_SAMPLES)).settingsFor(FILE))
-                .isEqualTo(fromFile.withLightSamples(fromOptions.lightSamples()));
+                .isEqualTo(fromFile.withLightSamples(fromOptions.transport().lightSamples()));
     }
 
     @Test
@@ -143,13 +148,13 @@ class ViewerPartsTest {
                   "shapes": [ { "type": "mesh", "file": "cornell-box.obj" } ] }
                 """);
         List<Dimension> checked = new ArrayList<>();
-        SceneFiles.Opened opened = SceneFiles.open(file, ViewerOptions.defaults(), (w, h) -> checked.add(new Dimension(w, h)));
+        SceneFiles.Opened opened = SceneFiles.open(file, ViewerOptions.defaults(), (w, h, features) -> checked.add(new Dimension(w, h)));
         assertThat(opened.file()).isEqualTo(file);
-        assertThat(opened.settings().width()).isEqualTo(96);
-        assertThat(opened.settings().height()).isEqualTo(48);
-        assertThat(opened.settings().integrator()).isEqualTo(IntegratorKind.DIRECT);
-        assertThat(opened.settings().maxDepth()).isEqualTo(7);
-        assertThat(opened.settings().samplesPerPixel()).as("the viewer renders on: not the file's spp").isNotEqualTo(3);
+        assertThat(opened.settings().output().width()).isEqualTo(96);
+        assertThat(opened.settings().output().height()).isEqualTo(48);
+        assertThat(opened.settings().transport().integrator()).isEqualTo(IntegratorKind.DIRECT);
+        assertThat(opened.settings().transport().maxDepth()).isEqualTo(7);
+        assertThat(opened.settings().sampling().samplesPerPixel()).as("the viewer renders on: not the file's spp").isNotEqualTo(3);
         assertThat(checked).as("the film check sees the size the settings ask for").containsExactly(new Dimension(96, 48));
     }
 
@@ -160,22 +165,22 @@ class ViewerPartsTest {
         Path huge = Files.writeString(dir.resolve("huge.json"), """
                 { "film": { "width": 30000, "height": 20000 }, "shapes": [ { "type": "mesh", "file": "cornell-box.obj" } ] }
                 """);
-        Viewer.FilmCheck atMost4k = (w, h) -> {
+        Viewer.FilmCheck atMost4k = (w, h, features) -> {
             if (w > 4096 || h > 4096) {
                 throw new IllegalArgumentException("a " + w + "x" + h + " image is too large");
             }
         };
         assertThatThrownBy(() -> SceneFiles.open(huge, ViewerOptions.defaults(), atMost4k))
                 .isInstanceOf(IllegalArgumentException.class).hasMessage("a 30000x20000 image is too large");
-        assertThat(SceneFiles.open(huge, options(Set.of(Setting.WIDTH, Setting.HEIGHT)), atMost4k).settings().width())
+        assertThat(SceneFiles.open(huge, options(Set.of(Setting.WIDTH, Setting.HEIGHT)), atMost4k).settings().output().width())
                 .as("--width and --height given win over the file's film, and pass").isEqualTo(200);
         assertThatThrownBy(() -> SceneFiles.open(huge, options(Set.of(Setting.WIDTH)), atMost4k))
                 .as("--width alone keeps the file's height").hasMessage("a 200x20000 image is too large");
-        ViewerOptions wide = new ViewerOptions(null, 8000, 100, 256, 5, HemisphereSampling.COSINE, 2, 9, IntegratorKind.WHITTED, 2,
-                Theme.LIGHT, Set.of(Setting.WIDTH, Setting.HEIGHT));
+        ViewerOptions wide = new ViewerOptions(null, RenderSettings.defaults().withSize(8000, 100).withMaxDepth(5).withThreads(2).withSeed(9).withIntegrator(IntegratorKind.WHITTED).withLightSamples(2),
+                256, Theme.LIGHT, Set.of(Setting.WIDTH, Setting.HEIGHT), SceneOverrides.NONE);
         assertThatThrownBy(() -> SceneFiles.open(huge, wide, atMost4k)).as("as --width 8000 --height 100")
                 .hasMessage("a 8000x100 image is too large");
-        assertThat(SceneFiles.open(huge, ViewerOptions.defaults(), Viewer.FilmCheck.NONE).settings().width()).isEqualTo(30000);
+        assertThat(SceneFiles.open(huge, ViewerOptions.defaults(), Viewer.FilmCheck.NONE).settings().output().width()).isEqualTo(30000);
     }
 
     @Test

@@ -3,6 +3,7 @@ package dev.strahl.viewer;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import dev.strahl.render.RenderSettings;
 import dev.strahl.render.IntegratorKind;
 import dev.strahl.render.PhotonParameters;
 import dev.strahl.render.HemisphereSampling;
@@ -18,31 +19,33 @@ class ViewerPhotonOptionsTest {
 
     @Test
     void photonParametersReachTheRenderSettings() throws Exception {
-        ViewerOptions o = new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PHOTON, 1, Theme.LIGHT, Set.of(), 5000, 0.03);
-        assertThat(o.renderSettings().integrator()).isEqualTo(IntegratorKind.PHOTON);
-        assertThat(o.renderSettings().photons()).isEqualTo(new PhotonParameters(5000, 0.03));
-        assertThat(ViewerOptions.defaults().renderSettings().photons()).isEqualTo(PhotonParameters.defaults());
+        ViewerOptions o = new ViewerOptions(null, RenderSettings.defaults().withSize(64, 64).withIntegrator(IntegratorKind.PHOTON).withPhotons(new PhotonParameters(5000, 0.03)),
+                0, Theme.LIGHT, Set.of(), SceneOverrides.NONE);
+        assertThat(o.renderSettings().transport().integrator()).isEqualTo(IntegratorKind.PHOTON);
+        assertThat(o.renderSettings().transport().photons()).isEqualTo(new PhotonParameters(5000, 0.03));
+        assertThat(ViewerOptions.defaults().renderSettings().transport().photons()).isEqualTo(PhotonParameters.defaults());
         // A scene file's settings keep the photon parameters of the options.
-        assertThat(o.settingsFor(dev.strahl.io.json.SceneSettings.NONE).photons())
+        assertThat(o.settingsFor(dev.strahl.io.json.SceneSettings.NONE).transport().photons())
                 .isEqualTo(new PhotonParameters(5000, 0.03));
     }
 
     @Test
     void aSceneFilesPhotonKeysReplaceTheOptionsUnlessGiven() throws Exception {
         SceneSettings file = new SceneSettings(null, null, null, null, null, IntegratorKind.PHOTON, null, null, 20_000, 0.125);
-        ViewerOptions none = new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT,
-                Set.of(), 5000, 0.03);
-        assertThat(none.settingsFor(file).photons()).isEqualTo(new PhotonParameters(20_000, 0.125));
-        assertThat(none.settingsFor(file).integrator()).isEqualTo(IntegratorKind.PHOTON);
-        ViewerOptions given = new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PATH, 1, Theme.LIGHT,
-                Set.of(Setting.PHOTONS, Setting.PHOTON_RADIUS), 5000, 0.03);
-        assertThat(given.settingsFor(file).photons()).as("--photons and --photon-radius given")
+        ViewerOptions none = new ViewerOptions(null, RenderSettings.defaults().withSize(64, 64).withPhotons(new PhotonParameters(5000, 0.03)),
+                0, Theme.LIGHT, Set.of(), SceneOverrides.NONE);
+        assertThat(none.settingsFor(file).transport().photons()).isEqualTo(new PhotonParameters(20_000, 0.125));
+        assertThat(none.settingsFor(file).transport().integrator()).isEqualTo(IntegratorKind.PHOTON);
+        ViewerOptions given = new ViewerOptions(null, RenderSettings.defaults().withSize(64, 64).withPhotons(new PhotonParameters(5000, 0.03)),
+                0, Theme.LIGHT, Set.of(Setting.PHOTONS, Setting.PHOTON_RADIUS), SceneOverrides.NONE);
+        assertThat(given.settingsFor(file).transport().photons()).as("--photons and --photon-radius given")
                 .isEqualTo(new PhotonParameters(5000, 0.03));
     }
 
     @Test
     void badPhotonParametersAreRefused() {
-        assertThatThrownBy(() -> new ViewerOptions(null, 64, 64, 0, -1, HemisphereSampling.COSINE, 0, 0, IntegratorKind.PHOTON, 1, Theme.LIGHT, Set.of(), 0, 0))
+        assertThatThrownBy(() -> new ViewerOptions(null, RenderSettings.defaults().withSize(64, 64).withIntegrator(IntegratorKind.PHOTON).withPhotons(new PhotonParameters(0, 0)),
+                0, Theme.LIGHT, Set.of(), SceneOverrides.NONE))
                 .hasMessageContaining("photons per iteration");
     }
 

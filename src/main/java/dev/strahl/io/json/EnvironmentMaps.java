@@ -1,11 +1,11 @@
 package dev.strahl.io.json;
 
 import dev.strahl.image.Image;
-import dev.strahl.io.exr.ExrReader;
-import dev.strahl.io.image.HdrReader;
-import dev.strahl.io.image.ImageFormatException;
-import dev.strahl.io.image.ImageLimits;
-import dev.strahl.io.image.PfmReader;
+import dev.strahl.codec.exr.ExrReader;
+import dev.strahl.codec.HdrReader;
+import dev.strahl.codec.ImageFormatException;
+import dev.strahl.codec.ImageLimits;
+import dev.strahl.codec.PfmReader;
 import dev.strahl.scene.SceneException;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -66,7 +66,11 @@ public final class EnvironmentMaps {
             if (image.height() < 2) {
                 throw new SceneException(file, "an environment map needs at least 2 rows, this one has " + image.height());
             }
-            ImageLimits.checkAllocation(file, image.width(), image.height(), BYTES_PER_TEXEL / Float.BYTES, 0);
+            String shortfall = ImageLimits.heapShortfall((long) BYTES_PER_TEXEL * image.width() * image.height());
+            if (shortfall != null) {
+                throw new SceneException(file, "a " + image.width() + "x" + image.height() + " environment map (" + BYTES_PER_TEXEL
+                        + " bytes a texel: its texels and sampling tables) " + shortfall);
+            }
             return image;
         } catch (ImageFormatException e) {
             throw asSceneException(file, e);

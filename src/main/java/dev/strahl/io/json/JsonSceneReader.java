@@ -1,12 +1,9 @@
 package dev.strahl.io.json;
 
-import dev.strahl.image.Rgb;
-import dev.strahl.io.json.SceneDescription.ColorParam;
 import dev.strahl.io.json.SceneDescription.EnvironmentSpec;
 import dev.strahl.io.json.SceneDescription.MaterialSpec;
-import dev.strahl.io.json.SceneDescription.NumberParam;
 import dev.strahl.io.json.SceneDescription.ShapeSpec;
-import dev.strahl.io.json.SceneDescription.TextureRef;
+import dev.strahl.io.text.InputErrors;
 import dev.strahl.io.text.TextLines;
 import dev.strahl.render.HemisphereSampling;
 import dev.strahl.render.IntegratorKind;
@@ -14,7 +11,6 @@ import dev.strahl.render.PhotonParameters;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.scene.Camera;
 import dev.strahl.scene.Material;
-import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
 import dev.strahl.scene.Transform;
 import dev.strahl.scene.TriangleMesh;
@@ -38,17 +34,10 @@ import org.joml.Vector3d;
  * and missing mesh files are errors naming the file, the line and the key.
  */
 public final class JsonSceneReader {
+    /** This reader's errors, as io.text makes them. */
+    static final InputErrors<SceneException> ERRORS = InputErrors.of(SceneException::new, SceneException::new);
     /** The material types of the scene file and the keys each accepts. */
-    static final Map<String, Set<String>> MATERIAL_KEYS = Map.of(
-            "diffuse", Set.of("type", "albedo", "emission"),
-            "mirror", Set.of("type", "reflectance"),
-            "dielectric", Set.of("type", "ior", "alpha"),
-            "glossy", Set.of("type", "diffuse", "specular", "exponent", "emission"),
-            "conductor", Set.of("type", "preset", "eta", "k", "alpha"),
-            "principled", Set.of("type", "baseColor", "metallic", "roughness", "specular", "specularColor", "transmission", "ior", "emission",
-                    "emissionStrength"));
-    /** The keys of a texture that stands in for a colour or a number. */
-    static final Set<String> TEXTURE_KEYS = Set.of("texture", "uvScale", "linear");
+    static final Map<String, Set<String>> MATERIAL_KEYS = JsonMaterials.MATERIAL_KEYS;
     /** The shape types and the keys each accepts. */
     static final Map<String, Set<String>> SHAPE_KEYS = Map.of(
             "sphere", Set.of("type", "center", "radius", "material", "transform"),
@@ -82,12 +71,12 @@ public final class JsonSceneReader {
     static SceneDescription parse(Path file) throws SceneException {
         String text;
         try {
-            dev.strahl.io.image.FileReads.note(file);
+            dev.strahl.files.FileReads.note(file);
             text = Files.readString(file, StandardCharsets.UTF_8);
         } catch (CharacterCodingException e) {
             throw new SceneException(file, TextLines.lineOfInvalidUtf8(file, 1), "not a text scene file (invalid UTF-8)");
         } catch (IOException e) {
-            throw TextLines.cannotRead(file, e);
+            throw TextLines.cannotRead(ERRORS, file, e);
         }
         return new JsonSceneReader(file).scene(JsonNode.parse(file, text));
     }
@@ -96,13 +85,23 @@ public final class JsonSceneReader {
         return file.toAbsolutePath().getParent();
     }
 
+    /** The file {@code fileNode} names (at {@code key}), relative to the scene file's folder. */
+    private Path fileAt(JsonNode fileNode, String key) throws SceneException {
+        String name = v.string(fileNode, key);
+        try {
+            return folder(file).resolve(name);
+        } catch (java.nio.file.InvalidPathException e) {
+            throw new SceneException(file, fileNode.line, "'" + key + "' is not a valid path: " + name);
+        }
+    }
+
     private SceneDescription scene(JsonNode root) throws SceneException {
         Map<String, JsonNode> top = v.object(root, "scene");
         v.allowOnly(top, "scene", TOP_KEYS);
         Map<String, MaterialSpec> materials = new LinkedHashMap<>();
         if (top.containsKey("materials")) {
             for (var e : v.object(top.get("materials"), "materials").entrySet()) {
-                materials.put(e.getKey(), material(e.getKey(), e.getValue()));
+                materials.put(e.getKey(), new JsonMaterials(file, v).material(e.getKey(), e.getValue()));
             }
         }
         JsonNode shapesNode = v.require(top, "shapes", root);
@@ -125,171 +124,18 @@ public final class JsonSceneReader {
         return new SceneDescription(camera, settings, materials, shapes, environment, SceneLights.parse(top.get("lights"), v));
     }
 
-    // ---- materials -----------------------------------------------------------------------------
-
-    private MaterialSpec material(String name, JsonNode node) throws SceneException {
-        String key = "materials." + name;
-        Map<String, JsonNode> m = v.object(node, key);
-        String type = v.string(v.require(m, "type", node), key + ".type");
-        Set<String> keys = MATERIAL_KEYS.get(type);
-        if (keys == null) {
-            throw new SceneException(file, m.get("type").line, "unknown material type '" + type + "' for '" + key
-                    + "' (known: " + JsonValues.sorted(MATERIAL_KEYS.keySet()) + ")");
-        }
-        if (m.containsKey("emission") && !keys.contains("emission")) {
-            throw new SceneException(file, m.get("emission").line, "'" + key + ".emission': a " + type
-                    + " material cannot emit light; emission is allowed on diffuse, glossy and principled materials (a one-sided area light)");
-        }
-        v.allowOnly(m, key + " of type " + type, keys);
-        switch (type) {
-            case "mirror":
-                return new SceneDescription.Mirror(m.containsKey("reflectance") ? v.unitColor(m.get("reflectance"), key + ".reflectance") : Rgb.WHITE);
-            case "dielectric":
-                return new SceneDescription.Dielectric(ior(m, key), numberParam(m, "alpha", key, 0, 0, Double.POSITIVE_INFINITY));
-            case "conductor": {
-                NumberParam alpha = numberParam(m, "alpha", key, 0, 0, Double.POSITIVE_INFINITY);
-                if (m.containsKey("preset")) {
-                    if (m.containsKey("eta") || m.containsKey("k")) {
-                        throw new SceneException(file, m.get("preset").line, "'" + key + "': give either 'preset' or 'eta' and 'k', not both");
-                    }
-                    String preset = v.string(m.get("preset"), key + ".preset");
-                    if (!Material.conductorPresets().contains(preset)) {
-                        throw new SceneException(file, m.get("preset").line, "'" + key + ".preset': unknown conductor '" + preset + "' (known: "
-                                + JsonValues.sorted(Material.conductorPresets()) + ")");
-                    }
-                    return new SceneDescription.Conductor(preset, null, null, alpha);
-                }
-                if (!m.containsKey("eta") || !m.containsKey("k")) {
-                    throw new SceneException(file, node.line, "'" + key + "' needs a 'preset' (" + JsonValues.sorted(Material.conductorPresets())
-                            + ") or both 'eta' and 'k'");
-                }
-                Rgb eta = v.color(m.get("eta"), key + ".eta");
-                if (!(eta.r() > 0 && eta.g() > 0 && eta.b() > 0)) {
-                    throw new SceneException(file, m.get("eta").line, "'" + key + ".eta' must be positive in every channel, got " + eta);
-                }
-                return new SceneDescription.Conductor(null, eta, v.color(m.get("k"), key + ".k"), alpha);
-            }
-            case "principled":
-                return new SceneDescription.Principled(colorParam(m, "baseColor", key, Rgb.WHITE, true),
-                        numberParam(m, "metallic", key, 1, 0, 1), numberParam(m, "roughness", key, 1, 0, 1),
-                        numberParam(m, "specular", key, 1, 0, 1), colorParam(m, "specularColor", key, Rgb.WHITE, false),
-                        numberParam(m, "transmission", key, 0, 0, 1), ior(m, key), emission(m, key),
-                        m.containsKey("emissionStrength") ? nonNegative(m.get("emissionStrength"), key + ".emissionStrength") : 1);
-            case "glossy": {
-                Rgb kd = m.containsKey("diffuse") ? v.unitColor(m.get("diffuse"), key + ".diffuse") : Rgb.BLACK;
-                Rgb ks = v.unitColor(v.require(m, "specular", node), key + ".specular");
-                double ns = v.number(v.require(m, "exponent", node), key + ".exponent");
-                if (!(ns >= 0)) {
-                    throw new SceneException(file, m.get("exponent").line, "'" + key + ".exponent' must be >= 0, got " + JsonValues.format(ns));
-                }
-                return new SceneDescription.Glossy(kd, ks, ns, emission(m, key));
-            }
-            default:
-                return new SceneDescription.Diffuse(colorParam(m, "albedo", key, Rgb.gray(0.8), true), emission(m, key));
-        }
-    }
-
-    private double ior(Map<String, JsonNode> m, String key) throws SceneException {
-        if (!m.containsKey("ior")) {
-            return 1.5;
-        }
-        double ior = v.number(m.get("ior"), key + ".ior");
-        if (!(ior > 0)) {
-            throw new SceneException(file, m.get("ior").line, "'" + key + ".ior' must be positive, got " + JsonValues.format(ior));
-        }
-        return ior;
-    }
-
-    private double nonNegative(JsonNode node, String key) throws SceneException {
-        double x = v.number(node, key);
-        if (!(x >= 0)) {
-            throw new SceneException(file, node.line, "'" + key + "' must be >= 0, got " + JsonValues.format(x));
-        }
-        return x;
-    }
-
-    /** A colour (in [0, 1] if {@code unit}) or a texture object; {@code fallback} without the key. */
-    private ColorParam colorParam(Map<String, JsonNode> m, String name, String key, Rgb fallback, boolean unit) throws SceneException {
-        JsonNode node = m.get(name);
-        if (node == null) {
-            return ColorParam.of(fallback);
-        }
-        if (node.value instanceof Map) {
-            return new ColorParam(fallback, textureRef(node, key + "." + name, true));
-        }
-        return ColorParam.of(unit ? v.unitColor(node, key + "." + name) : v.color(node, key + "." + name));
-    }
-
-    /** A number in [min, max] or a texture object; {@code fallback} without the key. */
-    private NumberParam numberParam(Map<String, JsonNode> m, String name, String key, double fallback, double min, double max) throws SceneException {
-        JsonNode node = m.get(name);
-        if (node == null) {
-            return NumberParam.of(fallback);
-        }
-        if (node.value instanceof Map) {
-            return new NumberParam(fallback, textureRef(node, key + "." + name, false));
-        }
-        double x = v.number(node, key + "." + name);
-        if (!(x >= min && x <= max)) {
-            throw new SceneException(file, node.line, "'" + key + "." + name + "' must lie in [" + JsonValues.format(min) + ", "
-                    + (max == Double.POSITIVE_INFINITY ? "∞)" : JsonValues.format(max) + "]") + ", got " + JsonValues.format(x));
-        }
-        return NumberParam.of(x);
-    }
-
-    private TextureRef textureRef(JsonNode node, String key, boolean colour) throws SceneException {
-        Map<String, JsonNode> t = v.object(node, key);
-        v.allowOnly(t, key, colour ? TEXTURE_KEYS : Set.of("texture", "uvScale"));
-        String name = v.string(v.require(t, "texture", node), key + ".texture");
-        String lower = name.toLowerCase(Locale.ROOT);
-        if (!lower.endsWith(".png") && !lower.endsWith(".jpg") && !lower.endsWith(".jpeg")) {
-            throw new SceneException(file, t.get("texture").line, "'" + key + ".texture' must name a .png, .jpg or .jpeg image, got '" + name + "'");
-        }
-        double su = 1, sv = 1;
-        if (t.containsKey("uvScale")) {
-            double[] s = v.numbers(t.get("uvScale"), key + ".uvScale", 2);
-            if (!Double.isFinite(s[0]) || !Double.isFinite(s[1]) || s[0] == 0 || s[1] == 0) {
-                throw new SceneException(file, t.get("uvScale").line, "'" + key + ".uvScale' must be two finite, non-zero numbers");
-            }
-            su = s[0];
-            sv = s[1];
-        }
-        boolean linear = false;
-        if (t.containsKey("linear")) {
-            if (!(t.get("linear").value instanceof Boolean b)) {
-                throw new SceneException(file, t.get("linear").line, "'" + key + ".linear' must be true or false");
-            }
-            linear = b;
-        }
-        return new TextureRef(name, su, sv, linear);
-    }
-
-    private Rgb emission(Map<String, JsonNode> m, String key) throws SceneException {
-        return m.containsKey("emission") ? v.color(m.get("emission"), key + ".emission") : Rgb.BLACK;
-    }
-
     // ---- shapes --------------------------------------------------------------------------------
 
     private ShapeSpec shape(JsonNode node) throws SceneException {
         Map<String, JsonNode> s = v.object(node, "shapes[]");
-        String type = v.string(v.require(s, "type", node), "shapes[].type");
-        Set<String> keys = SHAPE_KEYS.get(type);
-        if (keys == null) {
-            throw new SceneException(file, s.get("type").line, "unknown shape type '" + type + "' (known: "
-                    + JsonValues.sorted(SHAPE_KEYS.keySet()) + ")");
-        }
-        v.allowOnly(s, "shapes[] of type " + type, keys);
+        String type = v.type(s, node, "shapes[]", SHAPE_KEYS.keySet(), "shape", "", "");
+        v.allowOnly(s, "shapes[] of type " + type, SHAPE_KEYS.get(type));
         Transform transform = s.containsKey("transform") ? TransformReader.read(v, s.get("transform")) : Transform.IDENTITY;
         switch (type) {
             case "mesh", "gltf": {
                 JsonNode fileNode = v.require(s, "file", node);
                 String name = v.string(fileNode, "shapes[].file");
-                Path mesh;
-                try {
-                    mesh = folder(file).resolve(name);
-                } catch (java.nio.file.InvalidPathException e) {
-                    throw new SceneException(file, fileNode.line, "'shapes[].file' is not a valid path: " + name);
-                }
+                Path mesh = fileAt(fileNode, "shapes[].file");
                 String lower = name.toLowerCase(Locale.ROOT);
                 if (type.equals("gltf") ? !lower.endsWith(".gltf") && !lower.endsWith(".glb") : !lower.endsWith(".obj") && !lower.endsWith(".ply")) {
                     throw new SceneException(file, fileNode.line, "'shapes[].file' must name " + (type.equals("gltf") ? "a .gltf or .glb" : "an .obj or .ply") + " file, got '" + name + "'");
@@ -381,21 +227,12 @@ public final class JsonSceneReader {
             return new EnvironmentSpec(v.color(node, "environment"), null, 1, 0);
         }
         Map<String, JsonNode> e = node.object();
-        String type = v.string(v.require(e, "type", node), "environment.type");
-        Set<String> keys = ENVIRONMENT_KEYS.get(type);
-        if (keys == null) {
-            throw new SceneException(file, e.get("type").line, "unknown environment type '" + type + "' (known: "
-                    + JsonValues.sorted(ENVIRONMENT_KEYS.keySet()) + "; or give a constant radiance as [r, g, b])");
-        }
-        v.allowOnly(e, "environment of type " + type, keys);
+        String type = v.type(e, node, "environment", ENVIRONMENT_KEYS.keySet(), "environment", "",
+                "; or give a constant radiance as [r, g, b]");
+        v.allowOnly(e, "environment of type " + type, ENVIRONMENT_KEYS.get(type));
         JsonNode fileNode = v.require(e, "file", node);
         String name = v.string(fileNode, "environment.file");
-        Path map;
-        try {
-            map = folder(file).resolve(name);
-        } catch (java.nio.file.InvalidPathException ex) {
-            throw new SceneException(file, fileNode.line, "'environment.file' is not a valid path: " + name);
-        }
+        Path map = fileAt(fileNode, "environment.file");
         if (!EnvironmentMaps.isSupported(name)) {
             throw new SceneException(file, fileNode.line, "'environment.file' must name an .hdr, .exr or .pfm image, got '" + name + "'");
         }

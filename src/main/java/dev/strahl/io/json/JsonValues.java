@@ -140,6 +140,21 @@ final class JsonValues {
         return n;
     }
 
+    /**
+     * The {@code type} of a typed object (a material, a shape, an environment) at {@code key}: one
+     * of {@code types}; else an error at its line naming the known ones ({@code forKey} and
+     * {@code hint} go into that message).
+     */
+    String type(Map<String, JsonNode> map, JsonNode node, String key, Set<String> types, String what, String forKey, String hint)
+            throws SceneException {
+        String type = string(require(map, "type", node), key + ".type");
+        if (!types.contains(type)) {
+            throw new SceneException(file, map.get("type").line, "unknown " + what + " type '" + type + "'" + forKey + " (known: "
+                    + sorted(types) + hint + ")");
+        }
+        return type;
+    }
+
     void allowOnly(Map<String, JsonNode> map, String where, Set<String> keys) throws SceneException {
         for (var e : map.entrySet()) {
             if (!keys.contains(e.getKey())) {

@@ -50,7 +50,7 @@ public record SceneFile(Scene scene, SceneSettings settings) {
             GltfReader.addLights(asset, builder);
             SceneSettings settings = SceneSettings.NONE;
             if (asset.aspectRatio() > 0) {
-                int width = RenderSettings.defaults().width();
+                int width = RenderSettings.defaults().output().width();
                 settings = new SceneSettings(width, SceneSettings.filmSide(width / asset.aspectRatio()), null, null, null, null,
                         null, null, null, null, null, asset.aspectRatio());
             }

@@ -78,14 +78,14 @@ public record SceneSettings(Integer width, Integer height, Integer samplesPerPix
     public RenderSettings applyTo(RenderSettings base, Set<Setting> given) {
         RenderSettings s = base;
         if (width != null && !given.contains(Setting.WIDTH)) {
-            s = s.withSize(width, s.height());
+            s = s.withSize(width, s.output().height());
         }
         if (height != null && !given.contains(Setting.HEIGHT)) {
-            s = s.withSize(s.width(), height);
+            s = s.withSize(s.output().width(), height);
         }
         if (aspectRatio != null && given.contains(Setting.WIDTH) != given.contains(Setting.HEIGHT)) {
-            s = given.contains(Setting.WIDTH) ? s.withSize(s.width(), filmSide(s.width() / aspectRatio))
-                    : s.withSize(filmSide(s.height() * aspectRatio), s.height());
+            s = given.contains(Setting.WIDTH) ? s.withSize(s.output().width(), filmSide(s.output().width() / aspectRatio))
+                    : s.withSize(filmSide(s.output().height() * aspectRatio), s.output().height());
         }
         if (samplesPerPixel != null && !given.contains(Setting.SAMPLES_PER_PIXEL)) {
             s = s.withSamplesPerPixel(samplesPerPixel);
@@ -105,7 +105,7 @@ public record SceneSettings(Integer width, Integer height, Integer samplesPerPix
         if (hemisphere != null && !given.contains(Setting.HEMISPHERE)) {
             s = s.withHemisphere(hemisphere);
         }
-        PhotonParameters p = s.photons();
+        PhotonParameters p = s.transport().photons();
         if (photons != null && !given.contains(Setting.PHOTONS)) {
             p = new PhotonParameters(photons, p.initialRadius());
         }

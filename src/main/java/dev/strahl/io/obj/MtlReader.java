@@ -44,16 +44,16 @@ public final class MtlReader {
      * {@code warnings}, each starting with the file name.
      */
     public static Map<String, MtlMaterial> read(Path mtl, List<String> warnings) throws SceneException {
-        return TextLines.read(mtl, "MTL", false, warnings, (lines, w) -> read(mtl, lines, w));
+        return TextLines.read(mtl, ObjReader.ERRORS, "MTL", false, warnings, (lines, w) -> read(mtl, lines, w));
     }
 
-    private static Map<String, MtlMaterial> read(Path mtl, TextLines lines, List<String> warnings) throws SceneException {
+    private static Map<String, MtlMaterial> read(Path mtl, TextLines<SceneException> lines, List<String> warnings) throws SceneException {
         Map<String, MtlMaterial> materials = new LinkedHashMap<>();
         Set<String> warnedKeys = new HashSet<>();
         boolean warnedTextures = false;
         boolean warnedDissolve = false;
         Block block = null;
-        var cur = new LineCursor(mtl);
+        var cur = new LineCursor<>(mtl, ObjReader.ERRORS);
         for (String line; (line = lines.next()) != null; ) {
             cur.reset(line, lines.lineNumber());
             if (!cur.next()) {
@@ -129,7 +129,7 @@ public final class MtlReader {
         };
     }
 
-    private static void readKey(String lower, String key, LineCursor cur, Block block, Path mtl,
+    private static void readKey(String lower, String key, LineCursor<SceneException> cur, Block block, Path mtl,
             List<String> warnings) throws SceneException {
         switch (lower) {
             case "kd" -> block.kd = colour(key, cur, mtl, warnings, block.kd);
@@ -187,7 +187,7 @@ public final class MtlReader {
      * applied, the others skipped with a warning; the file is the rest of the line, relative to the
      * MTL file's folder.
      */
-    private static MtlMaterial.MapRef map(String key, LineCursor cur, Path mtl, List<String> warnings) throws SceneException {
+    private static MtlMaterial.MapRef map(String key, LineCursor<SceneException> cur, Path mtl, List<String> warnings) throws SceneException {
         double[] scale = {1, 1, 1};
         double[] offset = {0, 0, 0};
         if (!cur.next()) {
@@ -252,7 +252,7 @@ public final class MtlReader {
     }
 
     /** A key with exactly one number. */
-    private static double single(String key, LineCursor cur) throws SceneException {
+    private static double single(String key, LineCursor<SceneException> cur) throws SceneException {
         if (!cur.next()) {
             throw cur.error(LineCursor.quote(key) + " needs 1 number, got 0");
         }
@@ -271,7 +271,7 @@ public final class MtlReader {
      * {@code Kd r g b} or {@code Kd v} (grey). The {@code spectral} and {@code xyz} forms are not
      * supported: a warning, and {@code previous} stays.
      */
-    private static Rgb colour(String key, LineCursor cur, Path mtl, List<String> warnings, Rgb previous)
+    private static Rgb colour(String key, LineCursor<SceneException> cur, Path mtl, List<String> warnings, Rgb previous)
             throws SceneException {
         double[] c = new double[3];
         int n = 0;

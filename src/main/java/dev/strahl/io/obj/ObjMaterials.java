@@ -81,7 +81,7 @@ final class ObjMaterials {
             return;
         }
         List<String> names = new ArrayList<>();
-        LineCursor split = new LineCursor(obj);
+        LineCursor<SceneException> split = new LineCursor<>(obj, ObjReader.ERRORS);
         split.reset(rest, line);
         while (split.next()) {
             names.add(split.token());

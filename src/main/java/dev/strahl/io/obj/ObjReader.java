@@ -1,7 +1,7 @@
 package dev.strahl.io.obj;
 
+import dev.strahl.io.text.InputErrors;
 import dev.strahl.io.text.HeapBudget;
-import dev.strahl.io.text.LongIntMap;
 import dev.strahl.scene.SceneException;
 import dev.strahl.io.text.LineCursor;
 import dev.strahl.io.text.TextLines;
@@ -37,8 +37,9 @@ import java.util.Set;
  * {@code file:line:}; no other exception escapes for any file content.
  */
 public final class ObjReader {
+    /** This reader's errors, as io.text makes them. */
+    static final InputErrors<SceneException> ERRORS = InputErrors.of(SceneException::new, SceneException::new);
 
-    private static final int VERTEX_NONE = -1;
     /**
      * Largest accepted |coordinate| of a position: products of four coordinates (squared lengths
      * of edge cross products) then stay far inside the double range.
@@ -46,8 +47,8 @@ public final class ObjReader {
     static final double MAX_COORDINATE = 1e18;
 
     private final Path obj;
-    private final TextLines lines;
-    private final LineCursor cur;
+    private final TextLines<SceneException> lines;
+    private final LineCursor<SceneException> cur;
     private final List<String> warnings = new ArrayList<>();
     private final Set<String> warnedKeywords = new HashSet<>();
 
@@ -59,16 +60,8 @@ public final class ObjReader {
     private float[] vt = new float[2 * 64];
     private int vtCount;
 
-    // Output vertices: the OBJ position and normal index (or VERTEX_NONE) of each distinct pair
-    private final LongIntMap vertexIds = new LongIntMap();
-    private int[] outPosition = new int[1024];
-    private int[] outNormal = new int[1024];
-    private int[] outTexcoord = new int[1024];
-    private int outCount;
-    private boolean anyNormal, anyTexcoord;
-    /** The distinct (texture coordinate, normal) index pairs, numbered: a face vertex is (position, that number). */
-    private final LongIntMap attributeIds = new LongIntMap();
-    private int attributeCount;
+    /** The mesh's vertices: the distinct index triples of the faces. */
+    private final ObjVertices vertices = new ObjVertices();
 
     // Output triangles (output vertex indices) and the material slot of each (see ObjMaterials)
     private int[] tri = new int[3 * 1024];
@@ -80,17 +73,17 @@ public final class ObjReader {
 
     private final ObjMaterials materials;
 
-    private ObjReader(Path obj, TextLines lines) {
+    private ObjReader(Path obj, TextLines<SceneException> lines) {
         this.obj = obj;
         this.lines = lines;
-        this.cur = new LineCursor(obj);
+        this.cur = new LineCursor<>(obj, ERRORS);
         this.materials = new ObjMaterials(obj, warnings);
     }
 
     /** Reads {@code obj}; material libraries are resolved relative to its directory. */
     public static ObjModel read(Path obj) throws SceneException {
         // A file that is not UTF-8 is read again as Latin-1, its note first among the warnings.
-        return TextLines.read(obj, "OBJ", true, new ArrayList<>(), (lines, notes) -> {
+        return TextLines.read(obj, ERRORS, "OBJ", true, new ArrayList<>(), (lines, notes) -> {
             ObjReader reader = new ObjReader(obj, lines);
             reader.warnings.addAll(notes);
             return reader.parse();
@@ -272,7 +265,7 @@ public final class ObjReader {
      * with the float positions subtracted in double, the test the geometry uses.
      */
     private boolean isDegenerate(int a, int b, int c) {
-        int pa = 3 * outPosition[a], pb = 3 * outPosition[b], pc = 3 * outPosition[c];
+        int pa = 3 * vertices.position(a), pb = 3 * vertices.position(b), pc = 3 * vertices.position(c);
         double e1x = (double) v[pb] - v[pa], e1y = (double) v[pb + 1] - v[pa + 1], e1z = (double) v[pb + 2] - v[pa + 2];
         double e2x = (double) v[pc] - v[pa], e2y = (double) v[pc + 1] - v[pa + 1], e2z = (double) v[pc + 2] - v[pa + 2];
         double cx = e1y * e2z - e1z * e2y, cy = e1z * e2x - e1x * e2z, cz = e1x * e2y - e1y * e2x;
@@ -291,37 +284,18 @@ public final class ObjReader {
             throw cur.error("bad face vertex " + LineCursor.quote(cur.token()) + ": expected v, v/t, v//n or v/t/n");
         }
         int p = index(start, vEnd, vCount, "vertex", "vertex", "vertices");
-        int tex = VERTEX_NONE;
+        int tex = ObjVertices.NONE;
         if (slash1 >= 0) {
             int tEnd = slash2 < 0 ? stop : slash2;
             if (tEnd > slash1 + 1) {
                 tex = index(slash1 + 1, tEnd, vtCount, "texture", "texture coordinate", "texture coordinates");
             }
         }
-        int nrm = VERTEX_NONE;
+        int nrm = ObjVertices.NONE;
         if (slash2 >= 0 && stop > slash2 + 1) {
             nrm = index(slash2 + 1, stop, vnCount, "normal", "normal", "normals");
         }
-        int attribute = attributeIds.putIfAbsent(((tex + 1L) << 32) | (nrm + 1L), attributeCount);
-        if (attribute < 0) {
-            attribute = attributeCount++;
-        }
-        long key = ((long) p << 32) | attribute;
-        int id = vertexIds.putIfAbsent(key, outCount);
-        if (id >= 0) {
-            return id;
-        }
-        if (outCount == outPosition.length) {
-            outPosition = grow(outPosition, outCount + 1);
-            outNormal = grow(outNormal, outCount + 1);
-            outTexcoord = grow(outTexcoord, outCount + 1);
-        }
-        outPosition[outCount] = p;
-        outNormal[outCount] = nrm;
-        outTexcoord[outCount] = tex;
-        anyNormal |= nrm != VERTEX_NONE;
-        anyTexcoord |= tex != VERTEX_NONE;
-        return outCount++;
+        return vertices.vertex(p, tex, nrm);
     }
 
     /**
@@ -383,32 +357,7 @@ public final class ObjReader {
             triangleMaterial[t] = slotMaterial[triSlot[t]];
         }
 
-        float[] positions = new float[outCount * 3];
-        float[] normals = anyNormal ? new float[outCount * 3] : null;
-        for (int i = 0; i < outCount; i++) {
-            System.arraycopy(v, outPosition[i] * 3, positions, i * 3, 3);
-            if (normals == null) {
-                continue;
-            }
-            if (outNormal[i] == VERTEX_NONE) {
-                Arrays.fill(normals, i * 3, i * 3 + 3, Float.NaN);
-            } else {
-                System.arraycopy(vn, outNormal[i] * 3, normals, i * 3, 3);
-            }
-        }
-        float[] uvs = null;
-        if (anyTexcoord) {
-            uvs = new float[outCount * 2];
-            for (int i = 0; i < outCount; i++) {
-                if (outTexcoord[i] == VERTEX_NONE) {
-                    uvs[2 * i] = Float.NaN;
-                    uvs[2 * i + 1] = Float.NaN;
-                } else {
-                    System.arraycopy(vt, outTexcoord[i] * 2, uvs, i * 2, 2);
-                }
-            }
-        }
-        var mesh = new TriangleMesh(positions, Arrays.copyOf(tri, triCount * 3), normals, uvs);
+        var mesh = new TriangleMesh(vertices.positions(v), Arrays.copyOf(tri, triCount * 3), vertices.normals(vn), vertices.uvs(vt));
         return new ObjModel(mesh, triangleMaterial, used, warnings);
     }
 

@@ -1,5 +1,6 @@
 package dev.strahl.io.ply;
 
+import dev.strahl.io.text.InputErrors;
 import dev.strahl.io.text.TextLines;
 import dev.strahl.scene.SceneException;
 import dev.strahl.scene.TriangleMesh;
@@ -33,6 +34,8 @@ import java.util.List;
  * files, indices out of range, non-finite coordinates and malformed values are all refused.
  */
 public final class PlyReader {
+    /** This reader's errors, as io.text makes them. */
+    static final InputErrors<SceneException> ERRORS = InputErrors.of(SceneException::new, SceneException::new);
     /** Buffer size; also the most a header may take. */
     static final int BUFFER = 1 << 20;
     private static final int MAX_ARRAY = Integer.MAX_VALUE - 8;
@@ -70,7 +73,7 @@ public final class PlyReader {
         if (Files.isDirectory(file)) {
             throw new SceneException(file, "is a directory, not a PLY file");
         }
-        dev.strahl.io.image.FileReads.note(file);
+        dev.strahl.files.FileReads.note(file);
         try (FileChannel channel = FileChannel.open(file, StandardOpenOption.READ)) {
             PlyInput in = new PlyInput(channel, BUFFER);
             in.fill(BUFFER);
@@ -78,7 +81,7 @@ public final class PlyReader {
             PlyLayout layout = PlyLayout.of(file, header, in.fileSize() - in.offset());
             return new PlyReader(file, in, layout).body(header, layout);
         } catch (IOException e) {
-            throw TextLines.cannotRead(file, e);
+            throw TextLines.cannotRead(ERRORS, file, e);
         }
     }
 
@@ -170,7 +173,7 @@ public final class PlyReader {
             try {
                 left = in.fileSize() - in.offset();
             } catch (IOException e) {
-                throw TextLines.cannotRead(file, e);
+                throw TextLines.cannotRead(ERRORS, file, e);
             }
             if (n > left) {
                 throw truncated("face", f);

@@ -1,6 +1,6 @@
 package dev.strahl.io.text;
 
-import dev.strahl.io.image.ImageLimits;
+import dev.strahl.codec.ImageLimits;
 import java.util.Locale;
 
 /**

@@ -1,16 +1,20 @@
 package dev.strahl.io.text;
 
-import dev.strahl.scene.SceneException;
+import dev.strahl.codec.Printable;
 import java.nio.file.Path;
 
 /**
  * A hand-written tokeniser over one line (no regex, no split): whitespace-separated tokens
- * up to a {@code #} comment, addressed by {@link #start}/{@link #stop} without copying.
+ * up to a {@code #} comment, addressed by {@link #start}/{@link #stop} without copying. Its
+ * errors are the reader's ({@link InputErrors}).
+ *
+ * @param <E> the exception the reader throws
  */
-public final class LineCursor {
+public final class LineCursor<E extends Exception> {
     private static final int QUOTE_MAX = 40;
 
     private final Path file;
+    private final InputErrors<E> errors;
     public String line = "";
     public int lineNumber;
     public int start;
@@ -18,8 +22,9 @@ public final class LineCursor {
     private int pos;
     private int end;
 
-    public LineCursor(Path file) {
+    public LineCursor(Path file, InputErrors<E> errors) {
         this.file = file;
+        this.errors = errors;
     }
 
     public void reset(String line, int lineNumber) {
@@ -66,7 +71,7 @@ public final class LineCursor {
     }
 
     /** The current token as a number; {@code keyword} names the statement in the message. */
-    public double number(String keyword) throws SceneException {
+    public double number(String keyword) throws E {
         double value = FastDecimal.parse(line, start, stop);
         if (!Double.isNaN(value)) {
             return value;
@@ -78,8 +83,8 @@ public final class LineCursor {
         }
     }
 
-    public SceneException error(String message) {
-        return new SceneException(file, lineNumber, message);
+    public E error(String message) {
+        return errors.at(file, lineNumber, message);
     }
 
     static boolean isSpace(char c) {
@@ -91,7 +96,8 @@ public final class LineCursor {
         return "'" + abbreviate(s) + "'";
     }
 
+    /** At most {@code QUOTE_MAX} characters of {@code s}, invisible ones (control characters of a binary file) escaped. */
     public static String abbreviate(String s) {
-        return s.length() <= QUOTE_MAX ? s : s.substring(0, QUOTE_MAX) + "...";
+        return Printable.line(s.length() <= QUOTE_MAX ? s : s.substring(0, QUOTE_MAX)) + (s.length() <= QUOTE_MAX ? "" : "...");
     }
 }

@@ -1,6 +1,5 @@
 package dev.strahl.io.text;
 
-import dev.strahl.scene.SceneException;
 import java.io.BufferedInputStream;
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -19,8 +18,8 @@ import java.util.List;
 
 /**
  * The lines of a text file, with the checks both OBJ and MTL need: a file that is not text (NUL
- * bytes near the start) or cannot be read is a {@link SceneException} at the line where that
- * shows. A leading byte order mark is dropped.
+ * bytes near the start) or cannot be read is the reader's error ({@link InputErrors}) at the line
+ * where that shows. A leading byte order mark is dropped.
  *
  * <p><b>Encodings.</b> A file is read as UTF-8; {@link #open} refuses it at the first byte
  * sequence that is not UTF-8. Old exporters write names and comments in Latin-1 or Windows-1252, so the
@@ -28,11 +27,14 @@ import java.util.List;
  * with one note), where a NUL byte or another control character (binary content) on any line is
  * still refused at that line. Names that must match across files ({@code usemtl} and
  * {@code newmtl}) are compared by their bytes, whatever each file's encoding: {@link #byteKey}.
+ *
+ * @param <E> the exception the reader throws
  */
-public final class TextLines implements AutoCloseable {
+public final class TextLines<E extends Exception> implements AutoCloseable {
     private static final int HEAD = 1024;
 
     private final Path file;
+    private final InputErrors<E> errors;
     private final String kind;
     private final boolean continuation;
     private final BufferedReader reader;
@@ -41,8 +43,9 @@ public final class TextLines implements AutoCloseable {
     private int physicalLine;
     private int lineNumber;
 
-    private TextLines(Path file, String kind, boolean continuation, BufferedReader reader, boolean latin1) {
+    private TextLines(Path file, InputErrors<E> errors, String kind, boolean continuation, BufferedReader reader, boolean latin1) {
         this.file = file;
+        this.errors = errors;
         this.kind = kind;
         this.continuation = continuation;
         this.reader = reader;
@@ -51,9 +54,9 @@ public final class TextLines implements AutoCloseable {
 
     /** What a reader does with the lines of one file. */
     @FunctionalInterface
-    public interface Parse<T> {
+    public interface Parse<T, E extends Exception> {
         /** Reads the file from {@code lines}, appending its warnings to {@code warnings}. */
-        T apply(TextLines lines, List<String> warnings) throws SceneException;
+        T apply(TextLines<E> lines, List<String> warnings) throws E;
     }
 
     /**
@@ -61,11 +64,11 @@ public final class TextLines implements AutoCloseable {
      * start as Latin-1 with the note "FILE: not UTF-8 (first at line N): read as Latin-1" before
      * the warnings of that reading (those of the failed UTF-8 reading are dropped).
      */
-    public static <T> T read(Path file, String kind, boolean continuation, List<String> warnings, Parse<T> parse)
-            throws SceneException {
+    public static <T, E extends Exception> T read(Path file, InputErrors<E> errors, String kind, boolean continuation, List<String> warnings,
+                                                  Parse<T, E> parse) throws E {
         List<String> utf8Warnings = new ArrayList<>();
         int line;
-        try (TextLines lines = open(file, kind, continuation, false)) {
+        try (TextLines<E> lines = open(file, errors, kind, continuation, false)) {
             lines.signalNotUtf8 = true;
             T result = parse.apply(lines, utf8Warnings);
             warnings.addAll(utf8Warnings);
@@ -77,7 +80,7 @@ public final class TextLines implements AutoCloseable {
             line = e.line;
         }
         warnings.add(file + ": not UTF-8 (first at line " + line + "): read as Latin-1");
-        try (TextLines lines = open(file, kind, continuation, true)) {
+        try (TextLines<E> lines = open(file, errors, kind, continuation, true)) {
             return parse.apply(lines, warnings);
         }
     }
@@ -88,10 +91,10 @@ public final class TextLines implements AutoCloseable {
      */
     private static final class NotUtf8 extends RuntimeException {
         private static final long serialVersionUID = 1L;
-        final transient TextLines source;
+        final transient TextLines<?> source;
         final int line;
 
-        NotUtf8(TextLines source, int line) {
+        NotUtf8(TextLines<?> source, int line) {
             super(null, null, false, false);
             this.source = source;
             this.line = line;
@@ -102,25 +105,26 @@ public final class TextLines implements AutoCloseable {
      * Opens {@code file}; {@code kind} ("OBJ", "MTL") is used in messages, {@code continuation}
      * joins a line ending in a backslash with the next one.
      */
-    public static TextLines open(Path file, String kind, boolean continuation) throws SceneException {
-        return open(file, kind, continuation, false);
+    public static <E extends Exception> TextLines<E> open(Path file, InputErrors<E> errors, String kind, boolean continuation) throws E {
+        return open(file, errors, kind, continuation, false);
     }
 
-    /** As {@link #open(Path, String, boolean)}, as Latin-1 (one character per byte) if {@code latin1}. */
-    private static TextLines open(Path file, String kind, boolean continuation, boolean latin1) throws SceneException {
+    /** As {@link #open(Path, InputErrors, String, boolean)}, as Latin-1 (one character per byte) if {@code latin1}. */
+    private static <E extends Exception> TextLines<E> open(Path file, InputErrors<E> errors, String kind, boolean continuation, boolean latin1)
+            throws E {
         if (Files.isDirectory(file)) {
-            throw new SceneException(file, "is a directory, not an " + kind + " file");
+            throw errors.about(file, "is a directory, not an " + kind + " file", null);
         }
         InputStream in;
         try {
-            dev.strahl.io.image.FileReads.note(file);
+            dev.strahl.files.FileReads.note(file);
             in = Files.newInputStream(file);
         } catch (NoSuchFileException e) {
-            throw new SceneException(file, "file not found", e);
+            throw errors.about(file, "file not found", e);
         } catch (AccessDeniedException e) {
-            throw new SceneException(file, "cannot read: permission denied", e);
+            throw errors.about(file, "cannot read: permission denied", e);
         } catch (IOException | SecurityException e) {
-            throw new SceneException(file, "cannot read: " + describe(e), e);
+            throw errors.about(file, "cannot read: " + describe(e), e);
         }
         try {
             var buffered = new BufferedInputStream(in, 1 << 16);
@@ -131,25 +135,23 @@ public final class TextLines implements AutoCloseable {
                 if (head[i] == '\n') {
                     line++;
                 } else if (head[i] == 0) {
-                    throw notText(file, kind, line, "NUL byte");
+                    closeQuietly(in);
+                    throw notText(errors, file, kind, line, "NUL byte");
                 }
             }
             CharsetDecoder decoder = (latin1 ? StandardCharsets.ISO_8859_1 : StandardCharsets.UTF_8).newDecoder()
                     .onMalformedInput(CodingErrorAction.REPORT)
                     .onUnmappableCharacter(CodingErrorAction.REPORT);
             var reader = new BufferedReader(new InputStreamReader(buffered, decoder), 1 << 16);
-            return new TextLines(file, kind, continuation, reader, latin1);
+            return new TextLines<>(file, errors, kind, continuation, reader, latin1);
         } catch (IOException e) {
             closeQuietly(in);
-            throw new SceneException(file, "cannot read: " + describe(e), e);
-        } catch (SceneException e) {
-            closeQuietly(in);
-            throw e;
+            throw errors.about(file, "cannot read: " + describe(e), e);
         }
     }
 
     /** The next logical line, or null at the end of the file. */
-    public String next() throws SceneException {
+    public String next() throws E {
         String line = readPhysical();
         if (line == null) {
             return null;
@@ -205,7 +207,7 @@ public final class TextLines implements AutoCloseable {
         closeQuietly(reader);
     }
 
-    private String readPhysical() throws SceneException {
+    private String readPhysical() throws E {
         try {
             String line = reader.readLine();
             if (line != null) {
@@ -220,9 +222,9 @@ public final class TextLines implements AutoCloseable {
             if (signalNotUtf8) {
                 throw new NotUtf8(this, line);
             }
-            throw notText(file, kind, line, "invalid UTF-8");
+            throw notText(errors, file, kind, line, "invalid UTF-8");
         } catch (IOException e) {
-            throw new SceneException(file, "cannot read after line " + physicalLine + ": " + describe(e), e);
+            throw errors.about(file, "cannot read after line " + physicalLine + ": " + describe(e), e);
         }
     }
 
@@ -230,11 +232,11 @@ public final class TextLines implements AutoCloseable {
      * A file that is not UTF-8 is only read as Latin-1 if it is text: no NUL and no control
      * character other than tab, vertical tab, form feed and the DOS end-of-file mark (Ctrl-Z).
      */
-    private void checkText(String line) throws SceneException {
+    private void checkText(String line) throws E {
         for (int i = 0; i < line.length(); i++) {
             char c = line.charAt(i);
             if (c < 0x20 && c != '\t' && c != 0x0B && c != '\f' && c != 0x1A) {
-                throw notText(file, kind, physicalLine, c == 0 ? "NUL byte" : "binary content");
+                throw notText(errors, file, kind, physicalLine, c == 0 ? "NUL byte" : "binary content");
             }
         }
     }
@@ -264,8 +266,8 @@ public final class TextLines implements AutoCloseable {
         s.setLength(n);
     }
 
-    private static SceneException notText(Path file, String kind, int line, String why) {
-        return new SceneException(file, line, "not a text " + kind + " file (" + why + ")");
+    private static <E extends Exception> E notText(InputErrors<E> errors, Path file, String kind, int line, String why) {
+        return errors.at(file, line, "not a text " + kind + " file (" + why + ")");
     }
 
     /**
@@ -325,13 +327,13 @@ public final class TextLines implements AutoCloseable {
     }
 
     /** The one-line error for a file that cannot be read. */
-    public static SceneException cannotRead(Path file, IOException e) {
+    public static <E extends Exception> E cannotRead(InputErrors<E> errors, Path file, IOException e) {
         if (e instanceof NoSuchFileException) {
-            return new SceneException(file, "file not found");
+            return errors.about(file, "file not found", null);
         }
         if (e instanceof AccessDeniedException) {
-            return new SceneException(file, "permission denied");
+            return errors.about(file, "permission denied", null);
         }
-        return new SceneException(file, "cannot read: " + e.getMessage(), e);
+        return errors.about(file, "cannot read: " + e.getMessage(), e);
     }
 }

@@ -3,8 +3,8 @@ package dev.strahl.denoise.net;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import dev.strahl.io.exr.ExrReader;
-import dev.strahl.io.image.ChannelImage;
+import dev.strahl.codec.exr.ExrReader;
+import dev.strahl.codec.ChannelImage;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Locale;

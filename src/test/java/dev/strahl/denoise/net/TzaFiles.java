@@ -1,6 +1,6 @@
 package dev.strahl.denoise.net;
 
-import dev.strahl.io.exr.Half;
+import dev.strahl.codec.exr.Half;
 import java.io.ByteArrayOutputStream;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;

@@ -8,12 +8,12 @@ import static org.assertj.core.api.Assertions.within;
 import dev.strahl.image.Rgb;
 import dev.strahl.io.SceneLoader;
 import dev.strahl.material.Principled;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.SceneException;
 import dev.strahl.texture.ImageTexture;
-import dev.strahl.texture.Srgb;
-import dev.strahl.texture.Texture;
+import dev.strahl.color.Srgb;
+import dev.strahl.texture.TextureLookup;
 import dev.strahl.texture.UvTransform;
 import dev.strahl.world.World;
 import java.awt.image.BufferedImage;
@@ -71,20 +71,20 @@ class GltfFactorsTest {
     }
 
     /** The colour a texture gives at glTF's texel centre {@code i} (strahl's v = 1 − v). */
-    static MutableRgb colourAt(Texture t, int i) {
+    static MutableRgb colourAt(TextureLookup t, int i) {
         MutableRgb c = new MutableRgb();
         t.rgb(CENTRES[i][0], 1 - CENTRES[i][1], c);
         return c;
     }
 
-    static double valueAt(Texture t, int i) {
+    static double valueAt(TextureLookup t, int i) {
         return t.value(CENTRES[i][0], 1 - CENTRES[i][1]);
     }
 
     @Test
     void baseColorIsFactorTimesDecodedTexel() throws Exception {
         Scene scene = load(map("pbrMetallicRoughness", map("baseColorTexture", map("index", 0), "baseColorFactor", List.of(0.5, 0.8, 0.25, 1))));
-        Texture base = GltfMaterialsTest.principled(scene).baseColor();
+        TextureLookup base = GltfMaterialsTest.principled(scene).baseColor();
         double[] f = {0.5, 0.8, 0.25};
         for (int i = 0; i < 4; i++) {
             assertFactorTimesDecodedTexel(colourAt(base, i), 1, f, i);
@@ -121,7 +121,7 @@ class GltfFactorsTest {
     @Test
     void transmissionIsFactorTimesRed() throws Exception {
         Scene scene = load(map("extensions", map("KHR_materials_transmission", map("transmissionTexture", map("index", 0), "transmissionFactor", 0.5))));
-        Texture t = GltfMaterialsTest.principled(scene).transmission();
+        TextureLookup t = GltfMaterialsTest.principled(scene).transmission();
         for (int i = 0; i < 4; i++) {
             assertThat(valueAt(t, i)).as("texel %d", i).isCloseTo(0.5 * linear(i, 0), within(1e-9));
         }

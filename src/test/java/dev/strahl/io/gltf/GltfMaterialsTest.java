@@ -7,7 +7,7 @@ import static org.assertj.core.api.Assertions.within;
 import dev.strahl.image.Rgb;
 import dev.strahl.io.SceneLoader;
 import dev.strahl.material.Principled;
-import dev.strahl.math.MutableRgb;
+import dev.strahl.color.MutableRgb;
 import dev.strahl.scene.Material;
 import dev.strahl.scene.Scene;
 import dev.strahl.texture.ImageTexture;
@@ -89,6 +89,32 @@ class GltfMaterialsTest {
             p.eval(uv, new org.joml.Vector3d(dirs[0], dirs[1], dirs[2]), new org.joml.Vector3d(dirs[3], dirs[4], dirs[5]), f);
             assertThat(f.r).as("f = albedo/π for every pair of directions").isCloseTo(0.6 / Math.PI, within(1e-9));
         }
+    }
+
+    /** Embedded images go through a temporary file (textures are files), deleted once read; kept while a cluster render records. */
+    @Test
+    void embeddedImagesLeaveNoTemporaryFileBehind() throws Exception {
+        GltfWriter w = textured(map("pbrMetallicRoughness", map("baseColorTexture", map("index", 0)), "name", "img"));
+        w.add("images", map("bufferView", w.view(redOverGreen(), null), "mimeType", "image/png"));
+        w.add("textures", map("source", 0));
+        Path glb = w.writeGlb(dir.resolve("tex.glb"));
+        Path tmp = Path.of(System.getProperty("java.io.tmpdir"));
+        java.util.function.Supplier<List<Path>> folders = () -> {
+            try (var list = Files.list(tmp)) {
+                return list.filter(f -> f.getFileName().toString().startsWith("strahl-gltf")).toList();
+            } catch (java.io.IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+        };
+        List<Path> before = folders.get();
+        SceneLoader.load(glb);
+        assertThat(folders.get()).as("temporary folders").isEqualTo(before);
+        java.util.Set<Path> recorded = new java.util.TreeSet<>();
+        dev.strahl.files.FileReads.recording(recorded, () -> SceneLoader.load(glb));
+        Path image = recorded.stream().filter(f -> f.getFileName().toString().equals("image0")).findFirst().orElseThrow();
+        assertThat(image).as("kept for the cluster to ship").isRegularFile();
+        Files.delete(image);
+        Files.delete(image.getParent());
     }
 
     @Test

@@ -275,8 +275,8 @@ class GltfReaderTest {
         assertThat(scene.camera().lookAt().distance(new Vector3d(1, 0, 4))).isLessThan(1e-9);
         assertThat(scene.notes()).anyMatch(n -> n.contains("orthographic camera cameras[0] is not supported"));
         RenderSettings s = SceneLoader.settings(file, RenderSettings.defaults());
-        assertThat(s.width()).isEqualTo(512);
-        assertThat(s.height()).isEqualTo(256);
+        assertThat(s.output().width()).isEqualTo(512);
+        assertThat(s.output().height()).isEqualTo(256);
     }
 
     @Test

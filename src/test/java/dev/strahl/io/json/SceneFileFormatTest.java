@@ -134,8 +134,8 @@ class SceneFileFormatTest {
         assertThat(SceneSettings.NONE.applyTo(RenderSettings.defaults())).isEqualTo(RenderSettings.defaults());
         RenderSettings halfGiven = new SceneSettings(100, null, null, null, null, null, null, null, null, null)
                 .applyTo(RenderSettings.defaults());
-        assertThat(halfGiven.width()).isEqualTo(100);
-        assertThat(halfGiven.height()).isEqualTo(512);
+        assertThat(halfGiven.output().width()).isEqualTo(100);
+        assertThat(halfGiven.output().height()).isEqualTo(512);
         assertThat(file.applyTo(RenderSettings.defaults(), java.util.EnumSet.allOf(SceneSettings.Setting.class)))
                 .as("every setting given on the command line").isEqualTo(RenderSettings.defaults());
     }
@@ -155,13 +155,13 @@ class SceneFileFormatTest {
         assertThat(s.integrator()).isEqualTo(IntegratorKind.PHOTON);
         assertThat(s.photons()).as("not given").isNull();
         assertThat(s.photonRadius()).isEqualTo(1.0);
-        assertThat(s.applyTo(RenderSettings.defaults()).photons())
+        assertThat(s.applyTo(RenderSettings.defaults()).transport().photons())
                 .isEqualTo(new dev.strahl.render.PhotonParameters(dev.strahl.render.PhotonParameters.DEFAULT_PHOTONS, 1.0));
         SceneSettings limits = JsonSceneReader.parse(write("q.json", "{ \"integrator\": { \"photons\": 10000000, \"photonRadius\": 0 }, "
                 + shapes)).settings();
         assertThat(limits.photons()).isEqualTo(10_000_000);
         assertThat(limits.photonRadius()).isEqualTo(0.0);
-        assertThat(limits.applyTo(RenderSettings.defaults()).photons().photonsPerIteration()).isEqualTo(10_000_000);
+        assertThat(limits.applyTo(RenderSettings.defaults()).transport().photons().photonsPerIteration()).isEqualTo(10_000_000);
     }
 
     @Test

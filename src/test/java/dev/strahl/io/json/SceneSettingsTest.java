@@ -37,17 +37,17 @@ class SceneSettingsTest {
 
     /** Each setting's value in a RenderSettings. */
     static final Map<Setting, Function<RenderSettings, Object>> VALUE = new EnumMap<>(Map.ofEntries(
-            Map.entry(Setting.AOVS, RenderSettings::aovs),
-            Map.entry(Setting.WIDTH, RenderSettings::width),
-            Map.entry(Setting.HEIGHT, RenderSettings::height),
-            Map.entry(Setting.SAMPLES_PER_PIXEL, RenderSettings::samplesPerPixel),
-            Map.entry(Setting.MAX_DEPTH, RenderSettings::maxDepth),
-            Map.entry(Setting.SEED, RenderSettings::seed),
-            Map.entry(Setting.INTEGRATOR, RenderSettings::integrator),
-            Map.entry(Setting.LIGHT_SAMPLES, RenderSettings::lightSamples),
-            Map.entry(Setting.HEMISPHERE, RenderSettings::hemisphere),
-            Map.entry(Setting.PHOTONS, r -> r.photons().photonsPerIteration()),
-            Map.entry(Setting.PHOTON_RADIUS, r -> r.photons().initialRadius())));
+            Map.entry(Setting.AOVS, r -> r.output().aovs()),
+            Map.entry(Setting.WIDTH, r -> r.output().width()),
+            Map.entry(Setting.HEIGHT, r -> r.output().height()),
+            Map.entry(Setting.SAMPLES_PER_PIXEL, r -> r.sampling().samplesPerPixel()),
+            Map.entry(Setting.MAX_DEPTH, r -> r.transport().maxDepth()),
+            Map.entry(Setting.SEED, r -> r.sampling().seed()),
+            Map.entry(Setting.INTEGRATOR, r -> r.transport().integrator()),
+            Map.entry(Setting.LIGHT_SAMPLES, r -> r.transport().lightSamples()),
+            Map.entry(Setting.HEMISPHERE, r -> r.transport().hemisphere()),
+            Map.entry(Setting.PHOTONS, r -> r.transport().photons().photonsPerIteration()),
+            Map.entry(Setting.PHOTON_RADIUS, r -> r.transport().photons().initialRadius())));
 
     @Test
     void withNothingGivenTheFileReplacesEverySettingItHas() throws Exception {
@@ -78,17 +78,17 @@ class SceneSettingsTest {
                     .isNotEqualTo(VALUE.get(given).apply(COMMAND_LINE));
         }
         RenderSettings widthOnly = EVERY_KEY.applyTo(COMMAND_LINE, Set.of(Setting.WIDTH));
-        assertThat(new int[] {widthOnly.width(), widthOnly.height()}).as("the given width with the file's height").containsExactly(200, 160);
+        assertThat(new int[] {widthOnly.output().width(), widthOnly.output().height()}).as("the given width with the file's height").containsExactly(200, 160);
     }
 
     @Test
     void settingsAFileCannotGiveAreKept() throws Exception {
         for (Set<Setting> given : java.util.List.of(Set.<Setting>of(), EnumSet.allOf(Setting.class))) {
             RenderSettings s = EVERY_KEY.applyTo(COMMAND_LINE, given);
-            assertThat(s.threads()).isEqualTo(3);
-            assertThat(s.cullBackFaces()).isTrue();
-            assertThat(s.samplesPerPass()).isEqualTo(2);
-            assertThat(s.timeLimit()).isEqualTo(Duration.ofSeconds(7));
+            assertThat(s.execution().threads()).isEqualTo(3);
+            assertThat(s.transport().cullBackFaces()).isTrue();
+            assertThat(s.execution().samplesPerPass()).isEqualTo(2);
+            assertThat(s.execution().timeLimit()).isEqualTo(Duration.ofSeconds(7));
         }
     }
 
@@ -96,10 +96,10 @@ class SceneSettingsTest {
     void thePhotonKeysApplyLikeTheOthers() throws Exception {
         SceneSettings photonOnly = new SceneSettings(null, null, null, null, null, IntegratorKind.PHOTON, null, null, 30_000, null);
         RenderSettings s = photonOnly.applyTo(COMMAND_LINE, Set.of());
-        assertThat(s.integrator()).isEqualTo(IntegratorKind.PHOTON);
-        assertThat(s.photons().photonsPerIteration()).isEqualTo(30_000);
-        assertThat(s.photons().initialRadius()).as("the file says nothing: the command line's").isEqualTo(0.25);
-        assertThat(photonOnly.applyTo(COMMAND_LINE, Set.of(Setting.PHOTONS)).photons().photonsPerIteration()).as("--photons given").isEqualTo(5000);
+        assertThat(s.transport().integrator()).isEqualTo(IntegratorKind.PHOTON);
+        assertThat(s.transport().photons().photonsPerIteration()).isEqualTo(30_000);
+        assertThat(s.transport().photons().initialRadius()).as("the file says nothing: the command line's").isEqualTo(0.25);
+        assertThat(photonOnly.applyTo(COMMAND_LINE, Set.of(Setting.PHOTONS)).transport().photons().photonsPerIteration()).as("--photons given").isEqualTo(5000);
     }
 
     /**
@@ -113,14 +113,14 @@ class SceneSettingsTest {
         assertThat(gltf.aspectRatio()).isEqualTo(1.6);
         RenderSettings base = RenderSettings.defaults();
         RenderSettings none = gltf.applyTo(base, Set.of());
-        assertThat(new int[] {none.width(), none.height()}).containsExactly(512, 320);
-        RenderSettings width = gltf.applyTo(base.withSize(320, base.height()), Set.of(Setting.WIDTH));
-        assertThat(new int[] {width.width(), width.height()}).containsExactly(320, 200);
-        RenderSettings height = gltf.applyTo(base.withSize(base.width(), 100), Set.of(Setting.HEIGHT));
-        assertThat(new int[] {height.width(), height.height()}).containsExactly(160, 100);
+        assertThat(new int[] {none.output().width(), none.output().height()}).containsExactly(512, 320);
+        RenderSettings width = gltf.applyTo(base.withSize(320, base.output().height()), Set.of(Setting.WIDTH));
+        assertThat(new int[] {width.output().width(), width.output().height()}).containsExactly(320, 200);
+        RenderSettings height = gltf.applyTo(base.withSize(base.output().width(), 100), Set.of(Setting.HEIGHT));
+        assertThat(new int[] {height.output().width(), height.output().height()}).containsExactly(160, 100);
         RenderSettings both = gltf.applyTo(base.withSize(300, 300), Set.of(Setting.WIDTH, Setting.HEIGHT));
-        assertThat(new int[] {both.width(), both.height()}).containsExactly(300, 300);
-        RenderSettings json = EVERY_KEY.applyTo(base.withSize(100, base.height()), Set.of(Setting.WIDTH));
-        assertThat(json.height()).as("a scene file's film: each side on its own").isEqualTo(160);
+        assertThat(new int[] {both.output().width(), both.output().height()}).containsExactly(300, 300);
+        RenderSettings json = EVERY_KEY.applyTo(base.withSize(100, base.output().height()), Set.of(Setting.WIDTH));
+        assertThat(json.output().height()).as("a scene file's film: each side on its own").isEqualTo(160);
     }
 }

@@ -47,8 +47,8 @@ public final class Embed {
         RenderSettings settings = RenderSettings.defaults().withSize(160, 120).withSamplesPerPixel(32).withSeed(1);
         RenderListener progress = new RenderListener() {
             @Override
-            public void passFinished(Pass pass, Image image) {
-                System.out.printf("pass %d: %d spp, %.0f samples/s%n", pass.number(), pass.samplesPerPixel(), pass.samplesPerSecond());
+            public void passFinished(RenderStats soFar, Image image) {
+                System.out.printf("pass %d: %d spp, %.0f samples/s%n", soFar.passes(), soFar.samplesPerPixel(), soFar.samplesPerSecond());
             }
         };
         try (RenderJob job = RenderJob.start(scene, settings, progress)) {

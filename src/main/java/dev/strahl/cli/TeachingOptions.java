@@ -1,0 +1,33 @@
+package dev.strahl.cli;
+
+import dev.strahl.render.RenderSettings;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code render}'s teaching options (docs/experiments.md): what a first ray tracer did, to measure
+ * what strahl does instead. {@code --accel} and {@code --schedule} change no bit of the image,
+ * {@code --shadows off} does.
+ */
+final class TeachingOptions extends ShadowsOption {
+
+    @Option(names = "--accel", defaultValue = "bvh", paramLabel = "bvh|none", order = 1,
+            description = "Teaching option: none tests every ray against every primitive (no BVH), to measure what the BVH buys; "
+                    + "same image, many times slower (default: ${DEFAULT-VALUE}).")
+    Accel accel;
+
+    @Option(names = "--schedule", defaultValue = "tiles", paramLabel = "tiles|stripes", order = 2,
+            description = "Teaching option: stripes gives each of n threads one horizontal stripe of the image instead of "
+                    + "32x32 tiles taken by whichever thread is free; same image, threads wait more (default: ${DEFAULT-VALUE}).")
+    Schedule schedule;
+
+    /** The values of --accel. */
+    enum Accel { BVH, NONE }
+
+    /** The values of --schedule. */
+    enum Schedule { TILES, STRIPES }
+
+    @Override
+    RenderSettings applyTo(RenderSettings base) {
+        return super.applyTo(base).withBruteForce(accel == Accel.NONE).withStripes(schedule == Schedule.STRIPES);
+    }
+}

@@ -1,0 +1,53 @@
+package dev.strahl.render;
+
+import java.time.Duration;
+import java.util.Set;
+
+/**
+ * Every value of a {@link RenderSettings} as a mutable field, for its {@code with...} methods: each
+ * sets a field or two, {@link #settings()} rebuilds the four parts (which check the values). The
+ * values are listed here once, part by part.
+ */
+final class SettingsFields {
+    int width, height;
+    Set<Aov> aovs;
+    int samplesPerPixel;
+    long seed;
+    IntegratorKind integrator;
+    int maxDepth, lightSamples;
+    HemisphereSampling hemisphere;
+    boolean cullBackFaces, shadows;
+    PhotonParameters photons;
+    int threads, samplesPerPass;
+    Duration timeLimit;
+    boolean bruteForce, stripes;
+
+    SettingsFields(RenderSettings s) {
+        RenderSettings.Output o = s.output();
+        width = o.width();
+        height = o.height();
+        aovs = o.aovs();
+        samplesPerPixel = s.sampling().samplesPerPixel();
+        seed = s.sampling().seed();
+        RenderSettings.Transport t = s.transport();
+        integrator = t.integrator();
+        maxDepth = t.maxDepth();
+        lightSamples = t.lightSamples();
+        hemisphere = t.hemisphere();
+        cullBackFaces = t.cullBackFaces();
+        shadows = t.shadows();
+        photons = t.photons();
+        RenderSettings.Execution x = s.execution();
+        threads = x.threads();
+        samplesPerPass = x.samplesPerPass();
+        timeLimit = x.timeLimit();
+        bruteForce = x.bruteForce();
+        stripes = x.stripes();
+    }
+
+    RenderSettings settings() {
+        return new RenderSettings(new RenderSettings.Output(width, height, aovs), new RenderSettings.Sampling(samplesPerPixel, seed),
+                new RenderSettings.Transport(integrator, maxDepth, lightSamples, hemisphere, cullBackFaces, shadows, photons),
+                new RenderSettings.Execution(threads, samplesPerPass, timeLimit, bruteForce, stripes));
+    }
+}
