@@ -1,5 +1,6 @@
 package dev.strahl.denoise.net;
 
+import dev.strahl.codec.Printable;
 import dev.strahl.codec.exr.Half;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
@@ -16,9 +17,12 @@ import java.util.Map;
  * ({@code f} float32 or {@code h} float16) and the offset of its data (uint64). Tensors are read
  * into float arrays (halves converted exactly).
  *
- * <p>A damaged file is refused with one line naming it and what is wrong; nothing is allocated
- * before the bytes it describes are known to be there (a tensor's size is checked against the
- * file before its array is made).
+ * <p>A damaged file is refused with one line naming it, the tensor and what is wrong (a name from
+ * the file quoted printably and cut short, as {@link Printable} does); nothing is allocated before
+ * the bytes it describes are known to be there: a tensor's size is checked against the file before
+ * its array is made, and all tensors together may claim no more bytes than the file has (in a real
+ * archive they do not overlap), so a small hostile file cannot make the reader allocate much more
+ * than twice its own size.
  */
 final class TensorArchive {
     static final int MAGIC = 0x41D7;
@@ -76,6 +80,8 @@ final class TensorArchive {
     private static final class Parser {
         private final String source;
         private final ByteBuffer buf;
+        /** Data bytes of the tensors read so far. */
+        private long claimed;
 
         Parser(String source, byte[] bytes) {
             this.source = source;
@@ -100,6 +106,7 @@ final class TensorArchive {
                 throw fail("the table claims " + count + " tensors, more than its " + (buf.capacity() - table - 4) + " bytes can hold");
             }
             Map<String, Tensor> tensors = new LinkedHashMap<>();
+            claimed = 0;
             int p = (int) table + 4;
             for (long i = 0; i < count; i++) {
                 p = entry(p, i, tensors);
@@ -116,7 +123,8 @@ final class TensorArchive {
             byte[] nameBytes = new byte[nameLength];
             buf.get(p + 2, nameBytes);
             String name = new String(nameBytes, StandardCharsets.US_ASCII);
-            what = "the entry of tensor '" + name + "'";
+            String quoted = Printable.quote(name);
+            what = "the entry of tensor " + quoted;
             p += 2 + nameLength;
             int rank = buf.get(p) & 0xff;
             p++;
@@ -126,7 +134,7 @@ final class TensorArchive {
             for (int d = 0; d < rank; d++) {
                 long dim = buf.getInt(p + 4 * d) & 0xffffffffL;
                 if (dim > Integer.MAX_VALUE) {
-                    throw fail("tensor '" + name + "' has dimension " + dim);
+                    throw fail("tensor " + quoted + " has dimension " + dim);
                 }
                 dims[d] = (int) dim;
                 elements = dim == 0 || elements <= Long.MAX_VALUE / 16 / dim ? elements * dim : Long.MAX_VALUE / 16;
@@ -137,22 +145,27 @@ final class TensorArchive {
             String layout = new String(layoutBytes, StandardCharsets.US_ASCII);
             p += rank;
             if (!layout.equals("x") && !layout.equals("oihw")) {
-                throw fail("tensor '" + name + "' has layout '" + printable(layout) + "' (expected x or oihw)");
+                throw fail("tensor " + quoted + " has layout " + Printable.quote(layout) + " (expected x or oihw)");
             }
             char type = (char) (buf.get(p) & 0xff);
             int size = type == 'f' ? 4 : type == 'h' ? 2 : 0;
             if (size == 0) {
-                throw fail("tensor '" + name + "' has data type '" + printable(String.valueOf(type)) + "' (expected f or h)");
+                throw fail("tensor " + quoted + " has data type " + Printable.quote(String.valueOf(type)) + " (expected f or h)");
             }
-            long data = offset(buf.getLong(p + 1), "the data of tensor '" + name + "'");
+            long data = offset(buf.getLong(p + 1), "the data of tensor " + quoted);
             p += 9;
             long bytes = elements * size;
             if (bytes > buf.capacity() - data) {
-                throw fail("truncated: tensor '" + name + "' " + java.util.Arrays.toString(dims) + " needs " + bytes + " bytes at offset "
+                throw fail("truncated: tensor " + quoted + " " + java.util.Arrays.toString(dims) + " needs " + bytes + " bytes at offset "
                         + data + ", the file has " + buf.capacity());
             }
+            claimed += bytes;
+            if (claimed > buf.capacity()) {
+                throw fail("tensor " + quoted + " makes the tensors' data " + claimed + " bytes, more than the file's " + buf.capacity()
+                        + " (tensors overlap)");
+            }
             if (tensors.containsKey(name)) {
-                throw fail("tensor '" + name + "' appears twice");
+                throw fail("tensor " + quoted + " appears twice");
             }
             tensors.put(name, new Tensor(name, dims, layout, values((int) data, (int) elements, type)));
             return p;
@@ -180,15 +193,7 @@ final class TensorArchive {
         }
 
         private TensorArchiveException fail(String what) {
-            return new TensorArchiveException(source + ": " + what);
-        }
-
-        private static String printable(String s) {
-            StringBuilder b = new StringBuilder();
-            for (char c : s.toCharArray()) {
-                b.append(c >= 0x20 && c < 0x7f ? String.valueOf(c) : String.format("\\x%02x", (int) c));
-            }
-            return b.toString();
+            return new TensorArchiveException(Printable.path(source) + ": " + what);
         }
     }
 }

@@ -103,6 +103,27 @@ class TensorArchiveTest {
     }
 
     @Test
+    void tensorsThatOverlapAreRefusedBeforeTheyAreAllocated() {
+        byte[] two = TzaFiles.write(List.of(new TzaFiles.Entry("a", new int[] {1}, 'f', new float[1]),
+                new TzaFiles.Entry("b", new int[] {1}, 'f', new float[1])));
+        int t = table(two);
+        int whole = (two.length - 12) / 4;            // floats from the header's end to the file's: each alone fits
+        byte[] b = two;
+        for (int entry = t + 4; entry < two.length; entry += 18) {      // name length, name, rank, one dim, layout, type, offset
+            b = withLong(withInt(b, entry + 4, whole), entry + 10, 12);
+        }
+        refused(b, "tensor 'b' makes the tensors' data " + 8L * whole + " bytes, more than the file's " + two.length + " (tensors overlap)");
+    }
+
+    @Test
+    void aHostileNameIsQuotedPrintablyAndShort() {
+        String name = "\u001b[2J" + "x".repeat(100);
+        byte[] file = TzaFiles.write(List.of(new TzaFiles.Entry(name, new int[] {1}, 'f', new float[1])));
+        int type = table(file) + 4 + 2 + name.length() + 1 + 4 + 1;
+        refused(with(file, type, (byte) '\n'), "tensor '\\x1b[2J" + "x".repeat(28) + "...' has data type '\\n' (expected f or h)");
+    }
+
+    @Test
     void aNetworkThatDoesNotFitIsRefusedByName() throws IOException {
         TensorArchive hdr = TensorArchive.read("rt_hdr.tza", resource("rt_hdr.tza"));
         assertThatThrownBy(() -> new UNet(hdr, "rt_hdr.tza", 9)).isInstanceOf(TensorArchiveException.class)
