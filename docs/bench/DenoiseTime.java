@@ -1,3 +1,5 @@
+import dev.strahl.codec.PfmReader;
+import dev.strahl.image.Image;
 import dev.strahl.io.SceneLoader;
 import dev.strahl.render.Aov;
 import dev.strahl.render.Denoiser;
@@ -17,13 +19,24 @@ import java.util.Locale;
  * running in the JVM. KIND: network (Denoiser.create(), the default) or atrous (Denoiser.atrous()).
  * Also prints the process's CPU time per denoise (all threads; on a shared machine the better
  * figure of the work, as the wall time depends on what else runs) and the load average.
+ * With {@code files}, it denoises the image and buffers of PFM files instead (the inputs
+ * oidnDenoise takes; docs/bench/denoise_time.py alternates the two), with the network.
  *
  *   mvn -B -q -DskipTests package
  *   java -cp target/strahl.jar docs/bench/DenoiseTime.java [size=512] [spp=16] [runs=9] [kind=network]
  *   java --add-modules jdk.incubator.vector -cp target/strahl.jar docs/bench/DenoiseTime.java ...   (the network's Vector API path)
+ *   java ... docs/bench/DenoiseTime.java files COLOR.pfm ALBEDO.pfm NORMAL.pfm [runs=5]
  */
 public class DenoiseTime {
     public static void main(String[] args) throws Exception {
+        if (args.length > 0 && args[0].equals("files")) {
+            Image color = PfmReader.read(Path.of(args[1]));
+            int runs = args.length > 4 ? Integer.parseInt(args[4]) : 5;
+            Image noVariance = new Image(color.width(), color.height(), new float[color.rgb().length]);   // the network does not use it
+            time(new RenderBuffers(color, noVariance, PfmReader.read(Path.of(args[2])), PfmReader.read(Path.of(args[3])), null),
+                    Denoiser.create(), "network", runs, args[1]);
+            return;
+        }
         int size = args.length > 0 ? Integer.parseInt(args[0]) : 512;
         int spp = args.length > 1 ? Integer.parseInt(args[1]) : 16;
         int runs = args.length > 2 ? Integer.parseInt(args[2]) : 9;
@@ -36,6 +49,11 @@ public class DenoiseTime {
             buffers = job.awaitBuffers();
         }
         Denoiser denoiser = kind.equals("atrous") ? Denoiser.atrous() : Denoiser.create();
+        time(buffers, denoiser, kind, runs, String.format(Locale.ROOT, "%d spp, all feature buffers", spp));
+    }
+
+    private static void time(RenderBuffers buffers, Denoiser denoiser, String kind, int runs, String what) {
+        int size = buffers.color().width();
         for (int i = 0; i < 3; i++) {
             denoiser.denoise(buffers);
         }
@@ -52,8 +70,8 @@ public class DenoiseTime {
         Arrays.sort(seconds);
         Arrays.sort(cpu);
         boolean lanes = ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent() && !"false".equals(System.getProperty("strahl.simd"));
-        System.out.printf(Locale.ROOT, "%s%s, %dx%d (%d spp, all feature buffers), %d processors: median %.3f s, min %.3f s, max %.3f s over %d runs%n",
-                denoiser, kind.equals("atrous") ? "" : lanes ? " (Vector API)" : " (scalar)", size, size, spp,
+        System.out.printf(Locale.ROOT, "%s%s, %dx%d (%s), %d processors: median %.3f s, min %.3f s, max %.3f s over %d runs%n",
+                denoiser, kind.equals("atrous") ? "" : lanes ? " (Vector API)" : " (scalar)", size, buffers.color().height(), what,
                 Runtime.getRuntime().availableProcessors(), seconds[runs / 2], seconds[0], seconds[runs - 1], runs);
         System.out.printf(Locale.ROOT, "  CPU time of the process per denoise: median %.3f s, min %.3f s, max %.3f s; load average %s%n",
                 cpu[runs / 2], cpu[0], cpu[runs - 1], String.format(Locale.ROOT, "%.2f", os.getSystemLoadAverage()));
