@@ -52,6 +52,19 @@ public final class NeuralDenoiser {
     }
 
     /**
+     * The most heap a denoise of a {@code width}×{@code height} image takes: the largest tile while
+     * the network runs and the result (3 floats a pixel, and the copy an image makes of it).
+     *
+     * @param width  width in pixels
+     * @param height height in pixels
+     * @return bytes
+     */
+    public long bytesNeeded(int width, int height) {
+        long tile = (long) Math.min(roundUp(width), tileSide) * Math.min(roundUp(height), tileSide);
+        return BYTES_PER_PIXEL * tile + 2L * 12 * width * height;
+    }
+
+    /**
      * Denoises an HDR render.
      *
      * @param width  width in pixels
@@ -137,7 +150,7 @@ public final class NeuralDenoiser {
     }
 
     private static int roundUp(int n) {
-        return (n + UNet.ALIGNMENT - 1) / UNet.ALIGNMENT * UNet.ALIGNMENT;
+        return (int) (((long) n + UNet.ALIGNMENT - 1) / UNet.ALIGNMENT * UNet.ALIGNMENT);
     }
 
     /** The named network, read from its resource when first asked for. */
