@@ -10,6 +10,6 @@ final class DenoiseOptions {
 
     @Option(names = "--denoiser", defaultValue = "network", paramLabel = "network|atrous|oidn",
             description = "With --denoise: network (the default: Intel Open Image Denoise's trained network, run in pure Java),"
-                    + " atrous (a fast, blurrier wavelet filter; its old name strahl works too) or oidn (OIDN's oidnDenoise found on the PATH).")
+                    + " atrous (a blurrier wavelet filter with no weights to read; its old name strahl works too) or oidn (OIDN's oidnDenoise found on the PATH).")
     String denoiserName;
 }

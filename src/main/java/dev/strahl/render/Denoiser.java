@@ -12,13 +12,16 @@ import java.util.Objects;
  *   <li>{@link #create()}, the default: the trained U-Net of Intel Open Image Denoise 2.5.1 (its
  *       weights for HDR colour, Apache-2.0, shipped inside strahl) with OIDN's preparation of the
  *       input and output, matching OIDN's own result within 1e-4 per pixel. It uses the albedo
- *       and normal buffers when present (the normal only together with the albedo). About 1 s
- *       for a 512x512 image on two cores; large images are denoised in overlapping tiles, so
+ *       and normal buffers when present (the normal only together with the albedo). About 0.8
+ *       CPU-seconds for a 512x512 image (the first call in a process also reads the weights
+ *       and compiles the code: about 3; after a render in the same JVM, for now, about 27 with
+ *       the Vector API: docs/denoising.md, Time); large images are denoised in overlapping tiles, so
  *       memory stays bounded (at most a quarter of the heap).</li>
- *   <li>{@link #atrous()}: a fast edge-avoiding à-trous wavelet filter (Dammertz et al. 2010) on
+ *   <li>{@link #atrous()}: an edge-avoiding à-trous wavelet filter (Dammertz et al. 2010) on
  *       the image divided by the albedo, guided by the normal, depth and albedo buffers and by
- *       each pixel's variance (Schied et al. 2017); several times faster and noticeably
- *       blurrier, for previews.</li>
+ *       each pixel's variance (Schied et al. 2017); about 3x the network's error and
+ *       noticeably blurrier. It reads no weights, so its first call is cheaper (about 1.7
+ *       CPU-seconds at 512x512); after that about 0.8.</li>
  * </ul>
  * Both are deterministic: the same bits on any number of threads (they run on the common
  * fork-join pool). docs/denoising.md compares them with each other, with OIDN and with references.
@@ -49,8 +52,8 @@ public final class Denoiser {
     }
 
     /**
-     * The edge-avoiding à-trous filter: faster than {@link #create()}, blurrier. Stateless and
-     * safe to share.
+     * The edge-avoiding à-trous filter: blurrier than {@link #create()}, with no weights to read.
+     * Stateless and safe to share.
      *
      * @return the denoiser
      */
