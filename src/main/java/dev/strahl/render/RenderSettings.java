@@ -102,10 +102,12 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
      * @param cullBackFaces skip back faces of closed meshes for camera and continuation rays
      * @param shadows       whether shadow rays are traced; false is a teaching option: every light sample counts as
      *                      visible, so lights shine through everything onto whatever faces them (no shadows)
+     * @param lightTree     whether next-event estimation chooses lights by what they give the shading point (a light
+     *                      tree); false is a teaching option: by their power alone, wherever the point is
      * @param photons       the photon mapper's photons per iteration and initial gather radius
      */
     public record Transport(IntegratorKind integrator, int maxDepth, int lightSamples, HemisphereSampling hemisphere,
-                            boolean cullBackFaces, boolean shadows, PhotonParameters photons) {
+                            boolean cullBackFaces, boolean shadows, boolean lightTree, PhotonParameters photons) {
         /**
          * Checks every value; the message names the one that is wrong.
          *
@@ -115,6 +117,7 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
          * @param hemisphere    cosine or uniform
          * @param cullBackFaces whether back faces of closed meshes are skipped
          * @param shadows       whether shadow rays are traced
+         * @param lightTree     whether lights are chosen by the light tree (else by power)
          * @param photons       the photon mapper's parameters
          */
         public Transport {
@@ -174,7 +177,7 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
 
     /**
      * 512×512 without feature buffers; 64 spp, seed 0; path tracing with unbounded depth, one light
-     * sample, cosine sampling, no culling, shadows and the photon mapper's
+     * sample, cosine sampling, no culling, shadows, the light tree and the photon mapper's
      * {@linkplain PhotonParameters#defaults() defaults}; all processors, automatic passes, no time
      * limit, the BVH and tiles.
      *
@@ -182,7 +185,7 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
      */
     public static RenderSettings defaults() {
         return new RenderSettings(new Output(512, 512, Set.of()), new Sampling(64, 0),
-                new Transport(IntegratorKind.PATH, -1, 1, HemisphereSampling.COSINE, false, true, PhotonParameters.defaults()),
+                new Transport(IntegratorKind.PATH, -1, 1, HemisphereSampling.COSINE, false, true, true, PhotonParameters.defaults()),
                 new Execution(0, 0, Duration.ZERO, false, false));
     }
 
@@ -307,6 +310,19 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
      */
     public RenderSettings withShadows(boolean s) {
         return edit(e -> e.shadows = s);
+    }
+
+    /**
+     * These settings with lights chosen by the light tree or by power. By power is a teaching
+     * option, the choice before the tree: a light is picked in proportion to its power wherever
+     * the shading point is, so a point beside one of hundreds of lamps still samples the far ones
+     * almost every time; same image, more noise (docs/scenes.md, many lights).
+     *
+     * @param tree true for the light tree (the default), false for power alone
+     * @return a new settings object
+     */
+    public RenderSettings withLightTree(boolean tree) {
+        return edit(e -> e.lightTree = tree);
     }
 
     /**

@@ -16,7 +16,7 @@ final class SettingsFields {
     IntegratorKind integrator;
     int maxDepth, lightSamples;
     HemisphereSampling hemisphere;
-    boolean cullBackFaces, shadows;
+    boolean cullBackFaces, shadows, lightTree;
     PhotonParameters photons;
     int threads, samplesPerPass;
     Duration timeLimit;
@@ -36,6 +36,7 @@ final class SettingsFields {
         hemisphere = t.hemisphere();
         cullBackFaces = t.cullBackFaces();
         shadows = t.shadows();
+        lightTree = t.lightTree();
         photons = t.photons();
         RenderSettings.Execution x = s.execution();
         threads = x.threads();
@@ -47,7 +48,7 @@ final class SettingsFields {
 
     RenderSettings settings() {
         return new RenderSettings(new RenderSettings.Output(width, height, aovs), new RenderSettings.Sampling(samplesPerPixel, seed),
-                new RenderSettings.Transport(integrator, maxDepth, lightSamples, hemisphere, cullBackFaces, shadows, photons),
+                new RenderSettings.Transport(integrator, maxDepth, lightSamples, hemisphere, cullBackFaces, shadows, lightTree, photons),
                 new RenderSettings.Execution(threads, samplesPerPass, timeLimit, bruteForce, stripes));
     }
 }
