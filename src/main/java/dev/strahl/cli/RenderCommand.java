@@ -1,6 +1,7 @@
 package dev.strahl.cli;
 
 import dev.strahl.codec.ImageLimits;
+import dev.strahl.codec.Printable;
 import dev.strahl.io.ImageWriters;
 import dev.strahl.io.SceneLoader;
 import dev.strahl.io.json.SceneFile;
@@ -116,7 +117,7 @@ final class RenderCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
-        try (Interrupts irq = Interrupts.install(err)) {
+        try (SimdOption.Scope kernel = execution.apply(); Interrupts irq = Interrupts.install(err)) {
             return run(err, irq);
         } catch (SceneException | CheckpointException e) {
             return fail(err, e, e.getMessage(), 2);
@@ -134,7 +135,7 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     private int fail(PrintWriter err, Throwable e, String message, int code) {
-        err.println("strahl: " + message);
+        err.println("strahl: " + Printable.line(message));       // one line, whatever a file put into the message
         if (debug.enabled && e != null) {
             e.printStackTrace(err);
         }
@@ -179,7 +180,7 @@ final class RenderCommand implements Callable<Integer> {
         HeapCheck.checkRender(settings.output().width(), settings.output().height(), keepsFeatures(settings), denoising.denoise);
         if (!quiet) {
             for (String note : s.notes()) {
-                err.println("strahl: " + (note.startsWith("warning: ") ? note : "note: " + note));
+                err.println("strahl: " + Printable.line(note.startsWith("warning: ") ? note : "note: " + note));
             }
             err.flush();
         }
@@ -199,6 +200,8 @@ final class RenderCommand implements Callable<Integer> {
         } catch (OutOfMemoryError e) {
             throw new IllegalArgumentException(scene + ": the scene does not fit in the Java heap (at most "
                     + ImageLimits.bytes(Runtime.getRuntime().maxMemory()) + "): give Java more memory (java -Xmx...)", e);
+        } catch (StackOverflowError e) {
+            throw new IllegalArgumentException(scene + ": the scene is nested too deeply to read (the reader's stack overflowed)", e);
         }
     }
 

@@ -1,8 +1,8 @@
 package dev.strahl.cli;
 
-import dev.strahl.scene.SceneException;
 import dev.strahl.io.json.SceneSettings;
 import dev.strahl.render.RenderSettings;
+import dev.strahl.scene.SceneException;
 import dev.strahl.viewer.SceneOverrides;
 import dev.strahl.viewer.Theme;
 import dev.strahl.viewer.Viewer;
@@ -15,8 +15,8 @@ import java.util.Set;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -97,12 +97,12 @@ final class ViewCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
-        try {
+        try (SimdOption.Scope kernel = execution.apply()) {
             // refuses a film too large for the heap, as render does; a viewer that keeps feature buffers denoises them
             Viewer.open(options(), (w, h, features) -> HeapCheck.checkRender(w, h, features, features)).awaitClosed();
             return 0;
         } catch (SceneException | IllegalArgumentException e) {
-            err.println("strahl: " + e.getMessage());
+            err.println("strahl: " + dev.strahl.codec.Printable.line(e.getMessage()));
             if (debug.enabled) {
                 e.printStackTrace(err);
             }

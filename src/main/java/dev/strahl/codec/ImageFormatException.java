@@ -19,7 +19,7 @@ public final class ImageFormatException extends IOException {
      * @param message what is wrong and where, without the file name
      */
     public ImageFormatException(Path file, String message) {
-        super(file + ": " + message);
+        super(Printable.line(file + ": " + message));
     }
 
     /**
@@ -31,21 +31,16 @@ public final class ImageFormatException extends IOException {
      * @param message what is wrong, without the file name and line
      */
     public ImageFormatException(Path file, int line, String message) {
-        super(file + ":" + line + ": " + message);
+        super(Printable.line(file + ":" + line + ": " + message));
     }
 
     /**
      * A file's text (a magic word, a header token or name) as it may be quoted in a message: at most
-     * 40 characters, anything but printable ASCII shown as '?', so that binary garbage cannot break
-     * the one-line message.
+     * {@link Printable#QUOTE_LENGTH} characters, anything but printable ASCII escaped, so that binary
+     * garbage cannot break the one-line message ({@link Printable#text}).
      */
     public static String printable(String s) {
-        StringBuilder sb = new StringBuilder();
-        for (int i = 0; i < s.length() && i < 40; i++) {
-            char c = s.charAt(i);
-            sb.append(c >= 0x20 && c < 0x7f ? c : '?');
-        }
-        return s.length() > 40 ? sb + "..." : sb.toString();
+        return Printable.text(s);
     }
 
     /**
@@ -54,6 +49,6 @@ public final class ImageFormatException extends IOException {
      * @param cause   the decoder's own exception, kept for {@code --debug}
      */
     public ImageFormatException(Path file, String message, Throwable cause) {
-        super(file + ": " + message, cause);
+        super(Printable.line(file + ": " + message), cause);
     }
 }

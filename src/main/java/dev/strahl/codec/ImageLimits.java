@@ -27,6 +27,43 @@ public final class ImageLimits {
      * @throws ImageFormatException if the image cannot be held
      */
     public static void checkAllocation(Path file, long width, long height, int channels, long extraBytes) throws ImageFormatException {
+        checkArraySize(file, width, height, channels);
+        String shortfall = heapShortfall(width * height * channels * Float.BYTES + extraBytes);
+        if (shortfall != null) {
+            throw new ImageFormatException(file, String.format(Locale.ROOT, "a %dx%d image with %d channel(s) %s", width, height,
+                    channels, shortfall));
+        }
+    }
+
+    /**
+     * Whether {@code need} bytes fit in the heap that is free (measured once more after a garbage
+     * collection if they seem not to: what is in use may be mostly garbage).
+     *
+     * @param need bytes about to be allocated
+     * @return null if they fit, else the end of a message: "needs 2.1 GiB, but the Java heap has 1.9
+     *         GiB free of at most 2.0 GiB: give Java more memory (java -Xmx...)"
+     */
+    public static String heapShortfall(long need) {
+        if (need <= free()) {
+            return null;
+        }
+        System.gc();
+        long free = free();
+        return need <= free ? null : String.format(Locale.ROOT, "needs %s, but the Java heap has %s free of at most %s: give Java"
+                + " more memory (java -Xmx...)", bytes(need), bytes(Math.max(0, free)), bytes(Runtime.getRuntime().maxMemory()));
+    }
+
+    /**
+     * Checks that an image of this size has positive sides and fits in one Java array of floats,
+     * whatever the heap.
+     *
+     * @param file     the file, for the message
+     * @param width    width in pixels, from the file
+     * @param height   height in pixels, from the file
+     * @param channels channels per pixel
+     * @throws ImageFormatException if it does not
+     */
+    public static void checkArraySize(Path file, long width, long height, int channels) throws ImageFormatException {
         if (width <= 0 || height <= 0) {
             throw new ImageFormatException(file, "image size must be positive, got " + width + "x" + height);
         }
@@ -36,15 +73,29 @@ public final class ImageLimits {
             throw new ImageFormatException(file, String.format(Locale.ROOT, "a %dx%d image with %d channel(s) is too large to load"
                     + " (%.3g samples; at most %d fit in one array)", width, height, channels, samples, MAX_ARRAY));
         }
-        long need = (long) samples * Float.BYTES + extraBytes;
-        if (need > free()) {
-            System.gc();                      // what is in use may be mostly garbage: measure once more
-            long free = free();
-            if (need > free) {
-                throw new ImageFormatException(file, String.format(Locale.ROOT, "a %dx%d image with %d channel(s) needs %s, but the"
-                        + " Java heap has %s free of at most %s: give Java more memory (java -Xmx...)", width, height, channels,
-                        bytes(need), bytes(free), bytes(Runtime.getRuntime().maxMemory())));
-            }
+    }
+
+    /**
+     * Checks a header's claim against the file: pixel data of {@code pixelBytes} cannot come out of
+     * a file of {@code fileBytes} when its coding packs at most {@code ratio} bytes of pixels into
+     * one byte of file (1 for raw samples; zlib about 1032). So a bomb, a few bytes that claim an
+     * enormous image, is refused for what it is before the heap is even asked.
+     *
+     * @param file       the file, for the message
+     * @param width      width from the header
+     * @param height     height from the header
+     * @param pixelBytes the bytes of pixel data the header implies
+     * @param fileBytes  the file's length
+     * @param ratio      the coding's largest ratio of pixel bytes to file bytes
+     * @param coding     the coding's name, for the message ("ZIP compression")
+     * @throws ImageFormatException if the file is too short for its claim
+     */
+    public static void checkFileHolds(Path file, long width, long height, double pixelBytes, long fileBytes, double ratio,
+            String coding) throws ImageFormatException {
+        if (pixelBytes > ratio * fileBytes) {
+            throw new ImageFormatException(file, String.format(Locale.ROOT, "the header claims a %dx%d image (%.3g bytes of pixels),"
+                    + " more than this %d-byte file can hold with %s: it is truncated, corrupt or a decompression bomb", width, height,
+                    pixelBytes, fileBytes, coding));
         }
     }
 

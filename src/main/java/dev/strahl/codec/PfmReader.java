@@ -42,9 +42,10 @@ public final class PfmReader {
      *
      * @param file the file to read
      * @return the image, top row first; a one-channel ({@code Pf}) file gives a gray image (r = g = b)
-     * @throws IOException if the file cannot be read or is not a well-formed PFM file; the message
-     *                     starts with the file name. Sizes in the header are checked against the
-     *                     file length before any pixel memory is allocated.
+     * @throws ImageFormatException if the file is not a well-formed PFM file (one line that starts with
+     *                              the file name); sizes in the header are checked against the file
+     *                              length and the heap before any pixel memory is allocated
+     * @throws IOException          if the file cannot be read at all
      */
     public static Image read(Path file) throws IOException {
         if (Files.isDirectory(file)) {
@@ -107,8 +108,8 @@ public final class PfmReader {
         }
     }
 
-    private static IOException malformed(Path file, String message) {
-        return new IOException(file + ": " + message);
+    private static ImageFormatException malformed(Path file, String message) {
+        return new ImageFormatException(file, message);
     }
 
     /** The parsed header; {@code dataOffset} is where the pixels start. */
@@ -155,9 +156,7 @@ public final class PfmReader {
                         + channels + " channel(s) needs " + BigInteger.valueOf(pixels).multiply(BigInteger.valueOf(bytesPerPixel))
                         + " bytes of pixels, but only " + available + " follow the header");
             }
-            if (pixels > (Integer.MAX_VALUE - 8) / 3) {
-                throw malformed(file, "PFM image " + width + "x" + height + " is too large to load");
-            }
+            ImageLimits.checkAllocation(file, width, height, 3, 0);
             if (t.crlfAmbiguous() && available - 1 >= pixels * bytesPerPixel) {
                 dataOffset++;                // "\r\n" after the scale is one line break
             }

@@ -37,6 +37,10 @@ import javax.imageio.stream.ImageInputStream;
  */
 public final class TextureImages {
     private static final List<String> FORMATS = List.of("png", "jpeg");
+    /** Bytes of PNG rows per byte of file at the most: zlib's largest ratio (about 1032) and a margin. */
+    private static final double PNG_RATIO = 1100;
+    /** Pixels per byte of JPEG at the most: a Huffman-coded 8x8 block takes a bit at the least (512), and a margin. */
+    private static final double JPEG_PIXELS_PER_BYTE = 2048;
 
     private TextureImages() {
     }
@@ -57,6 +61,7 @@ public final class TextureImages {
             Files.newByteChannel(file).close();       // the usual NoSuchFileException or AccessDeniedException
         }
         FileReads.note(file);
+        long length = Files.size(file);
         try (ImageInputStream in = ImageIO.createImageInputStream(file.toFile())) {
             if (in == null) {
                 throw new ImageFormatException(file, "cannot be opened as an image");
@@ -64,8 +69,8 @@ public final class TextureImages {
             ImageReader reader = reader(file, in);
             try {
                 String format = reader.getFormatName().toUpperCase(Locale.ROOT);
-                int greyBits = format.equals("PNG") ? greyBitDepth(in) : 0;
-                return decode(file, reader, format, greyBits);
+                int[] ihdr = format.equals("PNG") ? pngDepthAndColourType(in) : null;
+                return decode(file, length, reader, format, ihdr);
             } finally {
                 reader.dispose();
             }
@@ -86,37 +91,83 @@ public final class TextureImages {
             others.add(format.toUpperCase(Locale.ROOT));
             r.dispose();
         }
-        throw new ImageFormatException(file, others.isEmpty()
-                ? "not a PNG or JPEG image (strahl reads PNG and JPEG textures)"
+        throw new ImageFormatException(file, others.isEmpty() ? notATexture(in)
                 : "a " + others.get(0) + " image: strahl reads PNG and JPEG textures");
     }
 
+    /** What a file that no ImageIO decoder takes is, told by its first bytes: strahl's other image formats are named. */
+    private static String notATexture(ImageInputStream in) throws IOException {
+        byte[] head = new byte[4];
+        in.seek(0);
+        int n = in.read(head);
+        String kind = n < 2 ? null
+                : n == 4 && head[0] == 0x76 && head[1] == 0x2f && head[2] == 0x31 && head[3] == 0x01 ? "an OpenEXR image"
+                : head[0] == '#' && head[1] == '?' ? "a Radiance HDR image"
+                : head[0] == 'P' && (head[1] == 'F' || head[1] == 'f') ? "a PFM image"
+                : null;
+        return kind == null ? "not a PNG or JPEG image (strahl reads PNG and JPEG textures)"
+                : kind + ": strahl reads PNG and JPEG textures (.exr, .hdr and .pfm are for environment maps)";
+    }
+
     /**
-     * The bit depth of a grey PNG (IHDR colour type 0), else 0: ImageIO decodes grey of 1, 2 and 4
-     * bits into a palette image, which must come back as grey, not RGB. The IHDR chunk is always
-     * first: its bit depth and colour type are bytes 24 and 25 of the file.
+     * The bit depth and colour type of a PNG (bytes 24 and 25 of the file: the IHDR chunk is always
+     * first), or null if the file is too short. ImageIO decodes grey of 1, 2 and 4 bits into a palette
+     * image, which must come back as grey, not RGB; and the size check needs the bits per pixel.
      */
-    private static int greyBitDepth(ImageInputStream in) throws IOException {
+    private static int[] pngDepthAndColourType(ImageInputStream in) throws IOException {
         in.mark();
         try {
             in.seek(24);
             int bits = in.read();
             int colourType = in.read();
-            return colourType == 0 && bits > 0 ? bits : 0;
+            return colourType < 0 ? null : new int[] {bits, colourType};
         } finally {
             in.reset();
         }
     }
 
-    private static ChannelImage decode(Path file, ImageReader reader, String format, int greyBits) throws ImageFormatException {
+    /**
+     * Checks the size the header claims before the decoder allocates anything: against one array,
+     * against the file (a PNG's zlib data expand at most about 1032 times; a JPEG codes every 8x8
+     * block in one bit at the least), against the time a JPEG's scans take ({@link JpegScans}), and
+     * against the heap, which must hold the decoder's raster, the float samples and the texture's
+     * second copy of them (flipped, or sRGB-decoded).
+     */
+    private static void checkSize(Path file, long length, String format, int[] ihdr, int width, int height) throws IOException {
+        int channels = 3;                    // a JPEG's, at the most (grey or colour; CMYK is refused)
+        int rasterBytes = 3;                 // the decoder's bytes per pixel
+        if (ihdr != null) {
+            int samplesPerPixel = switch (ihdr[1]) {
+                case 2 -> 3;
+                case 4 -> 2;
+                case 6 -> 4;
+                default -> 1;                // grey, or palette indices
+            };
+            channels = ihdr[1] == 3 ? 4 : samplesPerPixel;                 // a palette expands to RGB(A)
+            rasterBytes = samplesPerPixel * (ihdr[0] > 8 ? 2 : 1);
+            double rowBytes = 1 + Math.ceil((double) width * samplesPerPixel * Math.max(1, ihdr[0]) / 8);
+            ImageLimits.checkArraySize(file, width, height, channels);
+            ImageLimits.checkFileHolds(file, width, height, rowBytes * height, length, PNG_RATIO, "PNG's zlib compression");
+        } else {
+            ImageLimits.checkArraySize(file, width, height, channels);
+            if (format.equals("JPEG")) {
+                ImageLimits.checkFileHolds(file, width, height, (double) width * height, length, JPEG_PIXELS_PER_BYTE,
+                        "JPEG coding (one bit per 8x8 block at the least)");
+                JpegScans.check(file, width, height);
+            }
+        }
+        long pixels = (long) width * height;
+        // the raster, the float samples, and the texture's second copy of them
+        ImageLimits.checkAllocation(file, width, height, channels, rasterBytes * pixels + 4L * channels * pixels);
+    }
+
+    private static ChannelImage decode(Path file, long length, ImageReader reader, String format, int[] ihdr)
+            throws ImageFormatException {
         List<String> warnings = new ArrayList<>();
         reader.addIIOReadWarningListener((IIOReadWarningListener) (source, warning) -> warnings.add(warning));
         BufferedImage image;
         try {
-            int width = reader.getWidth(0);
-            int height = reader.getHeight(0);
-            // the decoder's raster (up to 4 bands of 16 bits) and the floats (up to 4 channels)
-            ImageLimits.checkAllocation(file, width, height, 4, 8L * width * height);
+            checkSize(file, length, format, ihdr, reader.getWidth(0), reader.getHeight(0));
             image = reader.read(0);
         } catch (ImageFormatException e) {
             throw e;
@@ -127,8 +178,9 @@ public final class TextureImages {
             throw new ImageFormatException(file, "corrupt " + format + " image (the decoder failed: " + message(e) + ")", e);
         }
         if (!warnings.isEmpty()) {
-            throw new ImageFormatException(file, "corrupt or truncated " + format + " image (" + warnings.get(0) + ")");
+            throw new ImageFormatException(file, "corrupt or truncated " + format + " image (" + Printable.text(warnings.get(0), 120) + ")");
         }
+        int greyBits = ihdr != null && ihdr[1] == 0 && ihdr[0] > 0 ? ihdr[0] : 0;
         return samples(image, greyBits);
     }
 
@@ -140,7 +192,7 @@ public final class TextureImages {
         } else if (cause != null && m == null) {
             m = cause.getClass().getSimpleName();
         }
-        return m == null ? e.getClass().getSimpleName() : m.replace('\n', ' ');
+        return m == null ? e.getClass().getSimpleName() : Printable.text(m, 120);
     }
 
     private static ChannelImage samples(BufferedImage image, int greyBits) {

@@ -27,6 +27,11 @@ public final class FileReads {
         }
     }
 
+    /** @return whether the current thread records the files it reads (for a cluster render) */
+    public static boolean isRecording() {
+        return RECORDING.get() != null;
+    }
+
     /**
      * Runs {@code load} and adds every file it reads on this thread to {@code into}.
      *

@@ -1,11 +1,14 @@
 package dev.strahl.scene;
 
+import dev.strahl.codec.Printable;
 import java.nio.file.Path;
 
 /**
  * A scene input that cannot be used: a file that is missing, unreadable or malformed. The
  * message starts with the file and, where known, the line ({@code file:line: what is wrong}),
- * so that a command-line tool can print it as the one line a user needs.
+ * so that a command-line tool can print it as the one line a user needs. Whatever a reader quotes
+ * from a file, the message stays one printable line: control characters are escaped
+ * ({@code \n}, {@code \x1b}).
  */
 public final class SceneException extends Exception {
     private final transient Path file;
@@ -20,7 +23,7 @@ public final class SceneException extends Exception {
      * @param message what is wrong, without the file and line
      */
     public SceneException(Path file, int line, String message) {
-        super(file + ":" + line + ": " + message);
+        super(Printable.line(file + ":" + line + ": " + message));
         this.file = file;
         this.line = line;
     }
@@ -32,7 +35,7 @@ public final class SceneException extends Exception {
      * @param message what is wrong, without the file
      */
     public SceneException(Path file, String message) {
-        super(file + ": " + message);
+        super(Printable.line(file + ": " + message));
         this.file = file;
         this.line = 0;
     }
@@ -45,7 +48,7 @@ public final class SceneException extends Exception {
      * @param cause   the underlying exception
      */
     public SceneException(Path file, String message, Throwable cause) {
-        super(file + ": " + message, cause);
+        super(Printable.line(file + ": " + message), cause);
         this.file = file;
         this.line = 0;
     }

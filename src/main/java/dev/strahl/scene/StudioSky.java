@@ -34,8 +34,14 @@ final class StudioSky {
     private StudioSky() {
     }
 
+    /** The sky, made once per process: every bare model gets the same immutable environment (a fuzzer loads a million). */
     static Environment environment() {
-        return Environment.map(WIDTH, HEIGHT, texels(), 1, 0, "studio-sky");
+        return Made.SKY;
+    }
+
+    /** Holds the sky, made when first asked for. */
+    private static final class Made {
+        static final Environment SKY = Environment.map(WIDTH, HEIGHT, texels(), 1, 0, "studio-sky");
     }
 
     /** The texels, rows from the top, placed as {@link Environment} says (u = (x + ½)/W, v = y/(H − 1)). */

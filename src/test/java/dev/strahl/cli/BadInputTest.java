@@ -249,7 +249,7 @@ class BadInputTest {
             // ---- glTF ----
             refused("glTF truncated GLB", glb(false, true), scene("$IN/t.glb"), "$IN/t.glb: ", "truncated GLB: the header says"),
             refused("glTF accessor past its buffer view", glb(true, false), scene("$IN/t.glb"),
-                    "$IN/t.glb: accessors[0]: byteOffset + count × stride past the end of bufferView 0"),
+                    "$IN/t.glb: accessors[0]: byteOffset + count x stride past the end of bufferView 0"),
             refused("glTF required extension", files("t.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"extensionsRequired\": [\"KHR_draco_mesh_compression\"]}"),
                     scene("$IN/t.gltf"), "$IN/t.gltf: extensionsRequired[0]: required extension KHR_draco_mesh_compression is not supported"),
             refused("unknown scene format", files("t.txt", SQUARE), scene("$IN/t.txt"), "$IN/t.txt: ", "unknown scene format"),

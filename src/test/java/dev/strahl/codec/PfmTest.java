@@ -190,10 +190,10 @@ class PfmTest {
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("malformed")
-    void malformedInputIsAnIOExceptionNamingTheFile(String what, byte[] content, String message) throws IOException {
+    void malformedInputIsAnImageFormatExceptionNamingTheFile(String what, byte[] content, String message) throws IOException {
         Path f = file("bad.pfm", content);
         assertThatThrownBy(() -> PfmReader.read(f))
-                .isExactlyInstanceOf(IOException.class)
+                .isExactlyInstanceOf(ImageFormatException.class)
                 .hasMessageStartingWith(f + ": ")
                 .hasMessageContaining(message);
     }
@@ -201,9 +201,9 @@ class PfmTest {
     @Test
     void aLargeButTooShortFileIsRefusedBeforeAllocating() throws IOException {
         // 20000² pixels would need 4.8 GB of floats, more than the test JVM has: only the
-        // size check against the 12-byte file can make this an IOException instead of an OOM.
+        // size check against the 12-byte file can make this the reader's error instead of an OOM.
         Path f = file("lying.pfm", concat("PF\n20000 20000\n-1\n", new byte[12]));
-        assertThatThrownBy(() -> PfmReader.read(f)).isExactlyInstanceOf(IOException.class).hasMessageContaining("needs 4800000000 bytes");
+        assertThatThrownBy(() -> PfmReader.read(f)).isExactlyInstanceOf(ImageFormatException.class).hasMessageContaining("needs 4800000000 bytes");
     }
 
     @Test

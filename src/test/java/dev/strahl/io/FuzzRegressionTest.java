@@ -20,7 +20,7 @@ import org.junit.jupiter.params.provider.MethodSource;
  * Every input that once broke a parser (found by {@link ParserFuzzTest} or by hand), kept in
  * {@code src/test/resources/fuzz/KIND/}: each must now be accepted or rejected with a
  * {@link SceneException} (an {@link ImageFormatException} for the image kinds exr, hdr and png). A
- * {@code .txt} beside an input says what it did.
+ * {@code .txt} beside an input says what it did. (gltf and glb inputs go through the scene loader, as json's.)
  */
 class FuzzRegressionTest {
     private static final Path CORPUS = Path.of("src", "test", "resources", "fuzz");
@@ -38,7 +38,7 @@ class FuzzRegressionTest {
 
     static Stream<Path> regressionCases() throws IOException {
         List<Path> cases = new ArrayList<>();
-        for (String kind : List.of("obj", "mtl", "ply", "json", "exr", "hdr", "png")) {
+        for (String kind : List.of("obj", "mtl", "ply", "json", "gltf", "glb", "exr", "hdr", "pfm", "png")) {
             Path dir = CORPUS.resolve(kind);
             if (Files.isDirectory(dir)) {
                 try (Stream<Path> files = Files.list(dir)) {
@@ -60,9 +60,10 @@ class FuzzRegressionTest {
             case "exr" -> ParserFuzzTest.exrTarget();
             case "hdr" -> ParserFuzzTest.hdrTarget();
             case "png" -> ParserFuzzTest.pngTarget();
+            case "pfm" -> ParserFuzzTest.pfmTarget();
             default -> ParserFuzzTest.jsonTarget();
         };
-        Class<? extends Exception> allowed = List.of("exr", "hdr", "png").contains(kind) ? ImageFormatException.class : SceneException.class;
+        Class<? extends Exception> allowed = List.of("exr", "hdr", "pfm", "png").contains(kind) ? ImageFormatException.class : SceneException.class;
         Fuzzer fuzzer = new Fuzzer("regression-" + kind, target, allowed, work.resolve("regression." + kind));
         // the verdict: null = accepted, "" = rejected with the reader's own exception, else what broke
         assertThat(fuzzer.check(Files.readAllBytes(input))).as("%s: null = accepted, \"\" = %s", input, allowed.getSimpleName())

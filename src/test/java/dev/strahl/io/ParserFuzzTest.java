@@ -2,14 +2,18 @@ package dev.strahl.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import dev.strahl.codec.exr.ExrReader;
-import dev.strahl.io.gltf.GltfFuzzSeeds;
+import dev.strahl.codec.ChannelImage;
 import dev.strahl.codec.HdrReader;
 import dev.strahl.codec.ImageFormatException;
+import dev.strahl.codec.PfmReader;
 import dev.strahl.codec.TextureImages;
+import dev.strahl.codec.exr.ExrReader;
+import dev.strahl.io.gltf.GltfFuzzInputs;
+import dev.strahl.io.gltf.GltfFuzzSeeds;
 import dev.strahl.io.obj.MtlReader;
 import dev.strahl.scene.SceneException;
 import dev.strahl.testing.Fuzzer;
+import dev.strahl.texture.Bitmap;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -19,14 +23,14 @@ import java.util.List;
 import java.util.stream.Stream;
 import net.jqwik.api.Arbitraries;
 import net.jqwik.api.Arbitrary;
-import net.jqwik.api.Tuple;
 import net.jqwik.api.Example;
+import net.jqwik.api.Tuple;
 import net.jqwik.api.lifecycle.AfterContainer;
 import net.jqwik.api.lifecycle.BeforeContainer;
 
 /**
  * Fuzzing of the OBJ, MTL, PLY, glTF (GLB and JSON) and scene-file readers and of the image readers (EXR, Radiance HDR,
- * PNG/JPEG textures): random and mutated files may be accepted or rejected with the reader's own
+ * PFM, PNG/JPEG textures): random and mutated files may be accepted or rejected with the reader's own
  * error (a {@link SceneException}; an {@link ImageFormatException} for images), never end in
  * another exception, a hang or running out of memory. Each parser gets a bounded budget ({@link Fuzzer#budget()}); every input that once
  * broke a parser is kept in {@code src/test/resources/fuzz/} and replayed by
@@ -91,8 +95,16 @@ class ParserFuzzTest {
         return HdrReader::read;
     }
 
+    /** PNG or JPEG (told apart by content) as the texture loader reads it: the reader, then the texture's bitmap and its sRGB twin. */
     static Fuzzer.Target pngTarget() {
-        return TextureImages::read;                 // PNG or JPEG, told apart by content
+        return file -> {
+            ChannelImage image = TextureImages.read(file);
+            Bitmap.fromTopDown("fuzz", image.width(), image.height(), image.channelCount(), image.data()).srgbDecoded();
+        };
+    }
+
+    static Fuzzer.Target pfmTarget() {
+        return PfmReader::read;
     }
 
     @Example
@@ -121,12 +133,14 @@ class ParserFuzzTest {
 
     @Example
     void glbReaderOnlyEverThrowsSceneException() throws Exception {
-        fuzz("glb", SceneLoader::load, "fuzz.glb", FuzzInputs.mutated(GltfFuzzSeeds.glb(), GltfFuzzSeeds.WORDS));
+        fuzz("glb", SceneLoader::load, "fuzz.glb", mix(GltfFuzzInputs.randomGlb(),
+                FuzzInputs.mutated(GltfFuzzSeeds.glb(), GltfFuzzSeeds.WORDS)));
     }
 
     @Example
     void gltfReaderOnlyEverThrowsSceneException() throws Exception {
-        fuzz("gltf", SceneLoader::load, "fuzz.gltf", mix(FuzzInputs.randomJson(), FuzzInputs.mutated(GltfFuzzSeeds.gltf(), GltfFuzzSeeds.WORDS)));
+        fuzz("gltf", SceneLoader::load, "fuzz.gltf", Arbitraries.frequencyOf(Tuple.of(1, FuzzInputs.randomJson()),
+                Tuple.of(2, GltfFuzzInputs.randomGltf()), Tuple.of(2, FuzzInputs.mutated(GltfFuzzSeeds.gltf(), GltfFuzzSeeds.WORDS))));
     }
 
     @Example
@@ -147,6 +161,12 @@ class ParserFuzzTest {
                 ImageFuzzInputs.mutated(ImageFuzzInputs.pngSeeds(), ImageFuzzInputs.PNG_WORDS)));
     }
 
+    @Example
+    void pfmReaderOnlyEverThrowsImageFormatException() throws IOException {
+        fuzz("pfm", pfmTarget(), ImageFormatException.class, "fuzz.pfm", mix(PfmFuzzInputs.random(),
+                ImageFuzzInputs.mutated(PfmFuzzInputs.seeds(), PfmFuzzInputs.WORDS)));
+    }
+
     private static Arbitrary<byte[]> mix(Arbitrary<byte[]> random, Arbitrary<byte[]> mutated) {
         return Arbitraries.frequencyOf(Tuple.of(1, random), Tuple.of(1, mutated));
     }
@@ -157,10 +177,14 @@ class ParserFuzzTest {
 
     private static void fuzz(String name, Fuzzer.Target target, Class<? extends Exception> allowed, String fileName,
             Arbitrary<byte[]> inputs) throws IOException {
+        String only = System.getProperty("strahl.fuzz.only", "");
+        if (!only.isEmpty() && !List.of(only.split(",")).contains(name)) {
+            return;                                 // a campaign runs the parsers one by one (docs/reliability/fuzz.sh)
+        }
         Fuzzer.Report report = new Fuzzer(name, target, allowed, work.resolve(fileName))
-                .run(inputs, Fuzzer.budget(), Fuzzer.seed());
+                .run(inputs, Fuzzer.budget(), Fuzzer.inputs(), Fuzzer.seed());
         System.out.println(report);
-        Path reports = Path.of("target", "fuzz-reports");
+        Path reports = Fuzzer.output().resolve("fuzz-reports");
         Files.createDirectories(reports);
         Files.writeString(reports.resolve(name + ".txt"), report + "\n", StandardCharsets.UTF_8);
         assertThat(report.findings()).as(report.toString()).isEmpty();

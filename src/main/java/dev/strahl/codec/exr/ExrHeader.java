@@ -2,6 +2,7 @@ package dev.strahl.codec.exr;
 
 import static dev.strahl.codec.ImageFormatException.printable;
 
+import dev.strahl.codec.ImageFormatException;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
@@ -120,14 +121,14 @@ public record ExrHeader(List<Channel> channels, ExrCompression compression, Box 
             if (name.isEmpty()) {
                 break;                       // the NUL byte that ends the header
             }
-            String type = in.cstring(maxName, "the type of attribute '" + name + "'");
-            int size = in.i32("the size of attribute '" + name + "'");
+            String type = in.cstring(maxName, "the type of attribute '" + printable(name) + "'");
+            int size = in.i32("the size of attribute '" + printable(name) + "'");
             if (size < 0 || size > in.remaining()) {
-                throw in.error(at, "attribute '" + name + "' claims " + Integer.toUnsignedString(size) + " bytes, but "
+                throw in.error(at, "attribute '" + printable(name) + "' claims " + Integer.toUnsignedString(size) + " bytes, but "
                         + in.remaining() + " follow");
             }
             if (!seen.add(name)) {
-                throw in.error(at, "attribute '" + name + "' appears twice");
+                throw in.error(at, "attribute '" + printable(name) + "' appears twice");
             }
             long end = in.position() + size;
             switch (name) {
@@ -155,10 +156,10 @@ public record ExrHeader(List<Channel> channels, ExrCompression compression, Box 
                         throw in.error(at, "the part's type is '" + printable(kind) + "'; strahl reads only scanline images ('scanlineimage')");
                     }
                 }
-                default -> in.skip(size, "attribute '" + name + "'");
+                default -> in.skip(size, "attribute '" + printable(name) + "'");
             }
             if (in.position() != end) {
-                throw in.error(at, "attribute '" + name + "' is " + size + " bytes long, but its value takes " + (in.position() - at)
+                throw in.error(at, "attribute '" + printable(name) + "' is " + size + " bytes long, but its value takes " + (in.position() - at)
                         + " bytes from the name on");
             }
         }
@@ -169,21 +170,30 @@ public record ExrHeader(List<Channel> channels, ExrCompression compression, Box 
         if (!compression.readable()) {
             throw in.error("EXR compression " + compression + " is not supported (strahl reads NONE, RLE, ZIPS, ZIP, PIZ)");
         }
-        if (dataWindow.width() <= 0 || dataWindow.height() <= 0) {
-            throw in.error("the data window " + dataWindow + " is empty");
+        checkWindow(in, "data window", dataWindow);
+        if (displayWindow != null) {
+            checkWindow(in, "display window", displayWindow);
         }
         return new ExrHeader(channels, compression, dataWindow, displayWindow == null ? dataWindow : displayWindow,
                 lineOrder < 0 ? 0 : lineOrder);
+    }
+
+    /** A window whose maximum lies before its minimum (an inverted window: a negative size) is refused, naming the size it implies. */
+    private static void checkWindow(ExrInput in, String what, Box w) throws ImageFormatException {
+        if (w.width() <= 0 || w.height() <= 0) {
+            throw in.error("the " + what + " " + w + " is empty: it is inverted (" + (w.width() <= 0 ? "xMax < xMin" : "yMax < yMin")
+                    + ") and describes a " + w.width() + "x" + w.height() + " image");
+        }
     }
 
     /** Checks an attribute's type (and size, unless -1); returns the size. */
     private static int expect(ExrInput in, long at, String name, String type, String wanted, int size, int wantedSize)
             throws IOException {
         if (!type.equals(wanted)) {
-            throw in.error(at, "attribute '" + name + "' has type '" + printable(type) + "', expected '" + wanted + "'");
+            throw in.error(at, "attribute '" + printable(name) + "' has type '" + printable(type) + "', expected '" + wanted + "'");
         }
         if (wantedSize >= 0 && size != wantedSize) {
-            throw in.error(at, "attribute '" + name + "' has " + size + " bytes, expected " + wantedSize);
+            throw in.error(at, "attribute '" + printable(name) + "' has " + size + " bytes, expected " + wantedSize);
         }
         return size;
     }
@@ -205,20 +215,20 @@ public record ExrHeader(List<Channel> channels, ExrCompression compression, Box 
             if (name.isEmpty()) {
                 break;
             }
-            int code = in.i32("channel '" + name + "'");
+            int code = in.i32("channel '" + printable(name) + "'");
             ExrPixelType type = ExrPixelType.ofCode(code);
             if (type == null) {
-                throw in.error(at, "channel '" + name + "' has unknown pixel type " + code + " (0 UINT, 1 HALF, 2 FLOAT)");
+                throw in.error(at, "channel '" + printable(name) + "' has unknown pixel type " + code + " (0 UINT, 1 HALF, 2 FLOAT)");
             }
-            in.skip(4, "channel '" + name + "'");            // pLinear and three reserved bytes
-            int xSampling = in.i32("channel '" + name + "'");
-            int ySampling = in.i32("channel '" + name + "'");
+            in.skip(4, "channel '" + printable(name) + "'");            // pLinear and three reserved bytes
+            int xSampling = in.i32("channel '" + printable(name) + "'");
+            int ySampling = in.i32("channel '" + printable(name) + "'");
             if (xSampling != 1 || ySampling != 1) {
-                throw in.error(at, "channel '" + name + "' is subsampled (" + xSampling + "x" + ySampling
+                throw in.error(at, "channel '" + printable(name) + "' is subsampled (" + xSampling + "x" + ySampling
                         + "); strahl reads only channels with a sample for every pixel");
             }
             if (!names.add(name)) {
-                throw in.error(at, "channel '" + name + "' appears twice");
+                throw in.error(at, "channel '" + printable(name) + "' appears twice");
             }
             list.add(new Channel(name, type));
         }

@@ -80,7 +80,7 @@ public final class ExrReader {
         ChannelImage all = read(file);
         if (!all.hasColour()) {
             throw new ImageFormatException(file, "the EXR image has no colour channels (R, G, B or Y); its channels are "
-                    + String.join(", ", all.channels()));
+                    + dev.strahl.codec.Printable.text(String.join(", ", all.channels()), 80));
         }
         return all.rgb();
     }
@@ -112,21 +112,17 @@ public final class ExrReader {
         long chunks = (height + linesPerChunk - 1) / linesPerChunk;
         long tableStart = in.position();
         if (chunks * 16 > in.remaining()) {          // 8 bytes in the table, 8 of y and size per chunk
-            throw in.error(tableStart, "the file is truncated: the data window " + h.dataWindow() + " needs " + chunks
-                    + " chunks of " + h.compression() + " data (at least " + chunks * 16 + " bytes), but " + in.remaining()
-                    + " bytes follow the header");
+            throw in.error(tableStart, "the file is truncated: the data window " + h.dataWindow() + " needs " + chunks + " chunks of "
+                    + h.compression() + " data (at least " + chunks * 16 + " bytes), but " + in.remaining() + " bytes follow the header"
+                    + " (it claims a " + width + "x" + height + " image)");
         }
-        double pixelBytes = (double) h.bytesPerLine() * height;
         double ratio = switch (h.compression()) {
             case NONE -> 1;
             case RLE -> RLE_RATIO;
             default -> ZLIB_RATIO;
         };
-        if (pixelBytes > ratio * in.size()) {
-            throw in.error(String.format(Locale.ROOT, "the header describes a %dx%d image with %d channel(s) (%.3g bytes of"
-                    + " pixels), more than this %d-byte file can hold with %s compression", width, height, h.channels().size(),
-                    pixelBytes, in.size(), h.compression()));
-        }
+        ImageLimits.checkFileHolds(in.file(), width, height, (double) h.bytesPerLine() * height, in.size(), ratio,
+                h.compression() + " compression");
         double chunkBytes = (double) h.bytesPerLine() * Math.min(linesPerChunk, height);
         if (chunkBytes > ImageLimits.MAX_ARRAY) {
             throw in.error(String.format(Locale.ROOT, "a chunk of %.3g bytes is too large to decode", chunkBytes));
@@ -137,6 +133,7 @@ public final class ExrReader {
         long[] offsets = new long[(int) chunks];
         for (int i = 0; i < chunks; i++) {
             offsets[i] = in.u64("the offset table");
+            checkOffset(in, h, offsets, i, in.position() + 8 * (chunks - i - 1));
         }
         ChunkDecoder decoder = new ChunkDecoder(in, h, maxRaw, in.position());
         try {
@@ -148,6 +145,30 @@ public final class ExrReader {
         }
         return new ExrImage(h, new ChannelImage((int) width, (int) height, h.channels().stream().map(ExrHeader.Channel::name).toList(),
                 decoder.data), decoder.compressed);
+    }
+
+    /**
+     * Checks entry {@code i} of the offset table before anything is read there: inside the pixel
+     * data (from {@code tableEnd} to the end of the file, room for a chunk's y and size at least),
+     * and after (INCREASING_Y) or before (DECREASING_Y) the previous chunk's, as the line order
+     * says the chunks are stored; RANDOM_Y chunks may lie in any order.
+     */
+    private static void checkOffset(ExrInput in, ExrHeader h, long[] offsets, int i, long tableEnd) throws ImageFormatException {
+        long offset = offsets[i];
+        long y = (long) h.dataWindow().yMin() + (long) i * h.compression().linesPerChunk();
+        if (offset < tableEnd || offset > in.size() - 8) {
+            throw in.error("chunk " + i + " (y = " + y + "): its offset " + Long.toUnsignedString(offset)
+                    + " in the offset table is outside the pixel data (bytes " + tableEnd + " to " + in.size() + ")");
+        }
+        if (i > 0 && h.lineOrder() != 2) {
+            boolean increasing = h.lineOrder() == 0;
+            long previous = offsets[i - 1];
+            if (increasing ? offset < previous + 8 : offset > previous - 8) {
+                throw in.error("chunk " + i + " (y = " + y + "): its offset " + offset + " in the offset table is not "
+                        + (increasing ? "after" : "before") + " chunk " + (i - 1) + "'s (" + previous + "), but the file's lineOrder is "
+                        + (increasing ? "INCREASING_Y" : "DECREASING_Y") + ": the table is corrupt");
+            }
+        }
     }
 
     /** Reads, decompresses and converts one chunk after the other into {@link #data}. */
@@ -164,6 +185,7 @@ public final class ExrReader {
         byte[] packed = new byte[0];
         int compressed;
         final Inflater inflater = new Inflater();
+        final Piz.Scratch piz = new Piz.Scratch();
 
         ChunkDecoder(ExrInput in, ExrHeader h, int maxRaw, long tableEnd) {
             this.in = in;
@@ -184,11 +206,7 @@ public final class ExrReader {
         void chunk(int index, long offset) throws IOException {
             int linesPerChunk = h.compression().linesPerChunk();
             long expectedY = (long) h.dataWindow().yMin() + (long) index * linesPerChunk;
-            if (offset < tableEnd || offset > in.size() - 8) {
-                throw in.error("chunk " + index + " (y = " + expectedY + "): its offset " + Long.toUnsignedString(offset)
-                        + " in the offset table is outside the pixel data (bytes " + tableEnd + " to " + in.size() + ")");
-            }
-            in.seek(offset);
+            in.seek(offset);                      // inside the file: checkOffset
             int y = in.i32("the y of chunk " + index);
             int size = in.i32("the data size of chunk " + index);
             if (y != expectedY) {
@@ -231,7 +249,7 @@ public final class ExrReader {
                     ExrCodecs.inflate(inflater, packed, size, scratch, rawSize);
                     ExrCodecs.fromPredicted(scratch, raw, rawSize);
                 }
-                case PIZ -> Piz.decode(packed, size, raw, rawSize, width, lines, h.channels());
+                case PIZ -> Piz.decode(packed, size, raw, rawSize, width, lines, h.channels(), piz);
                 default -> throw new IllegalStateException("not a readable compression: " + h.compression());
             }
         }

@@ -1,8 +1,5 @@
 package dev.strahl.codec.exr;
 
-import java.util.ArrayList;
-import java.util.List;
-
 /**
  * The Huffman code of PIZ. The block starts with five little-endian uint32: the smallest and the
  * largest symbol of the code table (the largest is the run-length escape), the table's length in
@@ -21,7 +18,7 @@ import java.util.List;
 final class PizHuffman {
     private static final int MAX_SYMBOL = 1 << 16;       // the escape may be one past the largest 16-bit value
     private static final int MAX_LENGTH = 58;
-    private static final int TABLE_BITS = 14;
+    static final int TABLE_BITS = 14;
     private static final int LONG = -1;                 // a table entry that starts codes longer than TABLE_BITS
 
     private PizHuffman() {
@@ -29,6 +26,11 @@ final class PizHuffman {
 
     /** Decodes {@code in[off, off + length)} into all of {@code out}. */
     static void decode(byte[] in, int off, int length, char[] out) throws CorruptDataException {
+        decode(in, off, length, out, new int[1 << TABLE_BITS]);
+    }
+
+    /** As above, with {@code lookup} (2^TABLE_BITS entries, any content) as the room of the decoding table. */
+    static void decode(byte[] in, int off, int length, char[] out, int[] lookup) throws CorruptDataException {
         if (length == 0) {
             if (out.length != 0) {
                 throw new CorruptDataException("PIZ Huffman data are empty");
@@ -52,7 +54,7 @@ final class PizHuffman {
             throw new CorruptDataException("PIZ Huffman data claim " + bits + " bits, but " + available + " follow");
         }
         long[] codes = canonicalCodes(lengths, (int) first, (int) escape);
-        decodeData(new BitReader(in, dataStart, off + length), bits, lengths, codes, (int) first, (int) escape, out);
+        decodeData(new BitReader(in, dataStart, off + length), bits, lengths, codes, (int) first, (int) escape, out, lookup);
     }
 
     private static long u32(byte[] b, int at) {
@@ -103,11 +105,14 @@ final class PizHuffman {
         return codes;
     }
 
-    private static void decodeData(BitReader r, long bits, int[] lengths, long[] codes, int first, int escape, char[] out)
+    private static void decodeData(BitReader r, long bits, int[] lengths, long[] codes, int first, int escape, char[] out, int[] table)
             throws CorruptDataException {
-        // codes of up to TABLE_BITS bits: one table lookup; longer ones: a short list per prefix
-        int[] table = new int[1 << TABLE_BITS];
-        List<List<Integer>> longCodes = new ArrayList<>();
+        // codes of up to TABLE_BITS bits: one table lookup. Longer ones are found by their length: the
+        // codes of one length are consecutive in symbol order (canonical), so a code of length l is
+        // the symbol at (code - the length's first code) in that length's list, if that is in range.
+        // (A list scan per prefix instead made a hostile table of many long codes cost minutes.)
+        java.util.Arrays.fill(table, 0);
+        int[] longCount = new int[MAX_LENGTH + 1];
         for (int s = first; s <= escape; s++) {
             int l = lengths[s];
             if (l == 0) {
@@ -127,11 +132,23 @@ final class PizHuffman {
                 if (table[prefix] > 0) {
                     throw new CorruptDataException("PIZ Huffman table: two codes share a prefix");
                 }
-                if (table[prefix] == 0) {
-                    table[prefix] = LONG - longCodes.size();
-                    longCodes.add(new ArrayList<>());
+                table[prefix] = LONG;
+                longCount[l]++;
+            }
+        }
+        int[][] longSymbols = new int[MAX_LENGTH + 1][];
+        long[] firstLongCode = new long[MAX_LENGTH + 1];
+        for (int l = TABLE_BITS + 1; l <= MAX_LENGTH; l++) {
+            longSymbols[l] = new int[longCount[l]];
+            longCount[l] = 0;
+        }
+        for (int s = first; s <= escape; s++) {
+            int l = lengths[s];
+            if (l > TABLE_BITS) {
+                if (longCount[l] == 0) {
+                    firstLongCode[l] = codes[s];
                 }
-                longCodes.get(LONG - table[prefix]).add(s);
+                longSymbols[l][longCount[l]++] = s;
             }
         }
         int o = 0;
@@ -143,12 +160,12 @@ final class PizHuffman {
             if (e > 0) {
                 symbol = e >>> 6;
                 l = e & 63;
-            } else if (e < 0) {
-                for (int s : longCodes.get(LONG - e)) {
-                    if (lengths[s] <= left && r.peek(lengths[s]) == codes[s]) {
-                        symbol = s;
-                        l = lengths[s];
-                        break;
+            } else if (e == LONG) {
+                for (int length = TABLE_BITS + 1; length <= MAX_LENGTH && length <= left && symbol < 0; length++) {
+                    long k = r.peek(length) - firstLongCode[length];
+                    if (k >= 0 && k < longCount[length]) {
+                        symbol = longSymbols[length][(int) k];
+                        l = length;
                     }
                 }
             }

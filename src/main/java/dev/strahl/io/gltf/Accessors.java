@@ -1,5 +1,6 @@
 package dev.strahl.io.gltf;
 
+import dev.strahl.codec.ImageLimits;
 import dev.strahl.scene.SceneException;
 import java.nio.ByteBuffer;
 import java.util.List;
@@ -30,7 +31,7 @@ final class Accessors {
         GltfJson a = doc.element("accessors", indexNode);
         int n = components(a);
         if (n != components) {
-            throw a.error(what + " must be of type " + typeName(components) + ", got " + a.require("type").string());
+            throw a.error(what + " must be of type " + typeName(components) + ", got " + a.require("type").quoted());
         }
         int type = componentType(a);
         if (type == UNSIGNED_INT && a.bool("normalized", false)) {
@@ -51,7 +52,7 @@ final class Accessors {
     int[] indices(GltfJson indexNode, int vertexCount) throws SceneException {
         GltfJson a = doc.element("accessors", indexNode);
         if (components(a) != 1) {
-            throw a.error("indices must be of type SCALAR, got " + a.require("type").string());
+            throw a.error("indices must be of type SCALAR, got " + a.require("type").quoted());
         }
         int type = componentType(a);
         if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT) {
@@ -75,29 +76,35 @@ final class Accessors {
 
     private double[] read(GltfJson a, int n, int type, boolean normalized) throws SceneException {
         int count = a.require("count").integer(1, Integer.MAX_VALUE);
-        long values = (long) count * n;
-        if (values * 8 > Runtime.getRuntime().maxMemory() / 2) {
-            throw a.error("count " + count + " is too large for the heap");
-        }
-        double[] out = new double[(int) values];
         int size = size(type);
-        if (a.has("bufferView")) {
-            int view = a.get("bufferView").index(doc.root.array("bufferViews").size());
-            ByteBuffer data = doc.bufferView(view);
-            int element = n * size;
-            int stride = doc.byteStride(view);
+        int element = n * size;
+        ByteBuffer data = null;
+        int view = -1;
+        int stride = element;
+        long offset = 0;
+        if (a.has("bufferView")) {           // the view must hold every element before a value is allocated
+            view = a.get("bufferView").index(doc.root.array("bufferViews").size());
+            data = doc.bufferView(view);
+            stride = doc.byteStride(view);
             if (stride == 0) {
                 stride = element;
             } else if (stride < element) {
                 throw a.error("byteStride " + stride + " of bufferView " + view + " is smaller than an element (" + element + " bytes)");
             }
-            long offset = a.integer("byteOffset", 0, 0, Integer.MAX_VALUE);
+            offset = a.integer("byteOffset", 0, 0, Integer.MAX_VALUE);
             if (offset % size != 0) {
                 throw a.error("byteOffset " + offset + " is not a multiple of the component size " + size);
             }
-            if (offset + (long) (count - 1) * stride + element > data.capacity()) {
-                throw a.error("byteOffset + count × stride past the end of bufferView " + view);
+            long end = offset + (long) (count - 1) * stride + element;
+            if (end > data.capacity()) {
+                throw a.error("byteOffset + count x stride past the end of bufferView " + view + ": count " + count + " of " + element
+                        + "-byte elements " + stride + " bytes apart from byte " + offset + " end at byte " + end + ", the view has "
+                        + data.capacity());
             }
+        }
+        checkHeap(a, count, n);
+        double[] out = new double[count * n];
+        if (data != null) {
             for (int i = 0; i < count; i++) {
                 int base = (int) (offset + (long) i * stride);
                 for (int c = 0; c < n; c++) {
@@ -109,6 +116,22 @@ final class Accessors {
             sparse(a, a.get("sparse"), count, n, type, normalized, out);
         }
         return out;
+    }
+
+    /**
+     * An accessor's values are read as doubles and then kept as floats or ints: 12 bytes per value
+     * while it is read. An accessor without a buffer view (zeros, or a sparse one over zeros) may
+     * claim any count in a few bytes of JSON, so the claim is checked against the heap first.
+     */
+    private static void checkHeap(GltfJson a, int count, int n) throws SceneException {
+        if ((long) count * n > ImageLimits.MAX_ARRAY) {
+            throw a.error("count " + count + " of " + n + " components each is more values than one array holds");
+        }
+        String shortfall = ImageLimits.heapShortfall(12L * count * n);
+        if (shortfall != null) {
+            throw a.error("count " + count + " (" + n + " components each" + (a.has("bufferView") ? "" : ", no bufferView: zeros") + ") "
+                    + shortfall);
+        }
     }
 
     private void sparse(GltfJson a, GltfJson s, int count, int n, int type, boolean normalized, double[] out) throws SceneException {
@@ -143,7 +166,7 @@ final class Accessors {
         ByteBuffer data = doc.bufferView(view);
         long offset = part.integer("byteOffset", 0, 0, Integer.MAX_VALUE);
         if (offset + (long) k * size > data.capacity()) {
-            throw part.error("byteOffset + count × size past the end of bufferView " + view);
+            throw part.error("byteOffset + count x size past the end of bufferView " + view);
         }
         return data.duplicate().position((int) offset).slice().order(java.nio.ByteOrder.LITTLE_ENDIAN);
     }
@@ -202,7 +225,7 @@ final class Accessors {
             case "MAT4":
                 throw t.error("matrix accessors are not used by meshes");
             default:
-                throw t.error("unknown accessor type '" + t.string() + "' (known: " + String.join(", ", List.of("SCALAR", "VEC2", "VEC3", "VEC4")) + ")");
+                throw t.error("unknown accessor type " + t.quoted() + " (known: " + String.join(", ", List.of("SCALAR", "VEC2", "VEC3", "VEC4")) + ")");
         }
     }
 

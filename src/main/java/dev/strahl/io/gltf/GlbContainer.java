@@ -1,5 +1,6 @@
 package dev.strahl.io.gltf;
 
+import dev.strahl.codec.Printable;
 import dev.strahl.scene.SceneException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
@@ -25,13 +26,23 @@ record GlbContainer(byte[] json, int jsonOffset, int jsonLength, ByteBuffer bin)
         return bytes.length >= 4 && ByteBuffer.wrap(bytes).order(ByteOrder.LITTLE_ENDIAN).getInt(0) == MAGIC;
     }
 
+    /** Why a file is not a GLB file, quoting its first bytes (escaped: they may be anything). */
+    static String wrongMagic(byte[] bytes) {
+        if (bytes.length == 0) {
+            return "not a GLB file: it is empty";
+        }
+        boolean json = bytes[0] == '{' || bytes[0] == ' ' || bytes[0] == '\n' || bytes[0] == (byte) 0xEF;
+        return "not a GLB file: it starts with '" + Printable.bytes(bytes, 0, 4) + "' instead of the magic 'glTF'"
+                + (json ? " (a .gltf JSON file under a .glb name?)" : "");
+    }
+
     static GlbContainer read(Path file, byte[] bytes) throws SceneException {
         ByteBuffer b = ByteBuffer.wrap(bytes).order(ByteOrder.LITTLE_ENDIAN);
         if (bytes.length < 12) {
             throw new SceneException(file, "truncated GLB: " + bytes.length + " bytes, the header alone has 12");
         }
         if (b.getInt(0) != MAGIC) {
-            throw new SceneException(file, "not a GLB file (no 'glTF' magic)");
+            throw new SceneException(file, wrongMagic(bytes));
         }
         int version = b.getInt(4);
         if (version != 2) {

@@ -29,17 +29,17 @@ final class GltfCameras {
             GltfJson cam = doc.root.array("cameras").get(placed.element());
             String type = cam.require("type").string();
             if (type.equals("orthographic")) {
-                doc.noteOnce("orthographic camera " + cam.path + " is not supported: skipped");
+                doc.noteOnce("orthographic camera " + cam.path() + " is not supported: skipped");
                 continue;
             }
             if (!type.equals("perspective")) {
-                throw cam.get("type").error("unknown camera type '" + type + "' (known: orthographic, perspective)");
+                throw cam.get("type").error("unknown camera type " + cam.get("type").quoted() + " (known: orthographic, perspective)");
             }
             GltfJson p = cam.require("perspective");
             GltfJson yfovNode = p.require("yfov");
             double yfov = Math.toDegrees(yfovNode.number());
             if (!(yfov > 0 && yfov < 180)) {
-                throw yfovNode.error("yfov must lie in (0, π) radians, got " + yfovNode.number());
+                throw yfovNode.error("yfov must lie in (0, pi) radians, got " + yfovNode.number());
             }
             double aspect = p.number("aspectRatio", 0);
             if (p.has("aspectRatio") && !(aspect > 0 && aspect < 1e4)) {

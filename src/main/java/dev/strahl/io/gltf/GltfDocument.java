@@ -1,5 +1,6 @@
 package dev.strahl.io.gltf;
 
+import dev.strahl.codec.Printable;
 import dev.strahl.scene.SceneException;
 import java.io.IOException;
 import java.net.URLDecoder;
@@ -44,6 +45,9 @@ final class GltfDocument {
     static GltfDocument read(Path file) throws SceneException {
         byte[] bytes = readFile(file, file, "glTF file");
         GltfDocument doc;
+        if (!GlbContainer.isGlb(bytes) && file.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".glb")) {
+            throw new SceneException(file, GlbContainer.wrongMagic(bytes));      // never read a .glb as JSON
+        }
         if (GlbContainer.isGlb(bytes)) {
             GlbContainer glb = GlbContainer.read(file, bytes);
             doc = new GltfDocument(file, GltfJson.parse(file, glb.json(), glb.jsonOffset(), glb.jsonLength()), glb.bin());
@@ -58,18 +62,18 @@ final class GltfDocument {
         GltfJson asset = root.require("asset");
         String version = asset.require("version").string();
         if (!version.startsWith("2.")) {
-            throw asset.get("version").error("glTF version " + version + " is not supported (only 2.x)");
+            throw asset.get("version").error("glTF version " + asset.get("version").quoted() + " is not supported (only 2.x)");
         }
         for (GltfJson e : root.array("extensionsRequired")) {
             String name = e.string();
             if (!SUPPORTED.contains(name)) {
-                throw e.error("required extension " + name + " is not supported" + hint(name));
+                throw e.error("required extension " + Printable.text(name, 64) + " is not supported" + hint(name));
             }
         }
         for (GltfJson e : root.array("extensionsUsed")) {
             String name = e.string();
             if (!SUPPORTED.contains(name)) {
-                noteOnce("extension " + name + " is not supported: ignored");
+                noteOnce("extension " + Printable.text(name, 64) + " is not supported: ignored");
             }
         }
     }
@@ -150,7 +154,7 @@ final class GltfDocument {
         String s = uri.string();
         int comma = s.indexOf(',');
         if (comma < 0) {
-            throw uri.error("malformed data: URI (no comma)");
+            throw uri.error("malformed data: URI (no comma) " + uri.quoted());
         }
         String header = s.substring(5, comma);
         try {
@@ -159,7 +163,7 @@ final class GltfDocument {
             }
             return URLDecoder.decode(s.substring(comma + 1), StandardCharsets.UTF_8).getBytes(StandardCharsets.ISO_8859_1);
         } catch (IllegalArgumentException e) {
-            throw uri.error("malformed data: URI: " + e.getMessage());
+            throw uri.error("malformed data: URI: " + (header.endsWith(";base64") ? "bad base64: " : "") + Printable.text(e.getMessage(), 80));
         }
     }
 
@@ -167,14 +171,14 @@ final class GltfDocument {
     Path resolve(GltfJson uri) throws SceneException {
         String s = uri.string();
         if (s.matches("^[A-Za-z][A-Za-z0-9+.-]*://.*")) {
-            throw uri.error("only relative file URIs and data: URIs are supported, got " + s);
+            throw uri.error("only relative file URIs and data: URIs are supported, got " + Printable.text(s, 80));
         }
         try {
             String decoded = URLDecoder.decode(s.replace("+", "%2B"), StandardCharsets.UTF_8);
             Path folder = file.toAbsolutePath().getParent();
             return folder.resolve(decoded).normalize();
         } catch (IllegalArgumentException e) {            // also InvalidPathException
-            throw uri.error("not a valid file path: " + s);
+            throw uri.error("not a valid file path: " + Printable.text(s, 80));
         }
     }
 
@@ -182,17 +186,18 @@ final class GltfDocument {
     static byte[] readFile(Path path, Path asset, String what) throws SceneException {
         try {
             if (Files.isDirectory(path)) {
-                throw new SceneException(asset, what + " " + path + " is a directory");
+                throw new SceneException(asset, what + " " + Printable.path(path) + " is a directory");
             }
             long size = Files.size(path);
             if (size > Integer.MAX_VALUE - 8) {
-                throw new SceneException(asset, what + " " + path + " is too large (" + size + " bytes; at most 2 GiB)");
+                throw new SceneException(asset, what + " " + Printable.path(path) + " is too large (" + size + " bytes; at most 2 GiB)");
             }
             return Files.readAllBytes(path);
         } catch (NoSuchFileException e) {
-            throw new SceneException(asset, what + " not found: " + path);
+            throw new SceneException(asset, what + " not found: " + Printable.path(path));
         } catch (IOException e) {
-            throw new SceneException(asset, "cannot read " + what + " " + path + ": " + e.getMessage(), e);
+            String why = e instanceof java.nio.file.AccessDeniedException ? "permission denied" : Printable.text(String.valueOf(e.getMessage()), 80);
+            throw new SceneException(asset, "cannot read " + what + " " + Printable.path(path) + ": " + why, e);
         }
     }
 }

@@ -2,10 +2,11 @@ package dev.strahl.io.gltf;
 
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonParser;
+import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.core.JsonToken;
 import com.fasterxml.jackson.core.StreamReadFeature;
 import com.fasterxml.jackson.core.exc.StreamConstraintsException;
-import com.fasterxml.jackson.core.JsonProcessingException;
+import dev.strahl.codec.Printable;
 import dev.strahl.io.text.JsonTypes;
 import dev.strahl.scene.SceneException;
 import java.io.IOException;
@@ -24,12 +25,33 @@ import java.util.Map;
 final class GltfJson {
     private final Path file;
     private final Object value;          // Map<String, GltfJson>, List<GltfJson>, Double, String, Boolean or null
-    final String path;
+    private final GltfJson parent;       // null for the root
+    private final String key;            // the member's name in its parent object, or null in an array
+    private final int index;             // the element's index in its parent array
 
-    private GltfJson(Path file, Object value, String path) {
+    private GltfJson(Path file, Object value, GltfJson parent, String key, int index) {
         this.file = file;
         this.value = value;
-        this.path = path;
+        this.parent = parent;
+        this.key = key;
+        this.index = index;
+    }
+
+    /**
+     * The JSON path, {@code meshes[0].primitives[1].indices}, made when a message needs it (a path
+     * per value would take more memory than the values); a name from the file that is not a plain
+     * identifier is quoted, printable.
+     */
+    String path() {
+        if (parent == null) {
+            return "";
+        }
+        String up = parent.path();
+        if (key == null) {
+            return up + "[" + index + "]";
+        }
+        String name = key.matches("[A-Za-z0-9_]{1,64}") ? key : Printable.quote(key);
+        return up.isEmpty() ? name : up + "." + name;
     }
 
     /** Parses a whole document; malformed JSON is an error naming the line and column. */
@@ -40,61 +62,69 @@ final class GltfJson {
             if (p.nextToken() == null) {
                 throw new SceneException(file, "empty glTF JSON");
             }
-            GltfJson root = read(p, file, "");
+            GltfJson root = read(p, file, null, null, 0);
             if (p.nextToken() != null) {
                 throw new SceneException(file, "malformed JSON: content after the end of the root object");
             }
             return root;
         } catch (StreamConstraintsException e) {
-            throw new SceneException(file, "malformed JSON: " + firstLine(e.getOriginalMessage()));
+            throw new SceneException(file, "malformed JSON: " + parserMessage(e.getOriginalMessage()));
         } catch (JsonProcessingException e) {
             int line = e.getLocation() == null ? 0 : e.getLocation().getLineNr();
             String where = line > 0 ? "line " + line + ", column " + e.getLocation().getColumnNr() + ": " : "";
-            throw new SceneException(file, "malformed JSON: " + where + firstLine(e.getOriginalMessage()));
+            throw new SceneException(file, "malformed JSON: " + where + parserMessage(e.getOriginalMessage()));
         } catch (IOException e) {
-            throw new SceneException(file, "cannot parse: " + e.getMessage(), e);
+            throw new SceneException(file, "cannot parse: " + parserMessage(e.getMessage()), e);
         }
     }
 
-    private static String firstLine(String msg) {
-        int nl = msg.indexOf('\n');
-        return nl >= 0 ? msg.substring(0, nl) : msg;
+    /**
+     * The parser's message, first line, printable: Jackson quotes the token it trips over, which in
+     * a binary file is raw bytes (control characters among them).
+     */
+    private static String parserMessage(String msg) {
+        String m = String.valueOf(msg);
+        int nl = m.indexOf('\n');
+        return Printable.text(nl >= 0 ? m.substring(0, nl) : m, 200);
     }
 
-    private static GltfJson read(JsonParser p, Path file, String path) throws IOException {
+    private static GltfJson read(JsonParser p, Path file, GltfJson parent, String key, int index) throws IOException {
         JsonToken t = p.currentToken();
         switch (t) {
             case START_OBJECT: {
                 Map<String, GltfJson> map = new LinkedHashMap<>();
+                GltfJson object = new GltfJson(file, map, parent, key, index);
                 while (p.nextToken() == JsonToken.FIELD_NAME) {
-                    String key = p.currentName();
+                    String name = p.currentName();
                     p.nextToken();
-                    map.put(key, read(p, file, path.isEmpty() ? key : path + "." + key));
+                    map.put(name, read(p, file, object, name, 0));
                 }
-                return new GltfJson(file, map, path);
+                return object;
             }
             case START_ARRAY: {
                 List<GltfJson> list = new ArrayList<>();
+                GltfJson array = new GltfJson(file, list, parent, key, index);
                 while (p.nextToken() != JsonToken.END_ARRAY) {
-                    list.add(read(p, file, path + "[" + list.size() + "]"));
+                    list.add(read(p, file, array, null, list.size()));
                 }
-                return new GltfJson(file, list, path);
+                return array;
             }
             case VALUE_NUMBER_INT:
             case VALUE_NUMBER_FLOAT:
-                return new GltfJson(file, p.getDoubleValue(), path);
+                return new GltfJson(file, p.getDoubleValue(), parent, key, index);
             case VALUE_STRING:
-                return new GltfJson(file, p.getText(), path);
+                return new GltfJson(file, p.getText(), parent, key, index);
             case VALUE_TRUE:
             case VALUE_FALSE:
-                return new GltfJson(file, p.getBooleanValue(), path);
+                return new GltfJson(file, p.getBooleanValue(), parent, key, index);
             default:
-                return new GltfJson(file, null, path);
+                return new GltfJson(file, null, parent, key, index);
         }
     }
 
     /** An error about this element: {@code file: path: message}. */
     SceneException error(String message) {
+        String path = path();
         return new SceneException(file, (path.isEmpty() ? "" : path + ": ") + message);
     }
 
@@ -144,6 +174,11 @@ final class GltfJson {
             throw error("must be a string, got " + typeName());
         }
         return s;
+    }
+
+    /** This string as a message may quote it: a few characters, printable ({@link Printable#quote}). */
+    String quoted() throws SceneException {
+        return Printable.quote(string());
     }
 
     String string(String key, String otherwise) throws SceneException {

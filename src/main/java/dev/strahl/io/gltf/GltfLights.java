@@ -73,16 +73,19 @@ final class GltfLights {
                         outer = spot.number("outerConeAngle", Math.PI / 4);
                     }
                     if (!(inner >= 0 && inner < outer && outer <= Math.PI / 2)) {
-                        throw (spot != null ? spot : def).error("cone angles must satisfy 0 <= innerConeAngle < outerConeAngle <= π/2, got "
+                        throw (spot != null ? spot : def).error("cone angles must satisfy 0 <= innerConeAngle < outerConeAngle <= pi/2, got "
                                 + inner + " and " + outer);
+                    }
+                    if (Math.cos(outer) == 1) {          // narrower than a double's cosine tells apart from a ray
+                        throw spot.error("outerConeAngle " + outer + " is too narrow (its cosine is 1: the narrowest cone is about 1.5e-8)");
                     }
                     break;
                 }
                 default:
-                    throw def.get("type").error("unknown light type '" + type + "' (known: directional, point, spot)");
+                    throw def.get("type").error("unknown light type " + def.get("type").quoted() + " (known: directional, point, spot)");
             }
             if (!position.isFinite() || !direction.isFinite() || !Double.isFinite(power.r() + power.g() + power.b())) {
-                throw def.error("the light of nodes[" + p.node() + "] is not finite (its node's transform or color × intensity overflows)");
+                throw def.error("the light of nodes[" + p.node() + "] is not finite (its node's transform or color x intensity overflows)");
             }
             if (kind != Kind.POINT && !(direction.lengthSquared() > 1e-24)) {
                 throw def.error("the node of this light (nodes[" + p.node() + "]) scales its direction to nothing");

@@ -1,5 +1,6 @@
 package dev.strahl.io.gltf;
 
+import dev.strahl.codec.Printable;
 import dev.strahl.image.Rgb;
 import dev.strahl.scene.Material;
 import dev.strahl.scene.SceneException;
@@ -50,7 +51,7 @@ final class GltfMaterials {
             try {
                 done = build(m, m.string("name", "materials[" + index + "]"));
             } catch (IllegalArgumentException e) {
-                throw m.error(e.getMessage());
+                throw m.error(Printable.line(e.getMessage()));
             }
             built.put(index, done);
         }
@@ -115,7 +116,7 @@ final class GltfMaterials {
         if (ior != null) {
             double value = ior.number("ior", 1.5);
             if (value == 0) {
-                doc.noteOnce(ior.path + ": ior 0 (a perfect mirror) is not supported: 1.5 used");
+                doc.noteOnce(ior.path() + ": ior 0 (a perfect mirror) is not supported: 1.5 used");
             } else if (!(value >= 1) || !Double.isFinite(value)) {
                 throw ior.error("ior must be >= 1 (or 0), got " + value);
             } else {
@@ -139,14 +140,14 @@ final class GltfMaterials {
     private Material alphaCutout(GltfJson m, Material material, double factor, String name) throws SceneException {
         String alpha = m.string("alphaMode", "OPAQUE");
         if (!alpha.equals("OPAQUE") && !alpha.equals("MASK") && !alpha.equals("BLEND")) {
-            throw m.get("alphaMode").error("unknown alphaMode '" + alpha + "' (known: OPAQUE, MASK, BLEND)");
+            throw m.get("alphaMode").error("unknown alphaMode " + m.get("alphaMode").quoted() + " (known: OPAQUE, MASK, BLEND)");
         }
         if (alpha.equals("OPAQUE")) {
             return material;
         }
         double cutoff = 0.5;
         if (alpha.equals("BLEND")) {
-            doc.noteOnce("alphaMode BLEND is rendered as MASK with alphaCutoff 0.5 (" + m.path + ")");
+            doc.noteOnce("alphaMode BLEND is rendered as MASK with alphaCutoff 0.5 (" + m.path() + ")");
         } else {
             cutoff = m.number("alphaCutoff", 0.5);
             if (!(cutoff >= 0) || !Double.isFinite(cutoff)) {
@@ -224,7 +225,7 @@ final class GltfMaterials {
             }
         }
         if (sets.size() > 1) {
-            doc.noteOnce(m.path + ": its textures read " + sets.stream().map(s -> "TEXCOORD_" + s).collect(Collectors.joining(" and "))
+            doc.noteOnce(m.path() + ": its textures read " + sets.stream().map(s -> "TEXCOORD_" + s).collect(Collectors.joining(" and "))
                     + "; strahl keeps one coordinate set per mesh, so all read TEXCOORD_" + chosen + " (the " + chosenKey + "'s)");
         }
         int set = Math.max(chosen, 0);

@@ -97,7 +97,7 @@ final class GltfMeshes {
                 uvs[i] = 1 - uvs[i];
             }
         } else if (!uvKey.equals("TEXCOORD_0")) {
-            doc.noteOnce("warning: " + p.path + " has no " + uvKey + ", which its material's textures read: it has no texture coordinates");
+            doc.noteOnce("warning: " + p.path() + " has no " + uvKey + ", which its material's textures read: it has no texture coordinates");
         }
         int[] order;
         if (p.has("indices")) {

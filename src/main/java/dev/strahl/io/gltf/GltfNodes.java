@@ -1,7 +1,9 @@
 package dev.strahl.io.gltf;
 
 import dev.strahl.scene.SceneException;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Deque;
 import java.util.List;
 import org.joml.Matrix4d;
 import org.joml.Quaterniond;
@@ -15,6 +17,9 @@ import org.joml.Quaterniond;
 final class GltfNodes {
     /** A node that places something: the node's index, its world matrix and the placed element. */
     record Placed(int node, Matrix4d world, int element) {}
+
+    /** A node still to visit, with its parent's world matrix. */
+    private record Pending(int node, Matrix4d parentWorld) {}
 
     final List<Placed> meshes = new ArrayList<>();
     final List<Placed> cameras = new ArrayList<>();
@@ -61,29 +66,41 @@ final class GltfNodes {
         return nodes;
     }
 
-    private void visit(int index, Matrix4d parent) throws SceneException {
-        GltfJson node = doc.root.array("nodes").get(index);
-        if (visited[index]) {
-            throw node.error("is reached twice in the node hierarchy (a cycle, or more than one parent)");
-        }
-        visited[index] = true;
-        Matrix4d world = new Matrix4d(parent).mul(local(node));
-        if (node.has("mesh")) {
-            meshes.add(new Placed(index, world, node.get("mesh").index(doc.root.array("meshes").size())));
-        }
-        if (node.has("camera")) {
-            cameras.add(new Placed(index, world, node.get("camera").index(doc.root.array("cameras").size())));
-        }
-        GltfJson ext = node.get("extensions");
-        if (ext != null && ext.has("KHR_lights_punctual")) {
-            GltfJson light = ext.get("KHR_lights_punctual").require("light");
-            lights.add(new Placed(index, world, light.index(GltfLights.definitions(doc).size())));
-        }
-        if (node.has("skin")) {
-            doc.noteOnce("skins are ignored (meshes are rendered in their bind pose)");
-        }
-        for (GltfJson c : node.array("children")) {
-            visit(c.index(visited.length), world);
+    /**
+     * Walks the tree under node {@code root} depth first, with a stack of its own: a hierarchy may be
+     * as deep as the asset has nodes (a chain of 100 000 is a few megabytes of JSON), which recursion
+     * would answer with a StackOverflowError. Children are visited in their order, as before.
+     */
+    private void visit(int root, Matrix4d placement) throws SceneException {
+        Deque<Pending> stack = new ArrayDeque<>();
+        stack.push(new Pending(root, placement));
+        while (!stack.isEmpty()) {
+            Pending top = stack.pop();
+            int index = top.node();
+            GltfJson node = doc.root.array("nodes").get(index);
+            if (visited[index]) {
+                throw node.error("is reached twice in the node hierarchy (a cycle, or more than one parent)");
+            }
+            visited[index] = true;
+            Matrix4d world = new Matrix4d(top.parentWorld()).mul(local(node));
+            if (node.has("mesh")) {
+                meshes.add(new Placed(index, world, node.get("mesh").index(doc.root.array("meshes").size())));
+            }
+            if (node.has("camera")) {
+                cameras.add(new Placed(index, world, node.get("camera").index(doc.root.array("cameras").size())));
+            }
+            GltfJson ext = node.get("extensions");
+            if (ext != null && ext.has("KHR_lights_punctual")) {
+                GltfJson light = ext.get("KHR_lights_punctual").require("light");
+                lights.add(new Placed(index, world, light.index(GltfLights.definitions(doc).size())));
+            }
+            if (node.has("skin")) {
+                doc.noteOnce("skins are ignored (meshes are rendered in their bind pose)");
+            }
+            List<GltfJson> children = node.array("children");
+            for (int c = children.size() - 1; c >= 0; c--) {      // pushed last first: visited first to last
+                stack.push(new Pending(children.get(c).index(visited.length), world));
+            }
         }
     }
 

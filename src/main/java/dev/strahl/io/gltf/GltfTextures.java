@@ -1,5 +1,7 @@
 package dev.strahl.io.gltf;
 
+import dev.strahl.codec.Printable;
+import dev.strahl.files.FileReads;
 import dev.strahl.scene.SceneException;
 import dev.strahl.scene.Texture;
 import java.io.IOException;
@@ -18,8 +20,9 @@ import java.util.Map;
  * r, scale s, in glTF's top-left coordinates) becomes scale s, rotation r and offset
  * (o_u + s_v sin r, 1 − s_v cos r − o_v) here (see {@link #transformed}). Which coordinate set a
  * texture reads ({@link #texCoord}) is the mesh's business: {@link GltfMaterials#uvSet}. An image
- * that is missing or cannot be decoded is a warning, as in MTL files: the material keeps its
- * factors. Embedded images are written once to a temporary file, as strahl's textures are files.
+ * file that is missing is a warning, as in MTL files: the material keeps its factors; an image that
+ * cannot be decoded (a file, a data: URI or a buffer view) is an error naming the asset, the image
+ * and the file. Embedded images are written once to a temporary file, as strahl's textures are files.
  */
 final class GltfTextures {
     static final int CLAMP_TO_EDGE = 33071;
@@ -45,8 +48,8 @@ final class GltfTextures {
         GltfJson source = textureNode.get("source");
         if (source == null) {
             GltfJson ext = textureNode.get("extensions");
-            doc.noteOnce("warning: " + textureNode.path + " has no PNG or JPEG source"
-                    + (ext != null ? " (extensions " + String.join(", ", ext.object().keySet()) + ")" : "") + ": ignored");
+            doc.noteOnce("warning: " + textureNode.path() + " has no PNG or JPEG source"
+                    + (ext != null ? " (extensions " + Printable.text(String.join(", ", ext.object().keySet()), 80) + ")" : "") + ": ignored");
             return null;
         }
         int imageIndex = source.index(doc.root.array("images").size());
@@ -59,7 +62,7 @@ final class GltfTextures {
             int s = sampler.integer("wrapS", REPEAT, 0, Integer.MAX_VALUE);
             int tt = sampler.integer("wrapT", REPEAT, 0, Integer.MAX_VALUE);
             if (s != tt) {
-                doc.noteOnce(sampler.path + ": wrapS and wrapT differ; strahl wraps both axes alike, by wrapS");
+                doc.noteOnce(sampler.path() + ": wrapS and wrapT differ; strahl wraps both axes alike, by wrapS");
             }
             t = wrapped(t, sampler, s);
         }
@@ -128,14 +131,22 @@ final class GltfTextures {
         }
         GltfJson image = doc.root.array("images").get(index);
         Path path;
+        String embedded = null;               // how the image is embedded, or null for a file of its own
         if (image.has("uri")) {
             GltfJson uri = image.get("uri");
-            path = uri.string().startsWith("data:") ? embedded(index, GltfDocument.decodeDataUri(uri)) : doc.resolve(uri);
+            if (uri.string().startsWith("data:")) {
+                embedded = "embedded as a data: URI";
+                path = embedded(index, GltfDocument.decodeDataUri(uri));
+            } else {
+                path = doc.resolve(uri);
+            }
         } else {
             GltfJson view = image.require("bufferView");
-            ByteBuffer data = doc.bufferView(view.index(doc.root.array("bufferViews").size()));
+            int viewIndex = view.index(doc.root.array("bufferViews").size());
+            ByteBuffer data = doc.bufferView(viewIndex);
             byte[] bytes = new byte[data.remaining()];
             data.duplicate().get(bytes);
+            embedded = "embedded in bufferView " + viewIndex;
             path = embedded(index, bytes);
         }
         try {
@@ -143,23 +154,59 @@ final class GltfTextures {
             images.put(index, t);
             return t;
         } catch (NoSuchFileException e) {
-            doc.notes.add("warning: material '" + material + "': image not found: " + path + " (" + image.path + ", ignored)");
-        } catch (IOException | RuntimeException e) {
-            doc.notes.add("warning: material '" + material + "': " + image.path + " cannot be read (" + e.getMessage() + "), ignored");
+            // a missing image is a warning, as in MTL files and scene files; a corrupt one is an error
+            doc.notes.add("warning: material " + Printable.quote(material) + ": image not found: " + Printable.path(path) + " ("
+                    + image.path() + ", ignored)");
+        } catch (IOException e) {
+            String m = String.valueOf(e.getMessage());
+            String prefix = path + ": ";
+            if (embedded != null) {          // the temporary file's name means nothing to the user
+                m = "(" + embedded + ") " + (m.startsWith(prefix) ? m.substring(prefix.length()) : m);
+            }
+            throw new SceneException(doc.file, image.path() + ": cannot read the texture image of material " + Printable.quote(material)
+                    + ": " + Printable.line(m), e);
+        } finally {
+            if (embedded != null) {
+                forget(path);
+            }
         }
         failed.put(index, true);
         return null;
+    }
+
+    /**
+     * Deletes an embedded image's temporary file once it is read (its pixels are in memory), so that a
+     * process that loads many assets (the viewer, a server, the fuzzer) leaves no files behind; kept
+     * (until exit) only while a cluster render records the scene's files, which ships them.
+     */
+    private void forget(Path file) {
+        if (FileReads.isRecording()) {
+            return;
+        }
+        try {
+            Files.deleteIfExists(file);
+            if (tempFolder != null) {
+                Files.deleteIfExists(tempFolder);       // once empty
+                tempFolder = null;
+            }
+        } catch (IOException e) {
+            // not empty (another image of this asset is being read), or gone: the exit hook or the next call removes it
+        }
     }
 
     private Path embedded(int index, byte[] bytes) throws SceneException {
         try {
             if (tempFolder == null) {
                 tempFolder = Files.createTempDirectory("strahl-gltf");
-                tempFolder.toFile().deleteOnExit();
+                if (FileReads.isRecording()) {
+                    tempFolder.toFile().deleteOnExit();
+                }
             }
             Path f = tempFolder.resolve("image" + index);
             Files.write(f, bytes);
-            f.toFile().deleteOnExit();
+            if (FileReads.isRecording()) {
+                f.toFile().deleteOnExit();
+            }
             return f;
         } catch (IOException e) {
             throw new SceneException(doc.file, "cannot store embedded image " + index + " in a temporary file: " + e.getMessage(), e);

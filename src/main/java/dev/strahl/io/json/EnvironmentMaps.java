@@ -66,7 +66,11 @@ public final class EnvironmentMaps {
             if (image.height() < 2) {
                 throw new SceneException(file, "an environment map needs at least 2 rows, this one has " + image.height());
             }
-            ImageLimits.checkAllocation(file, image.width(), image.height(), BYTES_PER_TEXEL / Float.BYTES, 0);
+            String shortfall = ImageLimits.heapShortfall((long) BYTES_PER_TEXEL * image.width() * image.height());
+            if (shortfall != null) {
+                throw new SceneException(file, "a " + image.width() + "x" + image.height() + " environment map (" + BYTES_PER_TEXEL
+                        + " bytes a texel: its texels and sampling tables) " + shortfall);
+            }
             return image;
         } catch (ImageFormatException e) {
             throw asSceneException(file, e);

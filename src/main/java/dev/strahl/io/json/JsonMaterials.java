@@ -8,7 +8,6 @@ import dev.strahl.io.json.SceneDescription.TextureRef;
 import dev.strahl.scene.Material;
 import dev.strahl.scene.SceneException;
 import java.nio.file.Path;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 
@@ -147,11 +146,7 @@ final class JsonMaterials {
     private TextureRef textureRef(JsonNode node, String key, boolean colour) throws SceneException {
         Map<String, JsonNode> t = v.object(node, key);
         v.allowOnly(t, key, colour ? TEXTURE_KEYS : Set.of("texture", "uvScale"));
-        String name = v.string(v.require(t, "texture", node), key + ".texture");
-        String lower = name.toLowerCase(Locale.ROOT);
-        if (!lower.endsWith(".png") && !lower.endsWith(".jpg") && !lower.endsWith(".jpeg")) {
-            throw new SceneException(file, t.get("texture").line, "'" + key + ".texture' must name a .png, .jpg or .jpeg image, got '" + name + "'");
-        }
+        String name = v.string(v.require(t, "texture", node), key + ".texture");       // PNG or JPEG: told by content when read
         double su = 1, sv = 1;
         if (t.containsKey("uvScale")) {
             double[] s = v.numbers(t.get("uvScale"), key + ".uvScale", 2);

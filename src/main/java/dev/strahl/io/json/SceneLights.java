@@ -68,6 +68,10 @@ final class SceneLights {
             throw v.error(m.containsKey("outerCone") ? m.get("outerCone") : node,
                     "'" + key + ".outerCone' must lie in (0, 90] degrees, got " + JsonValues.format(outer));
         }
+        if (Math.cos(Math.toRadians(outer)) == 1) {          // narrower than a double's cosine tells apart from a ray
+            throw v.error(m.get("outerCone"), "'" + key + ".outerCone' of " + JsonValues.format(outer) + " degrees is too narrow"
+                    + " (its cosine is 1: the narrowest cone is about 1e-6 degrees)");
+        }
         if (!(inner >= 0 && inner <= outer)) {
             throw v.error(m.containsKey("innerCone") ? m.get("innerCone") : node,
                     "'" + key + ".innerCone' must lie in [0, outerCone] = [0, " + JsonValues.format(outer) + "] degrees, got "

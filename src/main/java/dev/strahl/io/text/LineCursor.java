@@ -1,5 +1,6 @@
 package dev.strahl.io.text;
 
+import dev.strahl.codec.Printable;
 import java.nio.file.Path;
 
 /**
@@ -95,7 +96,8 @@ public final class LineCursor<E extends Exception> {
         return "'" + abbreviate(s) + "'";
     }
 
+    /** At most {@code QUOTE_MAX} characters of {@code s}, invisible ones (control characters of a binary file) escaped. */
     public static String abbreviate(String s) {
-        return s.length() <= QUOTE_MAX ? s : s.substring(0, QUOTE_MAX) + "...";
+        return Printable.line(s.length() <= QUOTE_MAX ? s : s.substring(0, QUOTE_MAX)) + (s.length() <= QUOTE_MAX ? "" : "...");
     }
 }

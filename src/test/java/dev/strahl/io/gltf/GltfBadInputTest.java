@@ -56,7 +56,8 @@ class GltfBadInputTest {
         @SuppressWarnings("unchecked")
         Map<String, Object> positions = (Map<String, Object>) w.list("accessors").get(0);
         positions.put("count", 5);
-        assertThat(refused("a.glb", w.glb())).isEqualTo("accessors[0]: byteOffset + count × stride past the end of bufferView 0");
+        assertThat(refused("a.glb", w.glb())).isEqualTo("accessors[0]: byteOffset + count x stride past the end of bufferView 0: count 5 of 12-byte elements 12 bytes apart"
+                + " from byte 0 end at byte 60, the view has 48");
     }
 
     @Test

@@ -91,6 +91,32 @@ class GltfMaterialsTest {
         }
     }
 
+    /** Embedded images go through a temporary file (textures are files), deleted once read; kept while a cluster render records. */
+    @Test
+    void embeddedImagesLeaveNoTemporaryFileBehind() throws Exception {
+        GltfWriter w = textured(map("pbrMetallicRoughness", map("baseColorTexture", map("index", 0)), "name", "img"));
+        w.add("images", map("bufferView", w.view(redOverGreen(), null), "mimeType", "image/png"));
+        w.add("textures", map("source", 0));
+        Path glb = w.writeGlb(dir.resolve("tex.glb"));
+        Path tmp = Path.of(System.getProperty("java.io.tmpdir"));
+        java.util.function.Supplier<List<Path>> folders = () -> {
+            try (var list = Files.list(tmp)) {
+                return list.filter(f -> f.getFileName().toString().startsWith("strahl-gltf")).toList();
+            } catch (java.io.IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+        };
+        List<Path> before = folders.get();
+        SceneLoader.load(glb);
+        assertThat(folders.get()).as("temporary folders").isEqualTo(before);
+        java.util.Set<Path> recorded = new java.util.TreeSet<>();
+        dev.strahl.files.FileReads.recording(recorded, () -> SceneLoader.load(glb));
+        Path image = recorded.stream().filter(f -> f.getFileName().toString().equals("image0")).findFirst().orElseThrow();
+        assertThat(image).as("kept for the cluster to ship").isRegularFile();
+        Files.delete(image);
+        Files.delete(image.getParent());
+    }
+
     @Test
     void anEmbeddedTextureReadsWithGltfsTopLeftOrigin() throws Exception {
         GltfWriter w = textured(map("pbrMetallicRoughness", map("baseColorTexture", map("index", 0)), "name", "img"));
