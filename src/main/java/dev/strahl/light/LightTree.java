@@ -70,9 +70,6 @@ final class LightTree {
     /** The deepest leaf's depth (the root's is 0). */
     int maxDepth() {
         int deepest = 0;
-        for (long path : paths) {
-            deepest = Math.max(deepest, 64 - Long.numberOfLeadingZeros(path));
-        }
         for (int e = 0; e < paths.length; e++) {
             int node = 0, depth = 0;
             while (child[node] >= 0) {

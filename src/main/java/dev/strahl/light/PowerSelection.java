@@ -123,19 +123,11 @@ final class PowerSelection {
             }
             u = Math.min((u - pPunctualShare) / (1 - pPunctualShare), Math.nextDown(1.0));
         }
-        out.infinite = false;
-        out.delta = false;
-        geometry.samplePoint(prims[select(cdf, u)], u1, u2, scratch);
-        int m = scratch.material;
-        out.p.set(scratch.p);
-        out.ng.set(scratch.ng);
-        if (out.aim(ref, out.p.x, out.p.y, out.p.z) == 0) {
-            return false;
-        }
-        double cosLight = -out.ng.dot(out.wi);
+        double cosLight = out.aimAtAreaLight(geometry, prims[select(cdf, u)], ref, u1, u2, scratch);
         if (cosLight <= 0) {
             return false;
         }
+        int m = scratch.material;
         double dist = out.distance;
         out.pdf = pLocal * (1 - pPunctualShare) * density[m] * dist * dist / cosLight;
         emission[m].eval(scratch.uv, out.radiance);

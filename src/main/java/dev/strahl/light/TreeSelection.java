@@ -106,15 +106,7 @@ final class TreeSelection {
             out.pdf = choice;
             return local[e - prims.length].illuminate(ref, out) && out.pdf > 0;
         }
-        out.infinite = false;
-        out.delta = false;
-        geometry.samplePoint(prims[e], u1, u2, scratch);
-        out.p.set(scratch.p);
-        out.ng.set(scratch.ng);
-        if (out.aim(ref, out.p.x, out.p.y, out.p.z) == 0) {
-            return false;
-        }
-        double cosLight = -out.ng.dot(out.wi);
+        double cosLight = out.aimAtAreaLight(geometry, prims[e], ref, u1, u2, scratch);
         if (cosLight <= 0) {
             return false;
         }
