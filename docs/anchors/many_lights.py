@@ -15,7 +15,7 @@ spheres standing among them (--props). Mitsuba 3.9.1 picks an emitter uniformly;
     for s in 1 2; do for sel in tree power; do
       java -jar target/strahl.jar render docs/anchors/many-lights/floor.json --spp 64 --seed $s \\
           --light-selection $sel -o /tmp/ml/strahl-$sel-$s.pfm -q; done; done
-    python3 docs/anchors/many_lights.py compare /tmp/ml/ref.exr /tmp/ml/mitsuba-*.exr /tmp/ml/strahl-*.pfm
+    python3 docs/anchors/many_lights.py compare /tmp/ml/ref.exr /tmp/ml/mitsuba/mitsuba-64spp-*.exr /tmp/ml/strahl-*.pfm
 
 relMSE = mean over pixels and channels of (x - ref)^2 / (ref^2 + 0.01), as everywhere in docs/.
 """

@@ -316,7 +316,7 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
      * These settings with lights chosen by the light tree or by power. By power is a teaching
      * option, the choice before the tree: a light is picked in proportion to its power wherever
      * the shading point is, so a point beside one of hundreds of lamps still samples the far ones
-     * almost every time; same image, more noise (docs/scenes.md, many lights).
+     * almost every time; same image, more noise (docs/integrators.md, many lights).
      *
      * @param tree true for the light tree (the default), false for power alone
      * @return a new settings object
