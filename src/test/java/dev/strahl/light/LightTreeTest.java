@@ -200,9 +200,9 @@ class LightTreeTest {
     /**
      * The docs' many-lights floor (16 × 16 lamps of two triangles, pitch 0.5, 0.35 above the
      * floor): at random floor points the variance of the tree's choice relative to what each lamp
-     * gives there (c = cos·cos/d², a lamp as a point), Σ c²/P / (Σ c)² − 1, is 0.43, against 62
+     * gives there (c = cos·cos/d², a lamp as a point), Σ c²/P / (Σ c)² − 1, is about 0.4, against 62
      * for a uniform choice (power: the lamps are equal). The bound 0.6 also fails the tree that
-     * estimates by the distance to a node's centre alone (0.83).
+     * estimates by the distance to a node's centre alone (0.81 at these points).
      */
     @Test
     void aCeilingOfLampsIsChosenNearlyAsTheLampsGive() {
