@@ -68,6 +68,7 @@ final class StatsFile {
             json.writeStringField("kernel", settings.execution().bruteForce() ? "brute force" : "bvh8, " + Simd.describe(Simd.enabled()));
             json.writeStringField("schedule", settings.execution().stripes() ? "stripes" : "tiles");
             json.writeStringField("shadows", settings.transport().shadows() ? "on" : "off");
+            json.writeStringField("light_selection", settings.transport().lightTree() ? "tree" : "power");
             json.writeNumberField("texture_bytes", textureBytes);
             json.writeObjectFieldStart("settings");
             for (var e : settings.entries().entrySet()) {

@@ -87,7 +87,7 @@ public final class DirectLight {
         for (int i = 0; i < n; i++) {
             sampler.get2D(uPoint);                 // the point on the light: one stratified pair
             double uLight = sampler.get1D();
-            if (!estimate || !lights.sample(s.sp.p, uLight, uPoint.u1, uPoint.u2, lightAlone, lightPoint, ls)) {
+            if (!estimate || !lights.sample(s.sp.p, s.sp.n, uLight, uPoint.u1, uPoint.u2, lightAlone, lightPoint, ls)) {
                 continue;
             }
             s.frame.toLocal(ls.wi, wiLocal);

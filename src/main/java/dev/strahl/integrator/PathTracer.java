@@ -7,6 +7,7 @@ import dev.strahl.material.BsdfSample;
 import dev.strahl.math.MathUtil;
 import dev.strahl.sampling.Sampler;
 import dev.strahl.world.World;
+import org.joml.Vector3d;
 
 /**
  * Unidirectional path tracing with next-event estimation and multiple importance sampling
@@ -76,6 +77,7 @@ public final class PathTracer implements Integrator {
     private final class PathWorker extends TracingWorker {
         private final Shading s = new Shading();
         private final MutableRgb beta = new MutableRgb();
+        private final Vector3d prevP = new Vector3d(), prevN = new Vector3d();   // where the BSDF sample left from: the light tree's choice there
 
         PathWorker() {
             super(world, bsdfs, cullBackFaces);
@@ -105,7 +107,7 @@ public final class PathTracer implements Integrator {
                     double w = 1;
                     if (!prevDelta && strategy != Strategy.BSDF) {
                         w = strategy != Strategy.MIS ? 0
-                                : MathUtil.powerHeuristic(prevPdf, lights.pdf(s.sp.material, t, s.cosEmitter));
+                                : MathUtil.powerHeuristic(prevPdf, lights.pdf(prevP, prevN, s.sp.prim, t, s.cosEmitter));
                     }
                     out.addProduct(beta, s.emitted, w);
                 }
@@ -123,6 +125,8 @@ public final class PathTracer implements Integrator {
                 etaScale *= bs.eta * bs.eta;
                 prevPdf = bs.pdf;
                 prevDelta = bs.delta;
+                prevP.set(s.sp.p);
+                prevN.set(s.sp.n);
                 s.spawn(ray, s.wi);
 
                 if (depth >= RR_DEPTH) {

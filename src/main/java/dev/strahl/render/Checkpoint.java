@@ -59,7 +59,7 @@ import java.util.zip.CheckedOutputStream;
  * the target samples per pixel (a render may be resumed to go further), the thread count, the
  * pass size and the time limit. Every other setting, including any added later, is part of it;
  * a checkpoint written before a setting existed is compared as if it held the value it was
- * rendered with ({@link #ADDED_LATER}: shadows, true; no noise threshold), so it still resumes.
+ * rendered with ({@link #ADDED_LATER}: shadows, true; no noise threshold; lightTree, false: lights were chosen by power), so it still resumes.
  */
 final class Checkpoint {
     static final int VERSION = 3;
@@ -67,7 +67,7 @@ final class Checkpoint {
     private static final int PIXEL_BYTES = 4 + 3 * 8;
     private static final Set<String> NOT_IN_FINGERPRINT = Set.of("samplesPerPixel", "threads", "samplesPerPass", "timeLimit", "schedule", "aovs");
     /** Settings added to the fingerprint after version 2 was first written, with the value every older checkpoint was rendered with. */
-    static final Map<String, String> ADDED_LATER = Map.of("shadows", "true", "noiseThreshold", "0.0");
+    static final Map<String, String> ADDED_LATER = Map.of("shadows", "true", "noiseThreshold", "0.0", "lightTree", "false");
 
     private final byte[] sceneDigest;
     private final String settingsKey;

@@ -17,7 +17,6 @@ import java.util.function.Consumer;
  * RenderSettings s = RenderSettings.defaults().withSize(800, 600).withSamplesPerPixel(256).withSeed(7);
  * int depth = s.transport().maxDepth();
  * }</pre>
- * Checkpoints, cluster members and {@code render --stats} record the settings by the names of these records' components.
  *
  * @param output    what the render makes: the film and the feature buffers kept beside it
  * @param sampling  how many camera samples each pixel takes, and from which random sequence
@@ -83,8 +82,7 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
      *
      * @param samplesPerPixel camera samples per pixel, positive; with a noise threshold, the most a pixel may take
      * @param seed            the render seed; with the other settings it fixes the image bit for bit
-     * @param noiseThreshold  0 for none, or the target relative standard error of every pixel's mean, in (0, 1] (0.01 is
-     *                        1 %): adaptive sampling ({@link RenderSettings#withNoiseThreshold})
+     * @param noiseThreshold  0, or the target relative standard error of every pixel's mean in (0, 1] (adaptive sampling)
      */
     public record Sampling(int samplesPerPixel, long seed, double noiseThreshold) {
         /**
@@ -112,12 +110,12 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
      * @param lightSamples  shadow rays per diffuse or glossy hit for the direct and Whitted integrators, at least 1
      * @param hemisphere    how diffuse surfaces sample directions
      * @param cullBackFaces skip back faces of closed meshes for camera and continuation rays
-     * @param shadows       whether shadow rays are traced; false is a teaching option: every light sample counts as
-     *                      visible, so lights shine through everything onto whatever faces them (no shadows)
+     * @param shadows       whether shadow rays are traced (false, a teaching option: every light sample counts as visible)
+     * @param lightTree     whether lights are chosen by a light tree (false, a teaching option: by their power alone)
      * @param photons       the photon mapper's photons per iteration and initial gather radius
      */
     public record Transport(IntegratorKind integrator, int maxDepth, int lightSamples, HemisphereSampling hemisphere,
-                            boolean cullBackFaces, boolean shadows, PhotonParameters photons) {
+                            boolean cullBackFaces, boolean shadows, boolean lightTree, PhotonParameters photons) {
         /**
          * Checks every value; the message names the one that is wrong.
          *
@@ -127,6 +125,7 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
          * @param hemisphere    cosine or uniform
          * @param cullBackFaces whether back faces of closed meshes are skipped
          * @param shadows       whether shadow rays are traced
+         * @param lightTree     whether lights are chosen by the light tree (else by power)
          * @param photons       the photon mapper's parameters
          */
         public Transport {
@@ -186,7 +185,7 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
 
     /**
      * 512×512 without feature buffers; 64 spp, seed 0, no noise threshold; path tracing with unbounded depth, one light
-     * sample, cosine sampling, no culling, shadows and the photon mapper's
+     * sample, cosine sampling, no culling, shadows, the light tree and the photon mapper's
      * {@linkplain PhotonParameters#defaults() defaults}; all processors, automatic passes, no time
      * limit, the BVH and tiles.
      *
@@ -194,16 +193,14 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
      */
     public static RenderSettings defaults() {
         return new RenderSettings(new Output(512, 512, Set.of()), new Sampling(64, 0, 0),
-                new Transport(IntegratorKind.PATH, -1, 1, HemisphereSampling.COSINE, false, true, PhotonParameters.defaults()),
+                new Transport(IntegratorKind.PATH, -1, 1, HemisphereSampling.COSINE, false, true, true, PhotonParameters.defaults()),
                 new Execution(0, 0, Duration.ZERO, false, false));
     }
 
     /**
-     * Every setting by name, with its value: what checkpoints, cluster members and
-     * {@code render --stats} record. A setting is named by its component in its part
-     * ({@code width}, {@code seed}, {@code maxDepth}, {@code threads}, …; the names are unique), a
-     * value inside a part by the part's component first ({@code photons.photonsPerIteration}).
-     * Values are Integer, Long, Double, Boolean, an enum, a Duration or a set of {@link Aov}.
+     * Every setting by name ({@code width}, {@code seed}, {@code photons.photonsPerIteration}, …) with its value
+     * (Integer, Long, Double, Boolean, an enum, a Duration or a set of {@link Aov}): what checkpoints, cluster
+     * members and {@code render --stats} record.
      *
      * @return the settings in the order of the parts and their components, unmodifiable
      */
@@ -219,10 +216,7 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
      * @return a new settings object
      */
     public RenderSettings withSize(int w, int h) {
-        return edit(e -> {
-            e.width = w;
-            e.height = h;
-        });
+        return edit(e -> e.size(w, h));
     }
 
     /**
@@ -246,9 +240,8 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
     }
 
     /**
-     * These settings with another noise threshold: adaptive sampling, or (0) none. With one, the sample count is the
-     * most a pixel takes; the render ends when every pixel meets it, at that count or at the time limit, whichever
-     * comes first. What it measures: docs/integrators.md, "Render until clean".
+     * These settings with another noise threshold (adaptive sampling: docs/integrators.md, "Render until clean"),
+     * or (0) none; with one, the sample count is the most a pixel takes.
      *
      * @param t 0 for none, or the target relative standard error of every pixel's mean, in (0, 1]
      * @return a new settings object
@@ -318,15 +311,24 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
     }
 
     /**
-     * These settings with or without shadows. Without is a teaching option (docs/experiments.md,
-     * experiment 3): every light sample counts as visible, so only the direct light loses its
-     * shadows (the path tracer then samples lights alone, without MIS).
+     * These settings with or without shadows; without is a teaching option (docs/experiments.md, experiment 3).
      *
      * @param s true to trace shadow rays (the default), false for none
      * @return a new settings object
      */
     public RenderSettings withShadows(boolean s) {
         return edit(e -> e.shadows = s);
+    }
+
+    /**
+     * These settings with lights chosen by the light tree or, a teaching option, by their power alone
+     * wherever the shading point is: same image, more noise (docs/integrators.md, many lights).
+     *
+     * @param tree true for the light tree (the default), false for power alone
+     * @return a new settings object
+     */
+    public RenderSettings withLightTree(boolean tree) {
+        return edit(e -> e.lightTree = tree);
     }
 
     /**
@@ -381,8 +383,7 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
     }
 
     /**
-     * These settings with another way of sharing the image among threads: a teaching option. With stripes, thread
-     * i of n renders the i-th horizontal stripe (as a first multithreaded renderer); without, 32×32 tiles.
+     * These settings with one horizontal stripe per thread (a teaching option) or 32×32 tiles shared by all.
      *
      * @param s true for stripes, false for tiles (the default)
      * @return a new settings object
@@ -393,8 +394,6 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
 
     /** A copy with some values changed: every {@code with...} method is one line, the parts are rebuilt in {@link SettingsFields}. */
     private RenderSettings edit(Consumer<SettingsFields> change) {
-        SettingsFields f = new SettingsFields(this);
-        change.accept(f);
-        return f.settings();
+        return new SettingsFields(this).apply(change);
     }
 }

@@ -74,6 +74,14 @@ public final class World {
     }
 
     /**
+     * Teaching option ({@code --light-selection power}): this world with its lights chosen by
+     * power alone instead of by the light tree ({@link LightSampler#byPower()}); everything else shared.
+     */
+    public World lightsByPower() {
+        return new World(geometry, bvh, lights.byPower(), bsdfs, emission, maps, environment, punctualLights, bvhBuildSeconds, media);
+    }
+
+    /**
      * Builds the BVH over {@code geometry} and the light sampler over its emissive primitives.
      *
      * @param geometry    every primitive, material indices into the tables
