@@ -32,8 +32,8 @@ import jdk.incubator.vector.VectorSpecies;
  * loop allocates nothing.
  *
  * <p>Within them, no vector or mask is used on only one side of a branch whose sides meet again:
- * all lane work comes first, then the decisions, on plain values; a branch before it may only
- * return. C2 (JDK 17) guards a lane operation with a check of its operand's class, which makes a
+ * the lane work comes first, then the decisions, on plain values; a branch amid the lane work may
+ * only return. C2 (JDK 17) guards a lane operation with a check of its operand's class, which makes a
  * new value of that operand on one side only; where the sides meet, C2 merges the two, and a
  * merged vector is a heap object, allocated on every call. Whether that happens depended on the
  * profile C2 compiled with: {@code if (cull && hits.and(...).anyTrue())} cost two allocations a
@@ -245,6 +245,9 @@ final class SimdKernel {
         DoubleVector det = u.add(v).add(w);
         DoubleVector t = u.mul(az0).add(v.mul(bz0)).add(w.mul(cz0)).mul(tr.sz).div(det);
         VectorMask<Double> hits = inside.and(t.compare(VectorOperators.GT, 0)).and(t.compare(VectorOperators.LT, tMax));
+        if (any) {
+            return hits.anyTrue() ? 0 : LANES;
+        }
         // All lane work before the decisions below (see the class comment): the back faces hit,
         // the nearest distance (t is never NaN where it hits) and its first lane, the barycentrics.
         boolean backHit = hits.and(det.compare(VectorOperators.LT, 0)).anyTrue();
@@ -253,9 +256,6 @@ final class SimdKernel {
         v.intoArray(s.laneV, 0);
         w.intoArray(s.laneW, 0);
         det.intoArray(s.laneDet, 0);
-        if (any) {
-            return first < LANES ? 0 : LANES;
-        }
         if (cull && backHit) {
             return -1;
         }
