@@ -48,6 +48,17 @@ final class SceneFileWriter {
             material(e.getValue());
         }
         g.writeEndObject();
+        if (!d.groups().isEmpty()) {
+            g.writeObjectFieldStart("groups");
+            for (var e : d.groups().entrySet()) {
+                g.writeArrayFieldStart(e.getKey());
+                for (ShapeSpec s : e.getValue()) {
+                    shape(s);
+                }
+                g.writeEndArray();
+            }
+            g.writeEndObject();
+        }
         g.writeArrayFieldStart("shapes");
         for (ShapeSpec s : d.shapes()) {
             shape(s);
@@ -261,6 +272,9 @@ final class SceneFileWriter {
             vector(s.center());
             g.writeNumberField("radius", s.radius());
             g.writeStringField("material", s.material());
+        } else if (shape instanceof SceneDescription.InstanceShape i) {
+            g.writeStringField("type", "instance");
+            g.writeStringField("group", i.group());
         } else if (shape instanceof SceneDescription.MeshShape m) {
             g.writeStringField("type", "mesh");
             g.writeStringField("file", m.file());
