@@ -69,7 +69,7 @@ public final class Scene {
     }
 
     /**
-     * The materials, each once, in the order they were first used.
+     * The materials in the order they were first used, each once (once per medium boundary, {@link Builder#mediumBoundary}).
      *
      * @return an unmodifiable list
      */
@@ -175,9 +175,9 @@ public final class Scene {
 
     /**
      * Collects shapes, materials, camera, lights and environment, then builds the BVH once. Not
-     * thread-safe. (The lights and the environment are set by the methods of a package-private base.)
+     * thread-safe. (The lights, the environment and the media are set by the methods of package-private bases.)
      */
-    public static final class Builder extends SceneLighting {
+    public static final class Builder extends SceneMediaSetters {
         private final GeometryBuilder base = new GeometryBuilder();
         private GeometryBuilder geometry = base;      // the scene's own, or the open group's
         private final SceneGroups groups = new SceneGroups();
@@ -194,10 +194,12 @@ public final class Scene {
                 throw new IllegalArgumentException("emissive material '" + m.name() + "' in group '" + groups.open()
                         + "': instanced shapes cannot be lights (place the emitter in the scene itself)");
             }
-            return materialIndex.computeIfAbsent(m, k -> {
-                materials.add(k);
-                return materials.size() - 1;
-            });
+            return media.bounding() ? media.slot(m, () -> add(m)) : materialIndex.computeIfAbsent(m, this::add);
+        }
+
+        private int add(Material m) {
+            materials.add(m);
+            return materials.size() - 1;
         }
 
         /**
@@ -290,10 +292,9 @@ public final class Scene {
         }
 
         /**
-         * Starts a group: the shapes added until {@link #endGroup()} are not rendered by
-         * themselves but shown by the instances that name the group ({@link #addInstance}), which
-         * share its primitives and BVH however many there are. Groups do not nest, and hold no
-         * emissive materials (instanced lights are not supported).
+         * Starts a group: the shapes added until {@link #endGroup()} are shown only by the instances
+         * that name it ({@link #addInstance}), which share its primitives and BVH. Groups do not
+         * nest and hold no emissive materials (instanced lights are not supported).
          *
          * @param name the group's name, unique in the scene
          * @return this builder
@@ -318,9 +319,8 @@ public final class Scene {
         }
 
         /**
-         * Shows a group moved by a transform (any of translation, rotation and scaling, non-uniform
-         * and mirroring included: its spheres become ellipsoids, its normals follow the inverse
-         * transpose). The group's shapes keep their own materials.
+         * Shows a group moved by a transform, unequal scales and mirrors included (its spheres become
+         * ellipsoids, its normals follow the inverse transpose); its shapes keep their materials.
          *
          * @param group     the name of a group begun before
          * @param transform from the group's coordinates into the scene's
@@ -359,8 +359,7 @@ public final class Scene {
         }
 
         /**
-         * Builds the scene: concatenates the primitives, builds the BVH (each group's once, and a
-         * tree over the instances) and collects the lights.
+         * Builds the scene: concatenates the primitives, builds the BVHs (each group's once) and collects the lights.
          *
          * @return the scene, immutable
          * @throws IllegalStateException if a group is still open
@@ -381,7 +380,8 @@ public final class Scene {
             }
             boolean studio = environment == null && punctual.isEmpty() && !anyEmits(g, emission);
             Environment env = environment != null ? environment : studio ? StudioSky.environment() : Environment.BLACK;
-            World world = World.build(g, groups.geometries(), groups.transforms(), bsdfs, emission, maps, env, punctual);
+            World world = World.build(g, groups.geometries(), groups.transforms(), bsdfs, emission, maps, env, punctual)
+                    .withMedia(media.build(bsdfs));
             // A bare model (no light) is an object: shown from above at three quarters. A scene with
             // its own lights is often a room made to be seen from its open front (the Cornell Box): +Z.
             Camera cam = camera != null ? camera : studio ? Camera.framing(world.bounds(), 40) : Camera.frontFraming(world.bounds(), 40);
