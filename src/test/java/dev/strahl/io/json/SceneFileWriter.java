@@ -53,7 +53,7 @@ final class SceneFileWriter {
             for (var e : d.groups().entrySet()) {
                 g.writeArrayFieldStart(e.getKey());
                 for (ShapeSpec s : e.getValue()) {
-                    shape(s);
+                    shape(s, null);
                 }
                 g.writeEndArray();
             }
