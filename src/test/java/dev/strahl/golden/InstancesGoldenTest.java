@@ -20,7 +20,8 @@ import org.junit.jupiter.api.io.TempDir;
  * of a bumpy rock and a slab (moved inside the group) shown five times, translated, rotated, scaled
  * unequally and mirrored, on a grey floor under a point light and a constant sky, with
  * interreflections. The tolerance is {@link PunctualGoldenTest}'s (each 16×16 block's mean within
- * 2 % of its luminance plus 5 % of the mean block's, relMSE below 2e-3). The mutants — the
+ * 2 % of its luminance plus 5 % of the mean block's, relMSE below 2e-3); measured at 256 spp,
+ * seed 1: worst block 0.19 %, relMSE 4.0e-5 (a smooth, diffuse image). The mutants — the
  * mirror along y instead of x, the slab's move inside the group left out, the unequal scale made
  * uniform — each fail it. (Leaving the mirror out passes: the rock is nearly symmetric, and the
  * mirror's own handling is proved against the flattened scene in {@code InstancingTest}.)
