@@ -607,7 +607,7 @@ class JsonSceneReaderTest {
                     { "type": "cube", "size": 1 }
                   ]
                 }
-                """.formatted(MATERIALS), "unknown shape type 'cube'", "known: gltf, mesh, sphere, triangles"),
+                """.formatted(MATERIALS), "unknown shape type 'cube'", "known: gltf, instance, mesh, sphere, triangles"),
             bad("albedo above 1", 3, """
                 {
                   "materials": {
