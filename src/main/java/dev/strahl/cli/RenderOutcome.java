@@ -64,7 +64,8 @@ final class RenderOutcome {
             buffers = buffers.withColor(clean);
         }
         buffers = new RenderBuffers(buffers.color(), buffers.variance(), written.contains(Aov.ALBEDO) ? buffers.albedo() : null,
-                written.contains(Aov.NORMAL) ? buffers.normal() : null, written.contains(Aov.DEPTH) ? buffers.depth() : null);
+                written.contains(Aov.NORMAL) ? buffers.normal() : null, written.contains(Aov.DEPTH) ? buffers.depth() : null,
+                written.contains(Aov.SPP) ? buffers.samples() : null);
         try {
             writer.write(buffers, output);
         } catch (IOException | UncheckedIOException e) {
@@ -85,16 +86,25 @@ final class RenderOutcome {
         Path checkpointFile = time.file();
         String resume = checkpointFile != null ? "; continue with --resume " + checkpointFile : "";
         int spp = settings.sampling().samplesPerPixel();
+        boolean adaptive = settings.sampling().noiseThreshold() > 0;
+        boolean allConverged = adaptive && stats.convergedFraction() >= 1;
         if (interrupted) {
             err.println(String.format(Locale.ROOT, "strahl: interrupted at %d of %d spp after %.2f s: wrote %s%s",
                     stats.samplesPerPixel(), spp, stats.seconds(), output, resume));
         } else if (!quiet) {
-            if (stats.samplesPerPixel() < spp) {
+            if (stats.samplesPerPixel() < spp && !allConverged) {
                 err.println("strahl: note: the time limit of " + limitText(time.timeLimit)
                         + " ended the render at " + stats.samplesPerPixel() + " of " + spp + " spp" + resume);
             }
-            err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %d spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
-                    settings.transport().integrator().id(), settings.output().width(), settings.output().height(), stats.samplesPerPixel(),
+            if (adaptive) {
+                err.println(String.format(Locale.ROOT, "strahl: noise threshold %s: %s of the pixels converged%s; %d to %d spp, %.1f on average",
+                        new BigDecimal(Double.toString(settings.sampling().noiseThreshold())).stripTrailingZeros().toPlainString(), percent(stats.convergedFraction()),
+                        allConverged ? ", which ended the render" : "", stats.minSamplesPerPixel(), stats.maxSamplesPerPixel(),
+                        stats.meanSamplesPerPixel()));
+            }
+            err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %s spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
+                    settings.transport().integrator().id(), settings.output().width(), settings.output().height(),
+                    adaptive ? "up to " + stats.maxSamplesPerPixel() : Integer.toString(stats.samplesPerPixel()),
                     stats.seconds(), NumberText.si(stats.samplesPerSecond()), NumberText.si(stats.raysPerSecond()), stats.threads(), output));
             if (denoising.denoise) {
                 err.println(String.format(Locale.ROOT, "strahl: denoised with %s in %.2f s", oidn != null ? "oidnDenoise" : "strahl's denoiser",
@@ -105,6 +115,12 @@ final class RenderOutcome {
             err.println("strahl: warning: " + stats.invalidSamples() + " samples were NaN or infinite and counted as black");
         }
         err.flush();
+    }
+
+    /** "97 %", "99.9 %", "100 %": a share, never rounded up to all. */
+    static String percent(double fraction) {
+        double p = Math.floor(fraction * 1000) / 10;
+        return (p == Math.floor(p) ? Integer.toString((int) p) : Double.toString(p)) + " %";
     }
 
     /** "0.3 s", "90 s", "5:00", "1:30:00". */

@@ -16,7 +16,9 @@ import java.util.Set;
  * The figures of one render for tools ({@code render --stats FILE.json}). Render time excludes
  * loading and the BVH build, which are reported separately: {@code load_seconds} is reading and
  * building the scene without the BVH, {@code bvh_build_seconds} the BVH build, {@code texture_bytes}
- * the memory of the texture images (each file once). {@code settings} holds every setting by the
+ * the memory of the texture images (each file once). {@code spp_min}, {@code spp_mean} and {@code spp_max} are the
+ * samples the pixels took (equal without a noise threshold), {@code converged_fraction} the share of pixels a noise
+ * threshold found converged (0 without one), {@code passes} the passes over the image. {@code settings} holds every setting by the
  * name checkpoints and cluster members know it by ({@link RenderSettings#entries()}).
  */
 final class StatsFile {
@@ -46,6 +48,11 @@ final class StatsFile {
             json.writeNumberField("width", settings.output().width());
             json.writeNumberField("height", settings.output().height());
             json.writeNumberField("spp", stats.samplesPerPixel());
+            json.writeNumberField("spp_min", stats.minSamplesPerPixel());
+            json.writeNumberField("spp_mean", stats.meanSamplesPerPixel());
+            json.writeNumberField("spp_max", stats.maxSamplesPerPixel());
+            json.writeNumberField("converged_fraction", stats.convergedFraction());
+            json.writeNumberField("passes", stats.passes());
             json.writeNumberField("bvh_build_seconds", bvhBuildSeconds);
             json.writeNumberField("load_seconds", loadSeconds);
             if (!members.isEmpty()) {

@@ -13,6 +13,7 @@ final class SettingsFields {
     Set<Aov> aovs;
     int samplesPerPixel;
     long seed;
+    double noiseThreshold;
     IntegratorKind integrator;
     int maxDepth, lightSamples;
     HemisphereSampling hemisphere;
@@ -29,6 +30,7 @@ final class SettingsFields {
         aovs = o.aovs();
         samplesPerPixel = s.sampling().samplesPerPixel();
         seed = s.sampling().seed();
+        noiseThreshold = s.sampling().noiseThreshold();
         RenderSettings.Transport t = s.transport();
         integrator = t.integrator();
         maxDepth = t.maxDepth();
@@ -46,7 +48,7 @@ final class SettingsFields {
     }
 
     RenderSettings settings() {
-        return new RenderSettings(new RenderSettings.Output(width, height, aovs), new RenderSettings.Sampling(samplesPerPixel, seed),
+        return new RenderSettings(new RenderSettings.Output(width, height, aovs), new RenderSettings.Sampling(samplesPerPixel, seed, noiseThreshold),
                 new RenderSettings.Transport(integrator, maxDepth, lightSamples, hemisphere, cullBackFaces, shadows, photons),
                 new RenderSettings.Execution(threads, samplesPerPass, timeLimit, bruteForce, stripes));
     }

@@ -37,7 +37,7 @@ final class UnitRenderers implements UnitService {
         }
         var rays = CameraRays.of(scene.camera(), d.settings.output().width(), d.settings.output().height());
         World world = World.of(scene);
-        Supplier<FeatureTracer> features = d.settings.output().aovs().isEmpty() ? null : () -> new FeatureTracer(world, d.settings.transport().cullBackFaces());
+        Supplier<FeatureTracer> features = d.settings.output().keepsFeatures() ? () -> new FeatureTracer(world, d.settings.transport().cullBackFaces()) : null;
         return new Renderer(integrator, features, rays, d.settings.sampling().seed(), d.stratified);
     }
 
@@ -103,6 +103,9 @@ final class UnitRenderers implements UnitService {
                         int i = ty * unit.width() + tx;
                         System.arraycopy(sums, perPixel * i, state, 0, perPixel);
                         tile.restorePixel(tx, ty, counts[i], state);
+                        if (!unit.renders(i)) {
+                            continue;                              // converged: its state goes back as it came
+                        }
                         int s0 = Math.max(unit.firstSample(), counts[i]);
                         invalid += SampleLoop.samplePixel(w, rays, seed, tile, tile.pixelIndex(tx, ty), unit.x0() + tx, unit.y0() + ty,
                                 s0, unit.endSample());

@@ -50,7 +50,7 @@ public final class JsonSceneReader {
     static final Map<String, Set<String>> ENVIRONMENT_KEYS = Map.of("envmap", Set.of("type", "file", "scale", "rotate"));
     static final Set<String> FILM_KEYS = Set.of("width", "height", "aovs");
     static final Set<String> INTEGRATOR_KEYS = Set.of("type", "spp", "maxDepth", "seed", "lightSamples", "hemisphere", "photons",
-            "photonRadius");
+            "photonRadius", "noiseThreshold");
 
     private final Path file;
     private final JsonValues v;
@@ -365,6 +365,7 @@ public final class JsonSceneReader {
                 }
             }
         }
-        return new SceneSettings(width, height, spp, maxDepth, seed, type, lightSamples, hemisphere, photons, photonRadius, SceneSettings.readAovs(film, v));
+        return new SceneSettings(width, height, spp, maxDepth, seed, type, lightSamples, hemisphere, photons, photonRadius,
+                SceneSettings.readAovs(film, v), null, SceneSettings.readNoiseThreshold(integrator, v));
     }
 }

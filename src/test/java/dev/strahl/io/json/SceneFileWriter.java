@@ -170,7 +170,7 @@ final class SceneFileWriter {
             g.writeEndObject();
         }
         if (s.integrator() == null && s.samplesPerPixel() == null && s.maxDepth() == null && s.seed() == null
-                && s.lightSamples() == null && s.hemisphere() == null && s.photons() == null && s.photonRadius() == null) {
+                && s.lightSamples() == null && s.hemisphere() == null && s.photons() == null && s.photonRadius() == null && s.noiseThreshold() == null) {
             return;
         }
         g.writeObjectFieldStart("integrator");
@@ -197,6 +197,9 @@ final class SceneFileWriter {
         }
         if (s.photonRadius() != null) {
             g.writeNumberField("photonRadius", s.photonRadius());
+        }
+        if (s.noiseThreshold() != null) {
+            g.writeNumberField("noiseThreshold", s.noiseThreshold());
         }
         g.writeEndObject();
     }
