@@ -388,7 +388,7 @@ class JsonSceneReaderTest {
                   "shapes": [ %s ],
                   "lamps": []
                 }
-                """.formatted(MATERIALS, SPHERE), "unknown key 'lamps' in scene", "camera, environment, film, integrator, lights, materials, media, shapes"),
+                """.formatted(MATERIALS, SPHERE), "unknown key 'lamps' in scene", "camera, environment, film, groups, integrator, lights, materials, media, shapes"),
             bad("unknown key in camera", 6, """
                 {
                   %s
