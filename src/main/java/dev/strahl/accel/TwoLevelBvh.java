@@ -222,15 +222,6 @@ public final class TwoLevelBvh implements Aggregate {
         return bytes;
     }
 
-    /** Bytes of the bottom-level trees and the groups' primitives, each group once. */
-    public long groupBytes() {
-        long bytes = 0;
-        for (Aggregate g : groups) {
-            bytes += g.byteSize() + g.geometry().byteSize();
-        }
-        return bytes;
-    }
-
     @Override
     public String kernel() {
         return "two-level (" + instances.count() + " instances of " + groups.length + " groups), " + base.kernel();
