@@ -28,6 +28,8 @@ final class RenderOutcome {
     private final Path output;
     private final boolean quiet;
     private final OidnDenoiser oidn;
+    /** The pure-Java denoiser asked for (null with --denoiser oidn). */
+    private final Denoiser denoiser;
     /** The feature buffers to write (those the denoiser needs are rendered also when not written). */
     private Set<Aov> written = Set.of();
     private double denoiseSeconds;
@@ -39,9 +41,12 @@ final class RenderOutcome {
         this.output = output;
         this.quiet = quiet;
         String name = denoising.denoiserName;
-        if (!name.equals("strahl") && !name.equals("oidn")) {
-            throw new IllegalArgumentException("--denoiser must be strahl or oidn, got '" + name + "'");
-        }
+        this.denoiser = switch (name) {
+            case "network" -> Denoiser.create();
+            case "atrous", "strahl" -> Denoiser.atrous();
+            case "oidn" -> null;
+            default -> throw new IllegalArgumentException("--denoiser must be network, atrous or oidn, got '" + name + "'");
+        };
         this.oidn = denoising.denoise && name.equals("oidn") ? OidnDenoiser.onPath() : null;
     }
 
@@ -56,9 +61,11 @@ final class RenderOutcome {
             long t0 = System.nanoTime();
             Image clean;
             try {
-                clean = oidn != null ? oidn.denoise(buffers) : Denoiser.create().denoise(buffers);
+                clean = oidn != null ? oidn.denoise(buffers) : denoiser.denoise(buffers);
             } catch (IOException e) {
                 throw new RenderFailure("oidnDenoise failed: " + e.getMessage(), e);
+            } catch (UncheckedIOException e) {                 // the network's weights missing or damaged in the jar
+                throw new RenderFailure(e.getMessage(), e);
             }
             denoiseSeconds = (System.nanoTime() - t0) * 1e-9;
             buffers = buffers.withColor(clean);
@@ -107,7 +114,7 @@ final class RenderOutcome {
                     adaptive ? "up to " + stats.maxSamplesPerPixel() : Integer.toString(stats.samplesPerPixel()),
                     stats.seconds(), NumberText.si(stats.samplesPerSecond()), NumberText.si(stats.raysPerSecond()), stats.threads(), output));
             if (denoising.denoise) {
-                err.println(String.format(Locale.ROOT, "strahl: denoised with %s in %.2f s", oidn != null ? "oidnDenoise" : "strahl's denoiser",
+                err.println(String.format(Locale.ROOT, "strahl: denoised with %s in %.2f s", oidn != null ? "oidnDenoise" : denoiser,
                         denoiseSeconds));
             }
         }
