@@ -276,7 +276,7 @@ final class RenderCommand implements Callable<Integer> {
         }
         outcome.write(buffers);
         if (files.statsFile != null) {
-            outcome.writeStats(files.statsFile, stats, settings, loadSeconds, bvhSeconds, s.textureBytes());
+            outcome.writeStats(files.statsFile, stats, settings, loadSeconds, bvhSeconds, s);
         }
         irq.written();
         outcome.report(err, stats, settings, time, irq.interrupted());

@@ -80,9 +80,9 @@ final class RenderOutcome {
         }
     }
 
-    void writeStats(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhSeconds, long textureBytes) {
+    void writeStats(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhSeconds, dev.strahl.scene.Scene scene) {
         try {
-            StatsFile.write(file, stats, settings, loadSeconds, bvhSeconds, textureBytes);
+            StatsFile.write(file, stats, settings, loadSeconds, bvhSeconds, scene.textureBytes(), dev.strahl.world.World.of(scene));
         } catch (IOException e) {
             throw new RenderFailure("cannot write " + file + ": " + e.getMessage(), e);
         }

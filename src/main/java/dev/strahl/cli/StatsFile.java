@@ -6,6 +6,7 @@ import dev.strahl.io.json.JsonFile;
 import dev.strahl.render.Aov;
 import dev.strahl.render.RenderSettings;
 import dev.strahl.render.RenderStats;
+import dev.strahl.world.World;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -26,6 +27,15 @@ final class StatsFile {
     /** A cluster render's figures per member ({@link RenderStats#members()}) are an object each with numbers (docs/cluster.md). */
     static void write(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhBuildSeconds, long textureBytes)
             throws IOException {
+        write(file, stats, settings, loadSeconds, bvhBuildSeconds, textureBytes, null);
+    }
+
+    /**
+     * With the scene's figures (null: none): its triangles stored (each group's once) and as
+     * rendered (each instance's), its instances, and the bytes of its BVHs and primitives.
+     */
+    static void write(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhBuildSeconds, long textureBytes,
+                      World world) throws IOException {
         List<RenderStats.Member> members = stats.members();
         JsonFile.write(file, json -> {
             json.writeStartObject();
@@ -70,6 +80,13 @@ final class StatsFile {
             json.writeStringField("shadows", settings.transport().shadows() ? "on" : "off");
             json.writeStringField("light_selection", settings.transport().lightTree() ? "tree" : "power");
             json.writeNumberField("texture_bytes", textureBytes);
+            if (world != null) {
+                json.writeNumberField("triangles", world.uniqueTriangles());
+                json.writeNumberField("triangles_instanced", world.instancedTriangles());
+                json.writeNumberField("instances", world.instances().count());
+                json.writeNumberField("bvh_bytes", world.bvh().byteSize());
+                json.writeNumberField("geometry_bytes", world.byteSize() - world.bvh().byteSize());
+            }
             json.writeObjectFieldStart("settings");
             for (var e : settings.entries().entrySet()) {
                 writeValue(json, e.getKey(), e.getValue());

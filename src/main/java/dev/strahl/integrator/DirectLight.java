@@ -149,7 +149,7 @@ public final class DirectLight {
             if (!bvh.intersect(ray, hit, stack, false)) {
                 return false;
             }
-            world.geometry().surface(ray, hit, blocker);
+            world.surface(ray, hit, blocker);
             SurfaceMaps maps = world.maps(blocker.material);
             if (maps == null || !maps.cutAway(blocker.uv)) {
                 return true;

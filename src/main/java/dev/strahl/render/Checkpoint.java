@@ -375,7 +375,7 @@ final class Checkpoint {
             throw new IllegalStateException("SHA-256 is part of every Java platform", e);
         }
         World world = World.of(scene);
-        world.geometry().digest(md);
+        world.digest(md);
         StringBuilder sb = new StringBuilder();
         for (int m = 0; m < world.materialCount(); m++) {
             // records: every parameter, doubles in full precision

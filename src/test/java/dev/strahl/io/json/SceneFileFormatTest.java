@@ -267,7 +267,7 @@ class SceneFileFormatTest {
                     "unknown material 'n' (define it under 'materials')"),
             shape("{ \"type\": \"mesh\", \"file\": \"tri.stl\" }", "'shapes[].file' must name an .obj or .ply file, got 'tri.stl'"),
             shape("{ \"type\": \"mesh\", \"file\": \"none.ply\" }", "mesh file not found: "),
-            shape("{ \"type\": \"cube\" }", "unknown shape type 'cube' (known: gltf, mesh, sphere, triangles)"),
+            shape("{ \"type\": \"cube\" }", "unknown shape type 'cube' (known: gltf, instance, mesh, sphere, triangles)"),
             transform("{ \"translate\": [1, 2, 3] }", "'shapes[].transform' must be an array, got an object"),
             transform("[ { \"translate\": [1, 2, 3], \"scale\": 2 } ]",
                     "each step of 'shapes[].transform' must have exactly one key of rotate, scale, translate, got scale, translate"),

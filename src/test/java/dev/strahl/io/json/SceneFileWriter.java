@@ -48,6 +48,17 @@ final class SceneFileWriter {
             material(e.getValue());
         }
         g.writeEndObject();
+        if (!d.groups().isEmpty()) {
+            g.writeObjectFieldStart("groups");
+            for (var e : d.groups().entrySet()) {
+                g.writeArrayFieldStart(e.getKey());
+                for (ShapeSpec s : e.getValue()) {
+                    shape(s, null);
+                }
+                g.writeEndArray();
+            }
+            g.writeEndObject();
+        }
         g.writeArrayFieldStart("shapes");
         for (int i = 0; i < d.shapes().size(); i++) {
             shape(d.shapes().get(i), d.media().boundary(i));
@@ -298,6 +309,9 @@ final class SceneFileWriter {
             vector(s.center());
             g.writeNumberField("radius", s.radius());
             g.writeStringField("material", s.material());
+        } else if (shape instanceof SceneDescription.InstanceShape i) {
+            g.writeStringField("type", "instance");
+            g.writeStringField("group", i.group());
         } else if (shape instanceof SceneDescription.MeshShape m) {
             g.writeStringField("type", "mesh");
             g.writeStringField("file", m.file());
