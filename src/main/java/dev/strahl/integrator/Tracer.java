@@ -53,12 +53,24 @@ public final class Tracer {
      * origin, else -1. The ray's origin and direction are as they were afterwards.
      */
     public double trace(Ray ray, Shading s) {
+        double tMax = ray.tMax;
+        return closestHit(ray, hit) ? settle(ray, tMax, hit, s) : -1;
+    }
+
+    /** The closest-hit query alone: {@code hit} is reset and filled in; true if the ray hits. */
+    boolean closestHit(Ray ray, Hit hit) {
         rays++;
         hit.reset();
-        double tMax = ray.tMax;
-        if (!bvh.intersect(ray, hit, stack, cullBackFaces)) {
-            return -1;
-        }
+        return bvh.intersect(ray, hit, stack, cullBackFaces);
+    }
+
+    /**
+     * Sets up {@code s} at the hit {@link #closestHit} found for {@code ray}, whose tMax was
+     * {@code tMax} before the query, and returns its distance; in a world with cut-outs, passes the
+     * cut-away surfaces first (tracing on; -1 if nothing is left). The ray's origin and direction
+     * are as they were afterwards.
+     */
+    double settle(Ray ray, double tMax, Hit hit, Shading s) {
         if (!cutouts) {
             s.at(ray, hit, world, bsdfs);
             return hit.t;
@@ -68,7 +80,7 @@ public final class Tracer {
             s.setUp(ray, world, bsdfs);
             return hit.t;
         }
-        return passCutouts(ray, tMax, s);
+        return passCutouts(ray, tMax, s, hit);
     }
 
     private boolean cutAway(Shading s) {
@@ -77,7 +89,7 @@ public final class Tracer {
     }
 
     /** Continues the ray past cut-away surfaces (s.sp holds the first) to the first surface that is there. */
-    private double passCutouts(Ray ray, double tMax, Shading s) {
+    private double passCutouts(Ray ray, double tMax, Shading s, Hit hit) {
         origin.set(ray.o);
         for (int pass = 0; pass < MAX_PASSES; pass++) {
             s.sp.spawnOrigin(ray.d, ray.o);
