@@ -165,11 +165,20 @@ public final class PathTracer implements Integrator {
         return true;
     }
 
-    private final class PathWorker extends TracingWorker {
-        private final Shading s = new Shading();
-        private final PathState path = new PathState();
-        private final VertexSamples u = new VertexSamples();
-        private final ShadowQuery q = new ShadowQuery();
+    /**
+     * A wavefront of {@code samplers.length} paths for one thread (each path draws from its own
+     * sampler): the same radiance as {@link #newWorker()}'s, bit for bit, a batch at a time.
+     */
+    public PathWavefront newWavefront(Sampler[] samplers) {
+        return new PathWavefront(this, samplers);
+    }
+
+    /** The scalar worker, one path at a time; its scratch objects also serve a {@link PathWavefront}. */
+    final class PathWorker extends TracingWorker {
+        final Shading s = new Shading();
+        final PathState path = new PathState();
+        final VertexSamples u = new VertexSamples();
+        final ShadowQuery q = new ShadowQuery();
 
         PathWorker() {
             super(world, bsdfs, cullBackFaces);

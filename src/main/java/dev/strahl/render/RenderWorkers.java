@@ -5,6 +5,7 @@ import dev.strahl.film.Film;
 import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Parallel;
+import dev.strahl.integrator.PathWavefront;
 import dev.strahl.scene.Scene;
 import dev.strahl.world.World;
 import java.util.ArrayList;
@@ -82,7 +83,9 @@ final class RenderWorkers implements Parallel, PassRunner {
         });
         this.workers = new SampleLoop.WorkerState[threads];
         for (int i = 0; i < threads; i++) {
-            workers[i] = new SampleLoop.WorkerState(i, integrator.newWorker(), SampleLoop.newSampler(stratified, seed), features != null ? features.get() : null);
+            PathWavefront wavefront = WavefrontLoop.of(integrator, stratified, seed);
+            workers[i] = new SampleLoop.WorkerState(i, wavefront != null ? wavefront.worker() : integrator.newWorker(),
+                    SampleLoop.newSampler(stratified, seed), features != null ? features.get() : null, wavefront);
         }
     }
 
@@ -300,6 +303,14 @@ final class RenderWorkers implements Parallel, PassRunner {
 
     /** Samples [firstSample, endSample) of every pixel of the rectangle [x0, x1) × [y0, y1). */
     private void renderRect(SampleLoop.WorkerState w, int x0, int y0, int x1, int y1, int firstSample, int endSample) {
+        if (w.wavefront != null) {
+            long[] invalid = {0};
+            tally.samples.addAndGet(WavefrontLoop.renderRect(w, cameraRays, seed, film, x0, y0, x1, y1, firstSample, endSample, invalid));
+            if (invalid[0] > 0) {
+                tally.invalid.addAndGet(invalid[0]);
+            }
+            return;
+        }
         long invalid = 0;
         for (int y = y0; y < y1 && !cancelled; y++) {
             long rowSamples = 0;
