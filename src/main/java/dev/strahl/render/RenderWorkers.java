@@ -58,15 +58,17 @@ final class RenderWorkers implements Parallel, PassRunner {
         boolean cull = settings.transport().cullBackFaces();
         return new RenderWorkers(film, CameraRays.of(scene.camera(), settings.output().width(), settings.output().height()), integrator,
                 settings.output().aovs().isEmpty() ? null : () -> new FeatureTracer(world, cull), settings.sampling().seed(),
-                settings.execution().effectiveThreads(), settings.execution().stripes(), name);
+                settings.execution().effectiveThreads(), settings.execution().stripes(), name, WavefrontLoop.batch());
     }
 
     /**
      * Workers of one job; they also trace the feature buffers of every camera sample when
      * {@code features} (else null) makes a tracer per thread (the film must then keep features).
+     * With {@code wavefrontBatch} above 0 an integrator that has a wavefront renders batches of that
+     * many paths ({@link WavefrontLoop}; the same bits).
      */
     RenderWorkers(Film film, CameraRays cameraRays, Integrator integrator, Supplier<FeatureTracer> features, long seed, int threads,
-                  boolean stripes, String name) {
+                  boolean stripes, String name, int wavefrontBatch) {
         if (features != null && !film.hasFeatures()) {
             throw new IllegalArgumentException("feature buffers need a film that keeps them");
         }
@@ -83,7 +85,7 @@ final class RenderWorkers implements Parallel, PassRunner {
         });
         this.workers = new SampleLoop.WorkerState[threads];
         for (int i = 0; i < threads; i++) {
-            PathWavefront wavefront = WavefrontLoop.of(integrator, stratified, seed);
+            PathWavefront wavefront = WavefrontLoop.of(integrator, wavefrontBatch, stratified, seed);
             workers[i] = new SampleLoop.WorkerState(i, wavefront != null ? wavefront.worker() : integrator.newWorker(),
                     SampleLoop.newSampler(stratified, seed), features != null ? features.get() : null, wavefront);
         }

@@ -26,17 +26,19 @@ final class WavefrontLoop {
 
     private WavefrontLoop() {}
 
-    /** Whether the settings' renders use the wavefront where the integrator has one. */
-    static boolean enabled() {
-        return "on".equals(System.getProperty("strahl.wavefront", "off"));
+    /** Paths per batch of the wavefront as the system properties say: 0 when it is off. */
+    static int batch() {
+        if (!"on".equals(System.getProperty("strahl.wavefront", "off"))) {
+            return 0;
+        }
+        return Math.max(1, Integer.getInteger("strahl.wavefront.batch", DEFAULT_BATCH));
     }
 
-    /** A wavefront of {@code integrator} for one thread with the render's samplers; null if it has none or it is off. */
-    static PathWavefront of(Integrator integrator, boolean stratified, long seed) {
-        if (!enabled() || !(integrator instanceof PathTracer path)) {
+    /** A wavefront of {@code batch} paths of {@code integrator} for one thread, with the render's samplers; null if it has none or batch is 0. */
+    static PathWavefront of(Integrator integrator, int batch, boolean stratified, long seed) {
+        if (batch <= 0 || !(integrator instanceof PathTracer path)) {
             return null;
         }
-        int batch = Math.max(1, Integer.getInteger("strahl.wavefront.batch", DEFAULT_BATCH));
         Sampler[] samplers = new Sampler[batch];
         for (int i = 0; i < batch; i++) {
             samplers[i] = SampleLoop.newSampler(stratified, seed);
