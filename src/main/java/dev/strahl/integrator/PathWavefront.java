@@ -1,13 +1,15 @@
 package dev.strahl.integrator;
 
 import dev.strahl.color.MutableRgb;
+import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
+import dev.strahl.material.Bsdf;
 import dev.strahl.sampling.Sampler;
 
 /**
  * The path tracer as a wavefront: a batch of paths advanced together, stage by stage — closest
- * hits of every live path, then shading of every hit grouped by material (the vertex kernel
+ * hits of every live path, then shading of every hit grouped by the kind of its BSDF (the vertex kernel
  * {@link PathTracer#scatter}: emission, the light sample's shadow query, the BSDF sample, the
  * roulette), then the batch's shadow rays, then compaction of the paths still alive — instead of
  * one path from camera to end at a time. One per worker thread; every array is allocated once.
@@ -26,7 +28,9 @@ public final class PathWavefront {
     private final PathTracer.PathWorker w;
     private final Sampler[] samplers;
     private final int capacity;
-    private final int materialCount;
+    /** Each material's kind: the index of its BSDF's class among the scene's; what stage 2 groups by. */
+    private final int[] kindOf;
+    private final int kinds;
     // the path state of each slot
     private final double[] ray, beta, prevPdf, etaScale, radiance;  // ray: o, d, tMax (7 per slot); beta, radiance: 3 per slot
     private final boolean[] prevDelta;
@@ -38,8 +42,8 @@ public final class PathWavefront {
     private final double[] shadowRay, shadowContribution;
     private final boolean[] shadowTraced;
     private final int[] shadowSlot;
-    // live paths in slot order, and the same grouped by material for shading
-    private final int[] live, shadeOrder, materialStart;
+    // live paths in slot order, and the same grouped by kind for shading
+    private final int[] live, shadeOrder, kindStart;
     private final Ray r = new Ray();
     private final Hit hit = new Hit();
     private final MutableRgb out = new MutableRgb();
@@ -49,7 +53,16 @@ public final class PathWavefront {
         this.w = pt.new PathWorker();
         this.samplers = samplers.clone();
         this.capacity = samplers.length;
-        this.materialCount = pt.world().materialCount();
+        var classes = new java.util.ArrayList<Class<?>>();
+        Bsdf[] bsdfs = pt.bsdfs();
+        this.kindOf = new int[bsdfs.length];
+        for (int m = 0; m < bsdfs.length; m++) {
+            if (!classes.contains(bsdfs[m].getClass())) {
+                classes.add(bsdfs[m].getClass());
+            }
+            kindOf[m] = classes.indexOf(bsdfs[m].getClass());
+        }
+        this.kinds = classes.size();
         int n = capacity;
         ray = new double[7 * n];
         beta = new double[3 * n];
@@ -68,7 +81,7 @@ public final class PathWavefront {
         shadowSlot = new int[n];
         live = new int[n];
         shadeOrder = new int[n];
-        materialStart = new int[materialCount + 2];
+        kindStart = new int[kinds + 2];
     }
 
     /** Paths per batch. */
@@ -117,8 +130,7 @@ public final class PathWavefront {
         }
         while (alive > 0) {
             closestHits(alive);
-            groupByMaterial(alive);
-            int queries = shade(alive);
+            int queries = shade(alive, groupByKind(alive));
             traceShadows(queries);
             alive = compact(alive);
         }
@@ -141,36 +153,44 @@ public final class PathWavefront {
         }
     }
 
-    /** The live paths in the order stage 2 shades them: misses first, then by material, each group in slot order (a stable counting sort). */
-    private void groupByMaterial(int alive) {
-        java.util.Arrays.fill(materialStart, 0);
-        var geometry = pt.world().geometry();
+    /**
+     * The live paths in the order stage 2 shades them: misses first, then by the kind of BSDF they
+     * hit, each group in slot order (a stable counting sort), so that each BSDF's code runs on many
+     * paths in a row. Returns the order: {@code live} itself where the scene has one kind.
+     */
+    private int[] groupByKind(int alive) {
+        if (kinds == 1) {
+            return live;
+        }
+        java.util.Arrays.fill(kindStart, 0);
+        Geometry geometry = pt.world().geometry();
         for (int i = 0; i < alive; i++) {
             int prim = hitPrim[live[i]];
-            materialStart[(prim < 0 ? 0 : geometry.material(prim) + 1) + 1]++;
+            kindStart[(prim < 0 ? 0 : kindOf[geometry.material(prim)] + 1) + 1]++;
         }
-        for (int m = 1; m < materialStart.length; m++) {
-            materialStart[m] += materialStart[m - 1];
+        for (int k = 1; k < kindStart.length; k++) {
+            kindStart[k] += kindStart[k - 1];
         }
         for (int i = 0; i < alive; i++) {
             int slot = live[i];
             int prim = hitPrim[slot];
-            shadeOrder[materialStart[prim < 0 ? 0 : geometry.material(prim) + 1]++] = slot;
+            shadeOrder[kindStart[prim < 0 ? 0 : kindOf[geometry.material(prim)] + 1]++] = slot;
         }
+        return shadeOrder;
     }
 
     /**
      * Stage 2: every live path at its hit, through the vertex kernel (or the environment for a
      * miss); a path that ends gets depth 0. Returns the number of shadow queries made.
      */
-    private int shade(int alive) {
+    private int shade(int alive, int[] order) {
         Tracer tracer = w.tracer;
         Shading s = w.s;
         PathState p = w.path;
         ShadowQuery q = w.q;
         int queries = 0;
         for (int i = 0; i < alive; i++) {
-            int slot = shadeOrder[i];
+            int slot = order[i];
             int o = 7 * slot;
             load(ray, o, r);
             loadState(slot, p);
