@@ -20,7 +20,10 @@ import java.util.concurrent.TimeUnit;
  * cancel out of the ratios. Prints per set the median of the rounds' ratios NEW/OLD of CPU ns per
  * ray (below 1: NEW is faster) and checks that both jars find the same hits.
  *
- *   java docs/bench/PairedKernels.java OLD.jar NEW.jar ROUNDS RAYS MESH [MESH ...]
+ *   java --add-modules jdk.incubator.vector docs/bench/PairedKernels.java OLD.jar[:scalar|:simd] NEW.jar[:scalar|:simd] ROUNDS RAYS MESH [MESH ...]
+ *
+ * A jar named with ":scalar" or ":simd" has its BVH switched to that kernel ({@code withSimd});
+ * without, each jar takes its default for this JVM (with the module: the Vector API where the jar has it).
  */
 public class PairedKernels {
     /** Runs every task in the calling thread, so that its CPU time is the kernel's. */
@@ -35,7 +38,9 @@ public class PairedKernels {
 
     record Side(Object bvh, List<?> sets, Method trace, Method hits, Method checksum) {}
 
-    static Side load(String jar, Path mesh, int rays) throws Exception {
+    static Side load(String spec, Path mesh, int rays) throws Exception {
+        int colon = spec.lastIndexOf(':');
+        String jar = colon > 1 ? spec.substring(0, colon) : spec, kernel = colon > 1 ? spec.substring(colon + 1) : "";
         ClassLoader cl = new URLClassLoader(new URL[] {Path.of(jar).toUri().toURL()}, ClassLoader.getPlatformClassLoader());
         Object scene = cl.loadClass("dev.strahl.io.SceneLoader").getMethod("load", Path.class).invoke(null, mesh);
         Class<?> world = cl.loadClass("dev.strahl.world.World");
@@ -43,6 +48,11 @@ public class PairedKernels {
         Object g = world.getMethod("geometry").invoke(w);
         Class<?> geo = cl.loadClass("dev.strahl.geometry.Geometry");
         Object bvh = cl.loadClass("dev.strahl.accel.Bvh").getMethod("build", geo).invoke(null, g);
+        if (!kernel.isEmpty()) {
+            Method with = bvh.getClass().getDeclaredMethod("withSimd", boolean.class);
+            with.setAccessible(true);
+            bvh = with.invoke(bvh, kernel.equals("simd"));
+        }
         Class<?> br = cl.loadClass("dev.strahl.bench.BenchRays");
         Object cam = scene.getClass().getMethod("camera").invoke(scene);
         int side = (int) Math.max(1, Math.min(512, Math.sqrt(rays / 4.0)));
@@ -54,7 +64,10 @@ public class PairedKernels {
                 .invoke(null, geo.getMethod("bounds").invoke(g), rays, 2L));
         sets.add(br.getMethod("shadow", geo, int.class, long.class).invoke(null, g, rays, 3L));
         Class<?> result = cl.loadClass("dev.strahl.bench.BenchRays$Result");
-        Method trace = br.getMethod("trace", bvh.getClass(), cl.loadClass("dev.strahl.bench.BenchRays$RaySet"), int.class, ExecutorService.class);
+        Method trace = null;
+        for (Method m : br.getMethods()) {
+            if (m.getName().equals("trace")) trace = m;        // its first parameter is the BVH's class or an interface of it
+        }
         return new Side(bvh, sets, trace, result.getMethod("hits"), result.getMethod("checksum"));
     }
 

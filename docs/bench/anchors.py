@@ -21,6 +21,16 @@
 Writes --out (JSON): the figures under mitsuba.<variant>.samples_per_second and
 embree.meshes.<mesh>.<set>.rays_per_second (median/min/max/runs), with versions and machine.
 
+3. With --alternate N (issue 28, stage 1: the ray kernels side by side): N rounds of Embree on every
+   mesh, then `strahl bench` on the same rays (--no-cornell: the rays only, one thread, --strahl-runs
+   runs; --strahl-arg passes more, e.g. --strahl-arg=--simd --strahl-arg=off), A B A B. The figures
+   of every round are under alternating.rounds, and per mesh and set the ratio strahl/Embree of
+   each round (a pair run minutes apart, so that the machine's drift cancels) with its median, min
+   and max under alternating.ratios, of rays per second of wall time and of the tracing thread's CPU
+   time (on a shared machine the second leaves out what other processes take from the core);
+   embree.meshes then holds the medians over the rounds, for `strahl bench --anchors`. Also
+   recorded: the CPU's vector flags, strahl's JVM and ray kernel.
+
 Usage (from the repository root, after `mvn -B -q -DskipTests package`):
     python3 docs/bench/anchors.py --out anchors.json
     java -jar target/strahl.jar bench --anchors anchors.json
@@ -107,15 +117,17 @@ def embree_mesh(work, desc, runs):
         tmax = np.ascontiguousarray(np.minimum(rays[:, 6], np.float32(3e38)))
         query = 'OCCLUDED' if s['any_hit'] else 'INTERSECT'
         scene.run(o[:4096], d[:4096], dists=tmax[:4096].copy(), query=query)   # warm-up
-        rates, hits = [], None
+        rates, cpu_rates, hits = [], [], None
         for run in range(runs):
             dist = tmax.copy()
-            t0 = time.perf_counter()
+            t0, c0 = time.perf_counter(), time.thread_time()
             res = scene.run(o, d, dists=dist, query=query)
-            rates.append(len(rays) / (time.perf_counter() - t0))
+            c1, t1 = time.thread_time(), time.perf_counter()
+            rates.append(len(rays) / (t1 - t0))
+            cpu_rates.append(len(rays) / (c1 - c0))
             hits = int(np.count_nonzero(res >= 0))
         out[s['name']] = {'query': 'any-hit' if s['any_hit'] else 'closest-hit', 'rays': len(rays), 'hits': hits,
-                          'rays_per_second': stat(rates)}
+                          'rays_per_second': stat(rates), 'rays_per_cpu_second': stat(cpu_rates)}
     # the binding's floor: the incoherent set's directions from origins beyond the box, pointing away
     rays = np.fromfile(os.path.join(work, f'{name}.incoherent.f32'), dtype='<f4').reshape(-1, 7)
     d = np.ascontiguousarray(np.abs(rays[:, 3:6]) + np.float32(1e-3))
@@ -144,6 +156,9 @@ def main():
     ap.add_argument('--mitsuba', nargs='*', default=['llvm_ad_rgb', 'scalar_rgb'], help='Mitsuba variants (none: skip)')
     ap.add_argument('--no-embree', action='store_true')
     ap.add_argument('--work', help='keep the exported rays here (default: a temporary directory)')
+    ap.add_argument('--alternate', type=int, default=0, help='rounds of Embree then strahl bench on the same rays (A B A B)')
+    ap.add_argument('--strahl-runs', type=int, default=5, help='with --alternate: timed runs of each strahl bench figure')
+    ap.add_argument('--strahl-arg', action='append', default=[], help='with --alternate: one more argument of strahl bench (repeatable)')
     ap.add_argument('--mitsuba-child', help=argparse.SUPPRESS)
     args = ap.parse_args()
 
@@ -173,11 +188,18 @@ def main():
                        stdout=sys.stderr)
         result['embree'] = {'binding': f"embreex {version('embreex')}, rtcIntersect1/rtcOccluded1 per ray, 1 thread",
                             'rays_per_set': args.rays, 'meshes': {}}
+        descs = []
         for f in sorted(glob.glob(os.path.join(work, '*.json'))):
             with open(f) as fh:
-                desc = json.load(fh)
-            print(f"anchors: Embree, {desc['mesh']}", file=sys.stderr)
-            result['embree']['meshes'][desc['mesh']] = embree_mesh(work, desc, args.runs)
+                descs.append(json.load(fh))
+        if args.alternate > 0:
+            result['machine']['cpu_flags'] = cpu_flags()
+            result['alternating'] = alternate(args, work, descs, data)
+            result['embree']['meshes'] = result['alternating']['embree_medians']
+        else:
+            for desc in descs:
+                print(f"anchors: Embree, {desc['mesh']}", file=sys.stderr)
+                result['embree']['meshes'][desc['mesh']] = embree_mesh(work, desc, args.runs)
         if not args.work:
             for f in glob.glob(os.path.join(work, '*')):
                 os.remove(f)
@@ -187,6 +209,62 @@ def main():
         json.dump(result, fh, indent=2)
     print(f'anchors: wrote {args.out}', file=sys.stderr)
     return 0
+
+
+def alternate(args, work, descs, data):
+    """Embree on every mesh, then strahl bench on the same rays, args.alternate times; ratios per round."""
+    rounds, strahl_info = [], {}
+    for i in range(args.alternate):
+        embree = {}
+        for desc in descs:
+            print(f"anchors: round {i + 1}/{args.alternate}, Embree, {desc['mesh']}", file=sys.stderr)
+            embree[desc['mesh']] = embree_mesh(work, desc, args.runs)
+        print(f'anchors: round {i + 1}/{args.alternate}, strahl bench', file=sys.stderr)
+        out = os.path.join(work, 'strahl-bench.out.json')
+        subprocess.run([args.java, '-jar', args.jar, 'bench', '--no-cornell', '--threads', '1', '--runs', str(args.strahl_runs),
+                        '--rays', str(args.rays), *data, '--cornell', os.path.join(REPO, 'scenes', 'cornell-box.json'),
+                        '--json', out, *args.strahl_arg], check=False, stdout=subprocess.DEVNULL, stderr=sys.stderr)
+        with open(out) as fh:
+            bench = json.load(fh)
+        os.remove(out)
+        strahl_info = bench['machine']
+        strahl = {m['name']: {x['set']: x for x in m['rays'] if x['threads'] == 1} for m in bench['meshes']}
+        rounds.append({'embree': embree, 'strahl': strahl, 'load_average': os.getloadavg()[0]})
+    ratios, medians = {}, {}
+    for desc in descs:
+        name = desc['mesh']
+        medians[name] = {k: v for k, v in rounds[0]['embree'][name].items() if not isinstance(v, dict) or 'query' not in v}
+        for s in desc['sets']:
+            set_name = s['name']
+            entry = {}
+            for kind in ('rays_per_second', 'rays_per_cpu_second'):
+                e = [r['embree'][name][set_name][kind]['median'] for r in rounds]
+                j = [r['strahl'].get(name, {}).get(set_name, {}).get(kind, {}).get('median') for r in rounds]
+                if None not in j:
+                    entry[kind] = dict(stat([b / a for a, b in zip(e, j)]), embree=stat(e), strahl=stat(j))
+            if entry:
+                ratios.setdefault(name, {})[set_name] = entry
+            medians[name][set_name] = dict(rounds[0]['embree'][name][set_name],
+                                           rays_per_second=stat([r['embree'][name][set_name]['rays_per_second']['median'] for r in rounds]))
+    for name, sets in ratios.items():
+        for set_name, entry in sets.items():
+            for kind, r in entry.items():
+                print(f"anchors: {name:30s} {set_name:10s} {'wall' if kind == 'rays_per_second' else 'CPU ':4s} strahl/Embree"
+                      f" {r['median']:.2f} [{r['min']:.2f}, {r['max']:.2f}]  (Embree {r['embree']['median'] / 1e6:.2f} M/s,"
+                      f" strahl {r['strahl']['median'] / 1e6:.2f} M/s)", file=sys.stderr)
+    return {'rounds': rounds, 'ratios': ratios, 'embree_medians': medians, 'strahl_machine': strahl_info,
+            'strahl_arguments': args.strahl_arg}
+
+
+def cpu_flags():
+    try:
+        with open('/proc/cpuinfo') as fh:
+            for line in fh:
+                if line.startswith('flags'):
+                    return ' '.join(f for f in line.split(':', 1)[1].split() if f.startswith(('avx', 'fma', 'sse4')))
+    except OSError:
+        pass
+    return ''
 
 
 def cpu_model():

@@ -20,7 +20,7 @@ module dev.strahl {
     requires static info.picocli;              // the command line only
     requires static com.formdev.flatlaf;       // the viewer only
     requires static com.hazelcast.core;        // clusters only (dev.strahl.cluster, loaded by RenderCluster when one is joined)
-    requires static jdk.incubator.vector;      // the optional SIMD box test of the BVH (accel/SimdNodes), used when present
+    requires static jdk.incubator.vector;      // the SIMD ray kernel (accel/SimdKernel), used when present
 
     exports dev.strahl.scene;
     exports dev.strahl.render;

@@ -25,19 +25,23 @@ import org.openjdk.jmh.annotations.Warmup;
 /**
  * BVH traversal: closest hit and any hit of incoherent rays (origins uniform in the scene's
  * bounds, directions uniform on the sphere). {@code scene} is any scene file strahl loads, e.g.
- * {@code -p scene=DATA/meshes/bunny/bun_zipper.ply} (DATA: the folder of {@code strahl bench --data}).
+ * {@code -p scene=DATA/meshes/bunny/bun_zipper.ply} (DATA: the folder of {@code strahl bench --data}),
+ * on the SIMD kernel (from the first call: JMH's warm-up compiles it) and on its scalar twin.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.AverageTime)
 @OutputTimeUnit(TimeUnit.NANOSECONDS)
 @Warmup(iterations = 3, time = 1)
 @Measurement(iterations = 5, time = 1)
-@Fork(1)
+@Fork(value = 1, jvmArgsAppend = {"--add-modules", "jdk.incubator.vector"})
 public class BvhTraversalBenchmark {
     private static final int RAYS = 1 << 16;
 
     @Param("scenes/cornell-box.json")
     public String scene;
+
+    @Param({"simd", "scalar"})
+    public String kernel;
 
     private Bvh bvh;
     private final double[] rays = new double[6 * RAYS];
@@ -49,7 +53,7 @@ public class BvhTraversalBenchmark {
     @Setup
     public void setUp() throws Exception {
         World world = World.of(SceneLoader.load(Path.of(scene)));
-        bvh = world.bvh();
+        bvh = ((Bvh) world.bvh()).withSimd(kernel.equals("simd"));
         Aabb box = world.bounds();
         SplittableRandom random = new SplittableRandom(3);
         for (int i = 0; i < RAYS; i++) {

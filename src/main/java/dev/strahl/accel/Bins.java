@@ -121,7 +121,7 @@ final class Bins {
             if (left == 0 || right == 0) {
                 continue;
             }
-            double cost = leftArea[b] * left + rightArea[b + 1] * right;
+            double cost = leftArea[b] * BvhBuilder.cost(left) + rightArea[b + 1] * BvhBuilder.cost(right);
             if (cost < best) {
                 best = cost;
                 lastBin = b;

@@ -10,23 +10,37 @@ import java.util.concurrent.ForkJoinTask;
  * Top-down construction of a binary BVH with the binned surface-area heuristic (Wald, "On fast
  * Construction of SAH-based Bounding Volume Hierarchies", 2007: centroids sorted into
  * {@value #BINS} bins on all three axes in one pass, the cheapest bin boundary taken), then
- * collapsed into the four-wide tree of {@link Bvh} by repeatedly opening the child of largest
- * surface area (as Embree and pbrt's wide BVHs do). Large ranges are built in parallel on a
+ * collapsed into the eight-wide tree of {@link Bvh} by {@link BvhWriter}. Large ranges are built in parallel on a
  * fork/join pool, and the top splits, which have the references to themselves, bin them in
  * parallel chunks. The result does not depend on the thread count: chunks' bins are merged by
  * sums, minima and maxima, which do not depend on the order, and the final tree is written in
  * one depth-first pass over the binary one.
  *
- * <p>Leaves hold at most {@value #MAX_LEAF} primitives, all triangles or all spheres, so that
- * they are one contiguous range of the reordered {@link Geometry} (no index indirection).
+ * <p>Leaves hold at most {@value #MAX_LEAF} primitives (one block of the leaf test), all
+ * triangles or all spheres, so that they are one contiguous range of the reordered
+ * {@link Geometry}. The SAH counts a leaf's cost in blocks ({@link #cost}) and a binary split's
+ * at {@value #TRAVERSAL_COST} of a block test: the eight-wide tree absorbs about three binary
+ * levels into one node, whose test takes less than half of a block test's time (measured:
+ * docs/performance.md, round 7). Those constants were chosen by node visits and block tests per
+ * ray on the benchmark meshes, and by memory: blocks are 3.6–3.9 triangles full on the meshes.
  * Below depth {@value #MAX_SAH_DEPTH} splits fall back to the object median, which bounds the
  * depth (and so the traversal stack) whatever the input.
  */
 final class BvhBuilder {
     static final int BINS = 32;
-    static final int MAX_LEAF = 6;
-    /** Cost of one box test relative to one primitive test, in the SAH. */
-    static final double TRAVERSAL_COST = 2.0;
+    static final int MAX_LEAF = BvhLayout.LANES;
+    /** Cost of a binary split relative to one leaf block test, in the SAH. */
+    static final double TRAVERSAL_COST = 0.25;
+
+    /**
+     * The SAH cost of intersecting {@code n} primitives: the leaf blocks they fill, since a block
+     * of four triangles costs one test whether it holds one or four. So the SAH prefers full
+     * blocks, as Embree's builders for its four-triangle leaves do.
+     */
+    static int cost(int n) {
+        return (n + BvhLayout.LANES - 1) / BvhLayout.LANES;
+    }
+
     private static final int MAX_SAH_DEPTH = 40;
     private static final int PARALLEL_MIN = 1 << 14;
     /** Ranges at least this large bin in parallel, in chunks of {@link #CHUNK} references. */
@@ -59,7 +73,7 @@ final class BvhBuilder {
 
     Bvh build() {
         if (n == 0) {
-            return new Bvh(geometry, new float[0], 0);
+            return new Bvh(geometry, new float[0], 0, new float[0]);
         }
         if (n >= PARALLEL_MIN && threads > 1) {
             ForkJoinPool pool = new ForkJoinPool(threads);
@@ -144,7 +158,7 @@ final class BvhBuilder {
         }
         double parentArea = area(nodeBox, 6 * node);
         double splitCost = parentArea > 0 ? TRAVERSAL_COST + bestCost / parentArea : Double.POSITIVE_INFINITY;
-        if (count <= MAX_LEAF && (bestAxis < 0 || count <= splitCost)) {
+        if (count <= MAX_LEAF && (bestAxis < 0 || cost(count) <= splitCost)) {
             if (refs.isHomogeneous(start, end)) {
                 makeLeaf(node, start, count);
                 return free;

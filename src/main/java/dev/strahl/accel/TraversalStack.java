@@ -1,32 +1,59 @@
 package dev.strahl.accel;
 
+import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
 import dev.strahl.geometry.RayTriangle;
 
 /**
- * Per-thread working memory of a BVH traversal: the nodes still to visit with the distance at
- * which the ray enters each (so that a node farther than the closest hit found meanwhile is
- * skipped without touching its box again), and the per-ray constants of the box and triangle
- * tests, set up once per ray by {@link #prepare}. Never share one between threads.
+ * Per-thread working memory of a traversal: the nodes still to visit with the key at which the
+ * ray enters each (so that a node farther than the closest hit found meanwhile is skipped without
+ * touching its boxes again), the per-ray constants of the box and triangle tests, set up once per
+ * ray by {@link #prepare}, and scratch for the kernels and the batch queries. Never share one
+ * between threads.
  */
 public final class TraversalStack {
-    final int[] refs = new int[Bvh.STACK_SIZE];
-    /** Entry distances as float bits (non-negative floats order like their bits). */
-    final int[] dist = new int[Bvh.STACK_SIZE];
-    /** The four children's entry distances (or -1) of the node being visited. */
-    final int[] lanes = new int[4];
+    /** Node references still to visit, and their keys ({@link ScalarKernel#key}): both grow upwards. */
+    final int[] refs = new int[BvhLayout.STACK_SIZE];
+    final int[] keys = new int[BvhLayout.STACK_SIZE];
+    /** The stack's size, where the SIMD kernel's node visits ({@link SimdKernel}) hand it over. */
+    int sp;
+    /** The keys of one node's eight children (or -1 for those the ray misses). */
+    final int[] lanes = new int[BvhLayout.WIDTH];
+    /** The distance of a leaf block's nearest hit ({@link SimdKernel}), infinite for none, and the block's scaled barycentrics. */
+    double bestT;
+    final double[] laneV = new double[BvhLayout.LANES], laneW = new double[BvhLayout.LANES], laneDet = new double[BvhLayout.LANES];
 
-    // Slab test: inverse direction, offsets of the near planes in a node, origin bounds for near and far planes.
+    // Slab test: inverse direction, offsets of the near and far planes in a node, origin bounds for near and far planes.
     float ix, iy, iz;
-    int nx, ny, nz;
+    int nx, ny, nz, fx, fy, fz;
     float onx, ony, onz, ofx, ofy, ofz;
     /** The triangle test's per-ray set-up; it also receives the scaled barycentrics of hits. */
     final RayTriangle triangle = new RayTriangle();
 
+    /** The ray and hit record of a batch query's current ray. */
+    final Ray ray = new Ray();
+    final Hit hit = new Hit();
+
+    /** What the scalar kernel visited, where it counts ({@link ScalarKernel#COUNT}). */
+    long nodeVisits, blockTests;
+
+    /** Node visits counted so far (only with {@code -Dstrahl.countVisits=true}, by the scalar kernel). */
+    public long nodeVisits() {
+        return nodeVisits;
+    }
+
+    /** Leaf blocks tested so far (as {@link #nodeVisits()}). */
+    public long blockTests() {
+        return blockTests;
+    }
+
+    /** Creates the working memory of one thread's traversals. */
+    public TraversalStack() {}
+
     /**
-     * Sets up the per-ray constants of the box tests and of the triangle test without branches
-     * on the direction (random rays would mispredict every one of them): selections go through
-     * sign bits.
+     * Sets up the per-ray constants of the box tests (in float) and of the triangle test (in
+     * double, as {@link RayTriangle} defines it) without branches on the direction: random rays
+     * would mispredict every one of them, so selections go through sign bits.
      */
     void prepare(Ray ray) {
         double ox = ray.o.x, oy = ray.o.y, oz = ray.o.z, dx = ray.d.x, dy = ray.d.y, dz = ray.d.z;
@@ -35,35 +62,26 @@ public final class TraversalStack {
         iy = 1 / (float) dy;
         iz = 1 / (float) dz;
         int sgx = Float.floatToRawIntBits(ix) >>> 31, sgy = Float.floatToRawIntBits(iy) >>> 31, sgz = Float.floatToRawIntBits(iz) >>> 31;
-        nx = 12 * sgx;
-        ny = 4 + 12 * sgy;
-        nz = 8 + 12 * sgz;
-        // Near planes take the upper origin bound for a positive direction, the lower one for a negative.
-        float lox = below(ox), hix = above(ox), loy = below(oy), hiy = above(oy), loz = below(oz), hiz = above(oz);
-        onx = pick(sgx, hix, lox);
-        ofx = pick(sgx, lox, hix);
-        ony = pick(sgy, hiy, loy);
-        ofy = pick(sgy, loy, hiy);
-        onz = pick(sgz, hiz, loz);
-        ofz = pick(sgz, loz, hiz);
+        // The near plane is the minimum for a positive direction, the maximum (3 planes on) for a negative one.
+        int w3 = 3 * BvhLayout.WIDTH;
+        nx = w3 * sgx;
+        ny = BvhLayout.WIDTH + w3 * sgy;
+        nz = 2 * BvhLayout.WIDTH + w3 * sgz;
+        fx = nx + w3 - 2 * w3 * sgx;
+        fy = ny + w3 - 2 * w3 * sgy;
+        fz = nz + w3 - 2 * w3 * sgz;
+        // Origin bounds: o ± e with e = |o|·2^-22 + 2^-126 (at least two float spacings around o, and
+        // more than the smallest normal float) rounded to float lie on either side of o. Near
+        // planes take the upper bound for a positive direction, the lower one for a negative.
+        double ex = Math.copySign(Math.abs(ox) * 0x1p-22 + 0x1p-126, dx);
+        double ey = Math.copySign(Math.abs(oy) * 0x1p-22 + 0x1p-126, dy);
+        double ez = Math.copySign(Math.abs(oz) * 0x1p-22 + 0x1p-126, dz);
+        onx = (float) (ox + ex);
+        ofx = (float) (ox - ex);
+        ony = (float) (oy + ey);
+        ofy = (float) (oy - ey);
+        onz = (float) (oz + ez);
+        ofz = (float) (oz - ez);
         triangle.prepare(ray);
-    }
-
-    /** {@code sign == 0 ? positive : negative}, without a branch. */
-    private static float pick(int sign, float positive, float negative) {
-        int m = -sign;
-        return Float.intBitsToFloat((Float.floatToRawIntBits(positive) & ~m) | (Float.floatToRawIntBits(negative) & m));
-    }
-
-    /** The float strictly above the double v (which lies strictly between {@link #below} and this). */
-    static float above(double v) {
-        float f = (float) v + 0f;                     // + 0 turns -0 into +0
-        int b = Float.floatToRawIntBits(f);
-        return Float.intBitsToFloat(b + 1 + 2 * (b >> 31));
-    }
-
-    /** The float strictly below the double v. */
-    static float below(double v) {
-        return -above(-v);
     }
 }

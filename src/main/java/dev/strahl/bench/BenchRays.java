@@ -1,6 +1,7 @@
 package dev.strahl.bench;
 
-import dev.strahl.accel.Bvh;
+import dev.strahl.accel.Aggregate;
+import dev.strahl.accel.RayBatch;
 import dev.strahl.accel.TraversalStack;
 import dev.strahl.scene.Camera;
 import dev.strahl.camera.CameraRays;
@@ -35,8 +36,8 @@ public final class BenchRays {
     /** Rays in flat arrays: origin, direction, tMax (7 doubles per ray); shadow rays ask only for any hit. */
     public record RaySet(String name, double[] data, int count, boolean anyHit) {}
 
-    /** What tracing a set gave: wall time, hits, and an order-independent checksum of the hit primitives. */
-    public record Result(double seconds, long hits, long checksum) {}
+    /** What tracing a set gave: wall time, the tracing threads' CPU time, hits, and an order-independent checksum of the hit primitives. */
+    public record Result(double seconds, double cpuSeconds, long hits, long checksum) {}
 
     /** Camera rays through jittered points of a width × height film, {@code spp} per pixel. */
     public static RaySet primary(Camera camera, int width, int height, int spp, long seed) {
@@ -162,7 +163,7 @@ public final class BenchRays {
     }
 
     /** Traces the set on {@code threads} threads of the pool, each a contiguous share. */
-    public static Result trace(Bvh bvh, RaySet set, int threads, ExecutorService pool) throws InterruptedException {
+    public static Result trace(Aggregate bvh, RaySet set, int threads, ExecutorService pool) throws InterruptedException {
         List<Callable<long[]>> tasks = new ArrayList<>();
         for (int t = 0; t < threads; t++) {
             int from = (int) ((long) set.count() * t / threads), to = (int) ((long) set.count() * (t + 1) / threads);
@@ -171,43 +172,53 @@ public final class BenchRays {
         long start = System.nanoTime();
         List<Future<long[]>> futures = pool.invokeAll(tasks);
         double seconds = (System.nanoTime() - start) * 1e-9;
-        long hits = 0, checksum = 0;
+        long hits = 0, checksum = 0, cpu = 0;
         for (Future<long[]> f : futures) {
             try {
                 hits += f.get()[0];
                 checksum += f.get()[1];
+                cpu += f.get()[2];
             } catch (ExecutionException e) {
                 throw new IllegalStateException("ray kernel failed: " + e.getCause(), e.getCause());
             }
         }
-        return new Result(seconds, hits, checksum);
+        return new Result(seconds, cpu * 1e-9, hits, checksum);
     }
 
-    private static long[] traceRange(Bvh bvh, RaySet set, int from, int to) {
-        Ray ray = new Ray();
-        Hit hit = new Hit();
-        TraversalStack stack = Bvh.newStack();
+    /** Rays per batch query: the thread's batch is filled from the set and traced with one call. */
+    private static final int BATCH = 256;
+
+    private static long[] traceRange(Aggregate bvh, RaySet set, int from, int to) {
+        RayBatch batch = new RayBatch(BATCH);
+        TraversalStack stack = new TraversalStack();
         double[] data = set.data();
         long hits = 0, checksum = 0;
-        if (set.anyHit()) {
-            for (int i = from; i < to; i++) {
-                load(data, i, ray);
-                if (bvh.occluded(ray, stack)) {
-                    hits++;
-                    checksum += i;
-                }
+        java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
+        long cpu0 = mx.getCurrentThreadCpuTime();
+        for (int first = from; first < to; first += BATCH) {
+            int n = Math.min(BATCH, to - first);
+            for (int j = 0, k = 7 * first; j < n; j++, k += 7) {
+                batch.set(j, data[k], data[k + 1], data[k + 2], data[k + 3], data[k + 4], data[k + 5], data[k + 6]);
             }
-        } else {
-            for (int i = from; i < to; i++) {
-                load(data, i, ray);
-                hit.reset();
-                if (bvh.intersect(ray, hit, stack, false)) {
-                    hits++;
-                    checksum += hit.prim + 1;
+            if (set.anyHit()) {
+                bvh.occluded(batch, 0, n, stack);
+                for (int j = 0; j < n; j++) {
+                    if (batch.occluded[j]) {
+                        hits++;
+                        checksum += first + j;
+                    }
+                }
+            } else {
+                bvh.intersect(batch, 0, n, stack, false);
+                for (int j = 0; j < n; j++) {
+                    if (batch.prim[j] >= 0) {
+                        hits++;
+                        checksum += batch.prim[j] + 1;
+                    }
                 }
             }
         }
-        return new long[] {hits, checksum};
+        return new long[] {hits, checksum, mx.getCurrentThreadCpuTime() - cpu0};
     }
 
     /**
@@ -215,9 +226,9 @@ public final class BenchRays {
      * set: the same hit or miss, the same primitive (or one at the same distance, a tie), the same
      * occlusion answer. Returns a description of the first difference, or null.
      */
-    public static String check(Bvh bvh, RaySet set, int samples) {
+    public static String check(Aggregate bvh, RaySet set, int samples) {
         Geometry g = bvh.geometry();
-        TraversalStack stack = Bvh.newStack();
+        TraversalStack stack = new TraversalStack();
         Ray r = new Ray(), rb = new Ray();
         Hit hit = new Hit(), brute = new Hit();
         int step = Math.max(1, set.count() / Math.max(1, samples));

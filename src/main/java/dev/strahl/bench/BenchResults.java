@@ -21,8 +21,16 @@ public final class BenchResults {
     /** The Cornell Box render at one thread count. */
     public record Render(int threads, Stat samplesPerSecond, Stat raysPerSecond, double raysPerSample) {}
 
-    /** One ray set traced at one thread count. */
-    public record Rays(String set, int threads, Stat raysPerSecond, long hits, long rays) {}
+    /**
+     * One ray set traced at one thread count: rays per second of wall time, and per second of the
+     * tracing threads' CPU time (per core; on a shared machine what other processes take from the
+     * cores does not count in it, so it compares runs minutes apart better).
+     */
+    public record Rays(String set, int threads, Stat raysPerSecond, long hits, long rays, Stat raysPerCpuSecond) {
+        public Rays(String set, int threads, Stat raysPerSecond, long hits, long rays) {
+            this(set, threads, raysPerSecond, hits, rays, null);
+        }
+    }
 
     /** One mesh: loading, BVH build, memory and ray rates. */
     public record Mesh(String name, String file, int triangles, double loadSeconds, Stat buildSeconds, double bytesPerTriangle,
@@ -61,6 +69,10 @@ public final class BenchResults {
     String os;
     String jvm;
     boolean vectorApi;
+    /** What traced the rays and renders ({@code Aggregate.kernel()}). */
+    String kernel;
+    /** Seconds the bench waited for the SIMD kernel to be compiled before timing (0 for the scalar kernel). */
+    public double simdWarmUpSeconds;
     long maxHeapMiB;
     boolean quick;
     int runs;

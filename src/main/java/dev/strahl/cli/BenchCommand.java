@@ -115,10 +115,19 @@ final class BenchCommand implements Callable<Integer> {
         Path exportRays;
     }
 
+    @ArgGroup(validate = false, heading = "%nExecution:%n")
+    SimdOption execution = new SimdOption();
+
     private BenchProgress progress;
 
     @Override
     public Integer call() {
+        try (SimdOption.Scope kernel = execution.apply()) {
+            return measure();
+        }
+    }
+
+    private Integer measure() {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter out = spec.commandLine().getOut();
         long start = System.nanoTime();
@@ -160,6 +169,16 @@ final class BenchCommand implements Callable<Integer> {
             return 2;
         }
         progress = new BenchProgress(System.err, Terminal.isStderrTerminal());
+        if (results.exportRays == null) {
+            // Timed runs are of the kernel the report names: the SIMD one once C2 has compiled it, not the scalar twin meanwhile.
+            progress.step("compiling the SIMD kernel");
+            try {
+                r.simdWarmUpSeconds = BenchReport.awaitSimd();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return 1;
+            }
+        }
         ExecutorService pool = Executors.newFixedThreadPool(counts.last(), t -> {
             Thread thread = new Thread(t, "strahl-bench");
             thread.setDaemon(true);
@@ -360,11 +379,12 @@ final class BenchCommand implements Callable<Integer> {
             BenchRays.trace(bvh, set, counts.last(), pool);                          // warm-up
             BenchRays.Result reference = null;
             for (int t : counts) {
-                double[] rate = new double[timedRuns];
+                double[] rate = new double[timedRuns], cpuRate = new double[timedRuns];
                 for (int run = 0; run < timedRuns; run++) {
                     progress.step(String.format("%s: %s rays, %d thread%s, run %d/%d", name, set.name(), t, t == 1 ? "" : "s", run + 1, timedRuns));
                     BenchRays.Result res = BenchRays.trace(bvh, set, t, pool);
                     rate[run] = set.count() / res.seconds();
+                    cpuRate[run] = set.count() / res.cpuSeconds();          // per core: all threads' CPU time
                     if (reference == null) {
                         reference = res;
                     } else if (res.hits() != reference.hits() || res.checksum() != reference.checksum()) {
@@ -372,7 +392,7 @@ final class BenchCommand implements Callable<Integer> {
                         failures.add(name + ": " + check);
                     }
                 }
-                rays.add(new BenchResults.Rays(set.name(), t, BenchResults.Stat.of(rate), reference.hits(), set.count()));
+                rays.add(new BenchResults.Rays(set.name(), t, BenchResults.Stat.of(rate), reference.hits(), set.count(), BenchResults.Stat.of(cpuRate)));
             }
         }
         r.meshes.add(new BenchResults.Mesh(name, mesh.source(), g.triangleCount(), mesh.loadSeconds(), BenchResults.Stat.of(build), bytes, rays, check));

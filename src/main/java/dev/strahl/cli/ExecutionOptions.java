@@ -5,11 +5,12 @@ import picocli.CommandLine.Option;
 
 /**
  * How the work is done on this machine: the "Execution" section of {@code render}, {@code view} and
- * {@code worker} (RenderSettings.Execution). None of it changes the image's bits.
+ * {@code worker} (RenderSettings.Execution, and the ray kernel of {@link SimdOption}). None of it
+ * changes the image's bits.
  */
-final class ExecutionOptions {
+final class ExecutionOptions extends SimdOption {
 
-    @Option(names = "--threads", defaultValue = "0", description = "Worker threads; 0 = all processors (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--threads", order = 0, defaultValue = "0", description = "Worker threads; 0 = all processors (default: ${DEFAULT-VALUE}).")
     int threads;
 
     /** {@code base} with these threads. */

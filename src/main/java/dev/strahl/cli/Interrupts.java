@@ -110,7 +110,8 @@ final class Interrupts implements AutoCloseable {
             Method handle = signalClass.getMethod("handle", signalClass, handlerClass);
             List<Runnable> restore = new ArrayList<>();
             for (String name : new String[] {"INT", "TERM"}) {
-                Object signal = newSignal.newInstance(name);
+                // Under the launcher these arrive as SIGUSR1 and SIGURG (SimdLauncher); messages and codes stay those of INT and TERM.
+                Object signal = newSignal.newInstance(SimdLauncher.osSignal(name));
                 int code = name.equals("INT") ? SIGINT_EXIT : SIGTERM_EXIT;
                 Object handler = Proxy.newProxyInstance(handlerClass.getClassLoader(), new Class<?>[] {handlerClass},
                         (proxy, method, args) -> switch (method.getName()) {

@@ -1,5 +1,6 @@
 package dev.strahl.cli;
 
+import dev.strahl.accel.Simd;
 import picocli.CommandLine.Command;
 import picocli.CommandLine;
 
@@ -15,6 +16,12 @@ public final class Main implements Runnable {
     CommandLine.Model.CommandSpec spec;
 
     public static void main(String[] args) {
+        int code = SimdLauncher.relaunch(args);
+        if (code >= 0) {
+            // Halt: this JVM ran nothing, and a recording or hook of its own must not overwrite the child's.
+            Runtime.getRuntime().halt(code);
+        }
+        SimdLauncher.setUpChild();
         System.exit(run(args));
     }
 
@@ -71,7 +78,8 @@ public final class Main implements Runnable {
         public String[] getVersion() {
             String v = Main.class.getPackage().getImplementationVersion();
             return new String[] {"strahl " + (v != null ? v : "(development build)"),
-                "Java " + System.getProperty("java.version") + " (" + System.getProperty("java.vm.name") + ")"};
+                "Java " + System.getProperty("java.version") + " (" + System.getProperty("java.vm.name") + ")",
+                "ray kernel: " + Simd.describe(Simd.enabled())};
         }
     }
 }

@@ -117,7 +117,7 @@ final class RenderCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
-        try (Interrupts irq = Interrupts.install(err)) {
+        try (SimdOption.Scope kernel = execution.apply(); Interrupts irq = Interrupts.install(err)) {
             return run(err, irq);
         } catch (SceneException | CheckpointException e) {
             return fail(err, e, e.getMessage(), 2);

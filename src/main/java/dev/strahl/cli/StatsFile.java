@@ -1,6 +1,7 @@
 package dev.strahl.cli;
 
 import com.fasterxml.jackson.core.JsonGenerator;
+import dev.strahl.accel.Simd;
 import dev.strahl.io.json.JsonFile;
 import dev.strahl.render.Aov;
 import dev.strahl.render.RenderSettings;
@@ -57,6 +58,7 @@ final class StatsFile {
             }
             json.writeNumberField("thread_idle_seconds", stats.threadIdleSeconds());
             json.writeStringField("accel", settings.execution().bruteForce() ? "none" : "bvh");
+            json.writeStringField("kernel", settings.execution().bruteForce() ? "brute force" : "bvh8, " + Simd.describe(Simd.enabled()));
             json.writeStringField("schedule", settings.execution().stripes() ? "stripes" : "tiles");
             json.writeStringField("shadows", settings.transport().shadows() ? "on" : "off");
             json.writeNumberField("texture_bytes", textureBytes);

@@ -97,7 +97,7 @@ final class ViewCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
-        try {
+        try (SimdOption.Scope kernel = execution.apply()) {
             // refuses a film too large for the heap, as render does; a viewer that keeps feature buffers denoises them
             Viewer.open(options(), (w, h, features) -> HeapCheck.checkRender(w, h, features, features)).awaitClosed();
             return 0;

@@ -65,7 +65,7 @@ final class WorkerCommand implements Callable<Integer> {
         if (cluster.clusterName.isBlank()) {
             return usage(err, "--cluster-name must not be empty");
         }
-        try (Interrupts irq = Interrupts.install(err)) {
+        try (SimdOption.Scope kernel = execution.apply(); Interrupts irq = Interrupts.install(err)) {
             var stop = new CountDownLatch(1);
             irq.onFirstSignal(stop::countDown, "leaving the cluster");
             RenderCluster member;

@@ -92,21 +92,23 @@ public final class RayTriangle {
      * (docs/performance.md, round 4).
      */
     public boolean hit(float[] pos, int[] tri, byte[] flags, int prim, double tMax, boolean cull) {
-        return hit(pos, 3 * tri[3 * prim], 3 * tri[3 * prim + 1], 3 * tri[3 * prim + 2], flags, prim, tMax, cull);
+        return hit(pos, 3 * tri[3 * prim], 3 * tri[3 * prim + 1], 3 * tri[3 * prim + 2], 1, flags, prim, tMax, cull);
     }
 
     /**
-     * {@link #hit(float[], int[], byte[], int, double, boolean)} with the vertices' offsets given:
-     * vertex a is {@code v[a .. a+2]}, b and c likewise. The BVH passes its leaf-ordered copy of
-     * the triangles ({@code a = 9·prim}, b = a + 3, c = a + 6), which spares the index lookup and
-     * keeps a leaf's vertices in neighbouring cache lines; the same float values give the same bits.
+     * {@link #hit(float[], int[], byte[], int, double, boolean)} with the vertices' places given:
+     * coordinate k of vertex a is {@code v[a + stride·k]}, of b and c likewise. The BVH's scalar
+     * kernel passes a lane of its leaf blocks (stride 4, the coordinates of four triangles side by
+     * side); the same float values give the same bits. Its Vector API kernel runs these very
+     * operations, in this order, on four lanes at once.
      */
-    public boolean hit(float[] pos, int a, int b, int c, byte[] flags, int prim, double tMax, boolean cull) {
+    public boolean hit(float[] pos, int a, int b, int c, int stride, byte[] flags, int prim, double tMax, boolean cull) {
+        int x = stride * kx, y = stride * ky, z = stride * kz;
         // Vertices relative to the origin, sheared so that the ray is the z axis.
-        double az0 = pos[a + kz] - okz, bz0 = pos[b + kz] - okz, cz0 = pos[c + kz] - okz;
-        double axs = pos[a + kx] - okx - sx * az0, ays = pos[a + ky] - oky - sy * az0;
-        double bxs = pos[b + kx] - okx - sx * bz0, bys = pos[b + ky] - oky - sy * bz0;
-        double cxs = pos[c + kx] - okx - sx * cz0, cys = pos[c + ky] - oky - sy * cz0;
+        double az0 = pos[a + z] - okz, bz0 = pos[b + z] - okz, cz0 = pos[c + z] - okz;
+        double axs = pos[a + x] - okx - sx * az0, ays = pos[a + y] - oky - sy * az0;
+        double bxs = pos[b + x] - okx - sx * bz0, bys = pos[b + y] - oky - sy * bz0;
+        double cxs = pos[c + x] - okx - sx * cz0, cys = pos[c + y] - oky - sy * cz0;
         // Scaled barycentrics: u of vertex a, v of b, w of c.
         double u = cxs * bys - cys * bxs;
         double v = axs * cys - ays * cxs;

@@ -1,7 +1,7 @@
 package dev.strahl.integrator;
 
 import dev.strahl.color.MutableRgb;
-import dev.strahl.accel.Bvh;
+import dev.strahl.accel.Aggregate;
 import dev.strahl.accel.TraversalStack;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
@@ -46,7 +46,7 @@ public final class DirectLight {
     }
 
     private final World world;
-    private final Bvh bvh;
+    private final Aggregate bvh;
     private final LightSampler lights;
     private final TraversalStack stack;
     private final boolean cutouts;

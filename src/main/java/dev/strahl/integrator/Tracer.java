@@ -1,6 +1,6 @@
 package dev.strahl.integrator;
 
-import dev.strahl.accel.Bvh;
+import dev.strahl.accel.Aggregate;
 import dev.strahl.accel.TraversalStack;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
@@ -28,7 +28,7 @@ public final class Tracer {
     final World world;
     final LightSampler lights;
     public final DirectLight direct;
-    private final Bvh bvh;
+    private final Aggregate bvh;
     private final TraversalStack stack;
     private final Hit hit = new Hit();
     private final Bsdf[] bsdfs;
@@ -41,7 +41,7 @@ public final class Tracer {
         this.world = world;
         this.lights = world.lights();
         this.bvh = world.bvh();
-        this.stack = Bvh.newStack();
+        this.stack = new TraversalStack();
         this.direct = new DirectLight(world, stack);
         this.bsdfs = bsdfs;
         this.cullBackFaces = cullBackFaces;

@@ -1,5 +1,6 @@
 package dev.strahl.world;
 
+import dev.strahl.accel.Aggregate;
 import dev.strahl.accel.Bvh;
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
@@ -28,7 +29,7 @@ public final class World {
     private static volatile Function<Object, World> sceneAccess;
 
     private final Geometry geometry;
-    private final Bvh bvh;
+    private final Aggregate bvh;
     private final LightSampler lights;
     private final Bsdf[] bsdfs;
     private final Emission[] emission;
@@ -38,13 +39,13 @@ public final class World {
     private final List<PunctualLight> punctualLights;
     private final double bvhBuildSeconds;
 
-    private World(Geometry geometry, Bvh bvh, Bsdf[] bsdfs, Emission[] emission, SurfaceMaps[] maps, Environment environment,
+    private World(Geometry geometry, Aggregate bvh, Bsdf[] bsdfs, Emission[] emission, SurfaceMaps[] maps, Environment environment,
                   List<PunctualLight> punctual, double bvhBuildSeconds) {
         this(geometry, bvh, new LightSampler(geometry, emission, environment, punctual), bsdfs, emission, maps, environment, punctual,
                 bvhBuildSeconds);
     }
 
-    private World(Geometry geometry, Bvh bvh, LightSampler lights, Bsdf[] bsdfs, Emission[] emission, SurfaceMaps[] maps,
+    private World(Geometry geometry, Aggregate bvh, LightSampler lights, Bsdf[] bsdfs, Emission[] emission, SurfaceMaps[] maps,
                   Environment environment, List<PunctualLight> punctual, double bvhBuildSeconds) {
         this.geometry = geometry;
         this.bvh = bvh;
@@ -64,7 +65,7 @@ public final class World {
 
     /**
      * Teaching option ({@code --accel none}): this world with every ray tested against every
-     * primitive instead of the BVH ({@link Bvh#bruteForce()}); everything else shared.
+     * primitive instead of the BVH ({@link Aggregate#bruteForce()}); everything else shared.
      */
     public World bruteForce() {
         return new World(geometry, bvh.bruteForce(), lights, bsdfs, emission, maps, environment, punctualLights, bvhBuildSeconds);
@@ -86,7 +87,7 @@ public final class World {
             throw new IllegalArgumentException(bsdfs.length + " BSDFs for " + emission.length + " emissions and " + maps.length + " maps");
         }
         long start = System.nanoTime();
-        Bvh bvh = Bvh.build(geometry);
+        Aggregate bvh = Bvh.build(geometry);
         double seconds = (System.nanoTime() - start) * 1e-9;
         // The BVH hands back the same primitives reordered into its leaves: hits refer to those.
         return new World(bvh.geometry(), bvh, bsdfs.clone(), emission.clone(), maps.clone(), Objects.requireNonNull(environment),
@@ -112,7 +113,7 @@ public final class World {
         return geometry;
     }
 
-    public Bvh bvh() {
+    public Aggregate bvh() {
         return bvh;
     }
 

@@ -15,7 +15,7 @@ import org.joml.Vector3d;
 import org.junit.jupiter.api.Test;
 
 /**
- * The teaching option {@code --accel none} ({@link Bvh#bruteForce()}): every query tests every
+ * The teaching option {@code --accel none} ({@link BruteForce}): every query tests every
  * primitive, and finds what the tree finds: the same closest distance on triangles and spheres,
  * with and without back-face culling, the same primitive but on exact ties, the same occlusion.
  */
@@ -24,12 +24,14 @@ class BruteForceTest {
     @Test
     void bruteForceFindsTheTreesHitsOnTrianglesAndSpheres() throws Exception {
         Geometry closedSphere = new MeshGeometry().addMesh(Meshes.icosphere(3, 1, false), new int[1280], true).build();
-        Bvh[] trees = {World.of(SceneLoader.load(Path.of("scenes/cornell-box.json"))).bvh(),
+        Aggregate[] trees = {World.of(SceneLoader.load(Path.of("scenes/cornell-box.json"))).bvh(),
             World.of(SceneLoader.load(Path.of("scenes/cornell-sphere.json"))).bvh(), Bvh.build(closedSphere)};
-        for (Bvh bvh : trees) {
-            Bvh brute = bvh.bruteForce();
-            assertThat(brute.isBruteForce()).isTrue();
-            assertThat(bvh.isBruteForce()).isFalse();
+        for (Aggregate bvh : trees) {
+            Aggregate brute = bvh.bruteForce();
+            assertThat(brute).isInstanceOf(BruteForce.class);
+            assertThat(brute.kernel()).isEqualTo("brute force");
+            assertThat(bvh).isInstanceOf(Bvh.class);
+            assertThat(brute.geometry()).isSameAs(bvh.geometry());
             TraversalStack stack = Bvh.newStack();
             SplittableRandom random = new SplittableRandom(19);
             int hits = 0, ties = 0;

@@ -16,6 +16,7 @@ import java.util.List;
 import java.util.SplittableRandom;
 import java.util.stream.Stream;
 import org.joml.Vector3d;
+import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
@@ -176,7 +177,7 @@ class BvhTest {
      * aimed at points on random primitives, and with zero direction components (axis-aligned or
      * in a coordinate plane, origins sometimes exactly on a vertex's coordinate plane).
      */
-    private static Ray randomRay(SplittableRandom random, Geometry g, Aabb box, SurfacePoint sp) {
+    static Ray randomRay(SplittableRandom random, Geometry g, Aabb box, SurfacePoint sp) {
         double ex = Math.max(box.extent(0), 0.1), ey = Math.max(box.extent(1), 0.1), ez = Math.max(box.extent(2), 0.1);
         Vector3d o;
         if (random.nextBoolean()) {
@@ -248,11 +249,17 @@ class BvhTest {
     // ---------------------------------------------------------------------------------------------
     // Agreement with brute force
 
+    /** The tests run with the Vector API module (surefire's argLine), to cover the SIMD kernel too; it needs 256-bit vectors. */
+    static void assumeSimd() {
+        assertThat(ModuleLayer.boot().findModule("jdk.incubator.vector")).as("the tests run with the Vector API module").isPresent();
+        Assumptions.assumeTrue(Simd.AVAILABLE, "the processor has no 256-bit vectors: the SIMD kernel does not run here");
+    }
+
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void closestHitEqualsBruteForce(Scene scene) {
         closestHitEqualsBruteForce(scene, false);
-        assertThat(SimdNodes.AVAILABLE).as("the tests run with the Vector API module, to cover its path too").isTrue();
+        assumeSimd();
         closestHitEqualsBruteForce(scene, true);
     }
 
@@ -304,6 +311,7 @@ class BvhTest {
     @MethodSource("scenes")
     void anyHitEqualsBruteForceForFiniteTMax(Scene scene) {
         anyHitEqualsBruteForceForFiniteTMax(scene, false);
+        assumeSimd();
         anyHitEqualsBruteForceForFiniteTMax(scene, true);
     }
 
@@ -338,17 +346,21 @@ class BvhTest {
         Bvh.Layout layout = bvh.layout();
         int n = g.primitiveCount();
         assertThat(bvh.nodeCount()).isBetween(1, Math.max(1, n - 1));
-        assertThat(layout.nodes()).hasSize(Bvh.NODE * bvh.nodeCount());
+        assertThat(layout.nodes()).hasSize(BvhLayout.NODE * bvh.nodeCount());
         boolean[] visited = new boolean[bvh.nodeCount()];
         int[] primSeen = new int[n];
+        boolean[] blockSeen = new boolean[layout.blocks().length / BvhLayout.BLOCK];
         Aabb all = new Aabb();
-        int maxDepth = checkNode(g, layout, 0, 1, visited, primSeen, all);
-        assertThat(maxDepth).as("depth within the limit the traversal stack is sized for").isLessThanOrEqualTo(Bvh.MAX_DEPTH);
+        int maxDepth = checkNode(g, layout, 0, 1, visited, primSeen, blockSeen, all);
+        assertThat(maxDepth).as("depth within the limit the traversal stack is sized for").isLessThanOrEqualTo(BvhLayout.MAX_DEPTH);
         for (int i = 0; i < visited.length; i++) {
             assertThat(visited[i]).as("node %d reachable", i).isTrue();
         }
         for (int p = 0; p < n; p++) {
             assertThat(primSeen[p]).as("primitive %d in exactly one leaf", p).isEqualTo(1);
+        }
+        for (int b = 0; b < blockSeen.length; b++) {
+            assertThat(blockSeen[b]).as("block %d in a leaf", b).isTrue();
         }
     }
 
@@ -375,18 +387,20 @@ class BvhTest {
 
     /**
      * Checks the subtree of node {@code node}: every child box encloses its subtree (the
-     * primitives of leaves), leaves are small, homogeneous ranges; returns the subtree's depth and
+     * primitives of leaves), leaves are small, homogeneous ranges, and a triangle leaf's blocks
+     * hold exactly its triangles' vertices (NaN in unused lanes); returns the subtree's depth and
      * grows {@code dest} by its primitives.
      */
-    private static int checkNode(Geometry g, Bvh.Layout layout, int node, int depth, boolean[] visited, int[] primSeen, Aabb dest) {
+    private static int checkNode(Geometry g, Bvh.Layout layout, int node, int depth, boolean[] visited, int[] primSeen,
+                                 boolean[] blockSeen, Aabb dest) {
         assertThat(visited[node]).as("node %d visited twice", node).isFalse();
         visited[node] = true;
         int deepest = depth;
         int used = 0;
-        for (int c = 0; c < 4; c++) {
+        for (int c = 0; c < BvhLayout.WIDTH; c++) {
             int child = layout.child(node, c);
             Aabb subtree = new Aabb();
-            if (child == Bvh.EMPTY) {
+            if (child == BvhLayout.EMPTY) {
                 for (int k = 0; k < 3; k++) {
                     assertThat(layout.box(node, k, c)).as("empty slot min").isEqualTo(Float.POSITIVE_INFINITY);
                     assertThat(layout.box(node, 3 + k, c)).as("empty slot max").isEqualTo(Float.NEGATIVE_INFINITY);
@@ -394,17 +408,25 @@ class BvhTest {
                 continue;
             }
             used++;
-            if (child < 0) {
-                int first = Bvh.leafFirst(child), count = Bvh.leafCount(child);
+            if (child < 0 && BvhLayout.isSphereLeaf(child)) {
+                int first = BvhLayout.firstSphere(child), count = BvhLayout.sphereCount(child);
                 assertThat(count).as("leaf size").isBetween(1, BvhBuilder.MAX_LEAF);
                 for (int p = first; p < first + count; p++) {
-                    assertThat(g.isTriangle(p)).as("leaf of one primitive kind").isEqualTo(g.isTriangle(first));
+                    assertThat(g.isTriangle(p)).as("sphere leaf of spheres").isFalse();
                     primSeen[p]++;
                     g.includeBounds(p, subtree);
                 }
+            } else if (child < 0) {
+                int blocks = BvhLayout.blockCount(child), prims = 0;
+                for (int b = BvhLayout.firstBlock(child); b < BvhLayout.firstBlock(child) + blocks; b++) {
+                    assertThat(blockSeen[b]).as("block %d in one leaf", b).isFalse();
+                    blockSeen[b] = true;
+                    prims += checkBlock(g, layout, b, primSeen, subtree);
+                }
+                assertThat(prims).as("leaf size").isBetween(1, BvhBuilder.MAX_LEAF).isGreaterThan(BvhLayout.LANES * (blocks - 1));
             } else {
                 assertThat(child).as("children follow their parent").isGreaterThan(node).isLessThan(visited.length);
-                deepest = Math.max(deepest, checkNode(g, layout, child, depth + 1, visited, primSeen, subtree));
+                deepest = Math.max(deepest, checkNode(g, layout, child, depth + 1, visited, primSeen, blockSeen, subtree));
             }
             for (int k = 0; k < 3; k++) {
                 assertThat((double) layout.box(node, k, c)).as("node %d child %d min[%d]", node, c, k).isLessThanOrEqualTo(subtree.min(k));
@@ -414,6 +436,32 @@ class BvhTest {
         }
         assertThat(used).as("children of node %d", node).isGreaterThanOrEqualTo(node == 0 ? 1 : 2);
         return deepest;
+    }
+
+    /** One block: consecutive triangles, their vertices in the lanes, NaN beyond; returns its triangle count. */
+    private static int checkBlock(Geometry g, Bvh.Layout layout, int b, int[] primSeen, Aabb dest) {
+        int first = layout.blockPrim(b), count = layout.blockCount(b);
+        assertThat(count).as("block %d count", b).isBetween(1, BvhLayout.LANES);
+        float[] pos = g.positionArray();
+        int[] tri = g.indexArray();
+        for (int lane = 0; lane < BvhLayout.LANES; lane++) {
+            for (int v = 0; v < 3; v++) {
+                for (int k = 0; k < 3; k++) {
+                    float x = layout.blocks()[BvhLayout.BLOCK * b + BvhLayout.LANES * (3 * v + k) + lane];
+                    if (lane < count) {
+                        assertThat(x).isEqualTo(pos[3 * tri[3 * (first + lane) + v] + k]);
+                    } else {
+                        assertThat(x).as("unused lane").isNaN();
+                    }
+                }
+            }
+        }
+        for (int p = first; p < first + count; p++) {
+            assertThat(g.isTriangle(p)).as("triangle leaf of triangles").isTrue();
+            primSeen[p]++;
+            g.includeBounds(p, dest);
+        }
+        return count;
     }
 
     @Test

@@ -1,6 +1,7 @@
 package dev.strahl.testing;
 
 import dev.strahl.world.World;
+import dev.strahl.accel.Aggregate;
 import dev.strahl.accel.Bvh;
 import dev.strahl.accel.TraversalStack;
 import dev.strahl.camera.CameraRays;
@@ -66,7 +67,7 @@ public final class Golden {
     private static List<Region> regions(Scene scene, int width, int height, boolean faces) {
         int sub = 4;
         CameraRays rays = Meshes.rays(scene.camera(), width * sub, height * sub);
-        Bvh bvh = World.of(scene).bvh();
+        Aggregate bvh = World.of(scene).bvh();
         Ray ray = new Ray();
         Hit hit = new Hit();
         SurfacePoint sp = new SurfacePoint();
