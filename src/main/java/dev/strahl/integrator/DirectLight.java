@@ -2,6 +2,7 @@ package dev.strahl.integrator;
 
 import dev.strahl.color.MutableRgb;
 import dev.strahl.accel.Aggregate;
+import dev.strahl.accel.RayBatch;
 import dev.strahl.accel.TraversalStack;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
@@ -56,6 +57,7 @@ public final class DirectLight {
     private final SurfacePoint lightPoint = new SurfacePoint();
     private final LightSample ls = new LightSample();
     private final ShadowQuery query = new ShadowQuery();
+    private final Ray shadow = new Ray();
     private final Vector3d wiLocal = new Vector3d();
     private final Vector3d toSurface = new Vector3d();
     private final Vector3d target = new Vector3d();
@@ -173,12 +175,33 @@ public final class DirectLight {
      */
     boolean occluded(Ray ray) {
         rays++;
-        if (!bvh.occluded(ray, stack)) {
-            return false;
-        }
+        return bvh.occluded(ray, stack) && (!cutouts || blockedPastCutouts(ray));
+    }
+
+    /**
+     * Whether each of shadow rays [0, n) of {@code batch} is blocked, into {@code batch.occluded}:
+     * {@link #occluded(Ray)} of each, the first any-hit query of all of them at once (the
+     * aggregate's batch query), then the cut-outs ray by ray.
+     */
+    void occluded(RayBatch batch, int n) {
+        rays += n;
+        bvh.occluded(batch, 0, n, stack);
         if (!cutouts) {
-            return true;
+            return;
         }
+        Ray ray = shadow;
+        for (int i = 0; i < n; i++) {
+            if (batch.occluded[i]) {
+                ray.o.set(batch.ox[i], batch.oy[i], batch.oz[i]);
+                ray.d.set(batch.dx[i], batch.dy[i], batch.dz[i]);
+                ray.tMax = batch.tMax[i];
+                batch.occluded[i] = blockedPastCutouts(ray);
+            }
+        }
+    }
+
+    /** For a shadow ray found blocked: whether it still is when cut-away surfaces let it pass (tracing on hit by hit; may move its origin). */
+    private boolean blockedPastCutouts(Ray ray) {
         double tMax = ray.tMax;
         origin.set(ray.o);
         for (int pass = 0; pass < Tracer.MAX_PASSES; pass++) {

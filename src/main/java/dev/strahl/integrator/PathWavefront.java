@@ -1,5 +1,6 @@
 package dev.strahl.integrator;
 
+import dev.strahl.accel.RayBatch;
 import dev.strahl.color.MutableRgb;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.Hit;
@@ -24,6 +25,12 @@ import dev.strahl.sampling.Sampler;
  * then {@link #red}, {@link #green}, {@link #blue} are each slot's radiance.
  */
 public final class PathWavefront {
+    /**
+     * The system property that turns the wavefront on for the {@code path} renders started while it
+     * is "on" (the render package reads it when a job starts; {@code strahl --wavefront on} sets it).
+     */
+    public static final String PROPERTY = "strahl.wavefront";
+
     private final PathTracer pt;
     private final PathTracer.PathWorker w;
     private final Sampler[] samplers;
@@ -35,15 +42,14 @@ public final class PathWavefront {
     private final double[] ray, beta, prevPdf, etaScale, radiance;  // ray: o, d, tMax (7 per slot); beta, radiance: 3 per slot
     private final boolean[] prevDelta;
     private final int[] depth;
-    // the closest hit of each live path
-    private final int[] hitPrim;
-    private final double[] hitT, hitB1, hitB2;
-    // the shadow queries of a stage: ray (7 per query) and contribution (3); slot of each
-    private final double[] shadowRay, shadowContribution;
-    private final boolean[] shadowTraced;
+    // the rays of the live paths in live order, with their closest hits: the closest-hit stage's batch query
+    private final RayBatch queue;
+    // the shadow rays of a stage (traced ones only), with what each adds and to which slot
+    private final RayBatch shadows;
+    private final double[] shadowContribution;
     private final int[] shadowSlot;
-    // live paths in slot order, and the same grouped by kind for shading
-    private final int[] live, shadeOrder, kindStart;
+    // live paths' slots in slot order; identity and grouped: positions in live in the order stage 2 shades them
+    private final int[] live, identity, shadeOrder, kindStart;
     private final Ray r = new Ray();
     private final Hit hit = new Hit();
     private final MutableRgb out = new MutableRgb();
@@ -71,15 +77,15 @@ public final class PathWavefront {
         etaScale = new double[n];
         prevDelta = new boolean[n];
         depth = new int[n];
-        hitPrim = new int[n];
-        hitT = new double[n];
-        hitB1 = new double[n];
-        hitB2 = new double[n];
-        shadowRay = new double[7 * n];
+        queue = new RayBatch(n);
+        shadows = new RayBatch(n);
         shadowContribution = new double[3 * n];
-        shadowTraced = new boolean[n];
         shadowSlot = new int[n];
         live = new int[n];
+        identity = new int[n];
+        for (int i = 0; i < n; i++) {
+            identity[i] = i;
+        }
         shadeOrder = new int[n];
         kindStart = new int[kinds + 2];
     }
@@ -136,52 +142,44 @@ public final class PathWavefront {
         }
     }
 
-    /** Stage 1: the closest hit of every live path (prim -1 for a miss). */
+    /** Stage 1: the closest hit of every live path, one batch query (prim -1 for a miss). */
     private void closestHits(int alive) {
-        Tracer tracer = w.tracer;
         for (int i = 0; i < alive; i++) {
-            int slot = live[i];
-            load(ray, 7 * slot, r);
-            if (tracer.closestHit(r, hit)) {
-                hitPrim[slot] = hit.prim;
-                hitT[slot] = hit.t;
-                hitB1[slot] = hit.b1;
-                hitB2[slot] = hit.b2;
-            } else {
-                hitPrim[slot] = -1;
-            }
+            int o = 7 * live[i];
+            queue.set(i, ray[o], ray[o + 1], ray[o + 2], ray[o + 3], ray[o + 4], ray[o + 5], ray[o + 6]);
         }
+        w.tracer.closestHits(queue, alive);
     }
 
     /**
-     * The live paths in the order stage 2 shades them: misses first, then by the kind of BSDF they
-     * hit, each group in slot order (a stable counting sort), so that each BSDF's code runs on many
-     * paths in a row. Returns the order: {@code live} itself where the scene has one kind.
+     * The order stage 2 shades the live paths in (positions in {@code live}): misses first, then by
+     * the kind of BSDF they hit, each group in slot order (a stable counting sort), so that each
+     * BSDF's code runs on many paths in a row; plain live order where the scene has one kind.
      */
     private int[] groupByKind(int alive) {
         if (kinds == 1) {
-            return live;
+            return identity;
         }
         java.util.Arrays.fill(kindStart, 0);
         Geometry geometry = pt.world().geometry();
+        int[] prim = queue.prim;
         for (int i = 0; i < alive; i++) {
-            int prim = hitPrim[live[i]];
-            kindStart[(prim < 0 ? 0 : kindOf[geometry.material(prim)] + 1) + 1]++;
+            kindStart[(prim[i] < 0 ? 0 : kindOf[geometry.material(prim[i])] + 1) + 1]++;
         }
         for (int k = 1; k < kindStart.length; k++) {
             kindStart[k] += kindStart[k - 1];
         }
         for (int i = 0; i < alive; i++) {
-            int slot = live[i];
-            int prim = hitPrim[slot];
-            shadeOrder[kindStart[prim < 0 ? 0 : kindOf[geometry.material(prim)] + 1]++] = slot;
+            shadeOrder[kindStart[prim[i] < 0 ? 0 : kindOf[geometry.material(prim[i])] + 1]++] = i;
         }
         return shadeOrder;
     }
 
     /**
      * Stage 2: every live path at its hit, through the vertex kernel (or the environment for a
-     * miss); a path that ends gets depth 0. Returns the number of shadow queries made.
+     * miss); a path that ends gets depth 0. A light sample whose shadow ray must be traced joins
+     * the stage's shadow batch; one that needs none (the teaching option without shadows) is added
+     * at once. Returns the number of shadow rays.
      */
     private int shade(int alive, int[] order) {
         Tracer tracer = w.tracer;
@@ -189,19 +187,20 @@ public final class PathWavefront {
         PathState p = w.path;
         ShadowQuery q = w.q;
         int queries = 0;
-        for (int i = 0; i < alive; i++) {
-            int slot = order[i];
+        for (int k = 0; k < alive; k++) {
+            int i = order[k];
+            int slot = live[i];
             int o = 7 * slot;
             load(ray, o, r);
             loadState(slot, p);
             loadRadiance(slot);
             double t = -1;
-            if (hitPrim[slot] >= 0) {
-                hit.prim = hitPrim[slot];
-                hit.t = hitT[slot];
-                hit.b1 = hitB1[slot];
-                hit.b2 = hitB2[slot];
-                r.tMax = hit.t;                    // as the query left it
+            if (queue.prim[i] >= 0) {
+                hit.prim = queue.prim[i];
+                hit.t = queue.t[i];
+                hit.b1 = queue.b1[i];
+                hit.b2 = queue.b2[i];
+                r.tMax = queue.tMax[i];            // as the query left it
                 t = tracer.settle(r, ray[o + 6], hit, s);
             }
             boolean goesOn;
@@ -212,15 +211,17 @@ public final class PathWavefront {
             } else {
                 goesOn = pt.scatter(tracer, s, t, p, w.u, samplers[slot], q, r, out);
             }
-            storeRadiance(slot);
-            if (q.pending) {
-                store(shadowRay, 7 * queries, q.ray);
+            if (q.pending && !q.traced) {
+                tracer.direct.resolve(q, out);     // nothing to trace: counts at once
+            } else if (q.pending) {
+                Ray sr = q.ray;
+                shadows.set(queries, sr.o.x, sr.o.y, sr.o.z, sr.d.x, sr.d.y, sr.d.z, sr.tMax);
                 shadowContribution[3 * queries] = q.contribution.r;
                 shadowContribution[3 * queries + 1] = q.contribution.g;
                 shadowContribution[3 * queries + 2] = q.contribution.b;
-                shadowTraced[queries] = q.traced;
                 shadowSlot[queries++] = slot;
             }
+            storeRadiance(slot);
             if (goesOn) {
                 store(ray, o, r);
                 storeState(slot, p);
@@ -231,18 +232,19 @@ public final class PathWavefront {
         return queries;
     }
 
-    /** Stage 3: the shadow rays of the stage's light samples; each unblocked one adds its contribution to its path. */
+    /** Stage 3: the stage's shadow rays, one batch query; each unblocked one adds its contribution to its path. */
     private void traceShadows(int queries) {
-        DirectLight direct = w.tracer.direct;
-        ShadowQuery q = w.q;
+        if (queries == 0) {
+            return;
+        }
+        w.tracer.direct.occluded(shadows, queries);
         for (int i = 0; i < queries; i++) {
-            int slot = shadowSlot[i];
-            load(shadowRay, 7 * i, q.ray);
-            q.contribution.set(shadowContribution[3 * i], shadowContribution[3 * i + 1], shadowContribution[3 * i + 2]);
-            q.traced = shadowTraced[i];
-            loadRadiance(slot);
-            direct.resolve(q, out);
-            storeRadiance(slot);
+            if (!shadows.occluded[i]) {
+                int c = 3 * i, slot = 3 * shadowSlot[i];
+                radiance[slot] += shadowContribution[c];
+                radiance[slot + 1] += shadowContribution[c + 1];
+                radiance[slot + 2] += shadowContribution[c + 2];
+            }
         }
     }
 

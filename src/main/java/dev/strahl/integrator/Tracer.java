@@ -1,6 +1,7 @@
 package dev.strahl.integrator;
 
 import dev.strahl.accel.Aggregate;
+import dev.strahl.accel.RayBatch;
 import dev.strahl.accel.TraversalStack;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
@@ -62,6 +63,12 @@ public final class Tracer {
         rays++;
         hit.reset();
         return bvh.intersect(ray, hit, stack, cullBackFaces);
+    }
+
+    /** The closest hits of rays [0, n) of {@code batch} at once (the aggregate's batch query), into its hit arrays. */
+    void closestHits(RayBatch batch, int n) {
+        rays += n;
+        bvh.intersect(batch, 0, n, stack, cullBackFaces);
     }
 
     /**

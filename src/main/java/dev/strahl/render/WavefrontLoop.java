@@ -17,8 +17,10 @@ import dev.strahl.sampling.Sampler;
  * and across resume.
  *
  * <p>Only the {@code path} integrator has a wavefront; every other integrator renders one sample
- * at a time. {@code -Dstrahl.wavefront=on} turns it on (off by default: docs/performance.md,
- * stage 2, says why), {@code -Dstrahl.wavefront.batch=N} sets the paths per batch.
+ * at a time: the other integrators, and so the scenes they render, fall back to
+ * {@link SampleLoop#sample}. {@code --wavefront on} ({@code -Dstrahl.wavefront=on}) turns it on,
+ * off by default (docs/performance.md, stage 2, says why); {@code -Dstrahl.wavefront.batch=N}
+ * sets the paths per batch.
  */
 final class WavefrontLoop {
     /** Paths per batch unless {@code -Dstrahl.wavefront.batch} says otherwise. */
@@ -28,7 +30,7 @@ final class WavefrontLoop {
 
     /** Paths per batch of the wavefront as the system properties say: 0 when it is off. */
     static int batch() {
-        if (!"on".equals(System.getProperty("strahl.wavefront", "off"))) {
+        if (!"on".equals(System.getProperty(PathWavefront.PROPERTY, "off"))) {
             return 0;
         }
         return Math.max(1, Integer.getInteger("strahl.wavefront.batch", DEFAULT_BATCH));
