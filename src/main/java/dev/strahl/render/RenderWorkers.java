@@ -307,7 +307,7 @@ final class RenderWorkers implements Parallel, PassRunner {
     private void renderRect(SampleLoop.WorkerState w, int x0, int y0, int x1, int y1, int firstSample, int endSample) {
         if (w.wavefront != null) {
             long[] invalid = {0};
-            tally.samples.addAndGet(WavefrontLoop.renderRect(w, cameraRays, seed, film, x0, y0, x1, y1, firstSample, endSample, invalid));
+            tally.samples.addAndGet(WavefrontLoop.renderRect(w, cameraRays, seed, film, x0, y0, x1, y1, 0, 0, firstSample, endSample, invalid));
             if (invalid[0] > 0) {
                 tally.invalid.addAndGet(invalid[0]);
             }

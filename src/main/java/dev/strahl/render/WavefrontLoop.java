@@ -50,11 +50,12 @@ final class WavefrontLoop {
 
     /**
      * Samples [firstSample, endSample) of every pixel of the rectangle [x0, x1) × [y0, y1) of
-     * {@code film} (each pixel from the count it holds, if more), with {@code w}'s wavefront.
+     * {@code film} (each pixel from the count it holds, if more), with {@code w}'s wavefront; film
+     * pixel (x, y) is image pixel (x + imageX, y + imageY) (a cluster unit's tile: its corner).
      * Returns the samples taken and adds those that were NaN or infinite to {@code invalid[0]}.
      */
     static long renderRect(SampleLoop.WorkerState w, CameraRays cameraRays, long seed, Film film, int x0, int y0, int x1, int y1,
-                           int firstSample, int endSample, long[] invalid) {
+                           int imageX, int imageY, int firstSample, int endSample, long[] invalid) {
         PathWavefront wf = w.wavefront;
         int capacity = wf.capacity();
         int n = 0;
@@ -63,7 +64,7 @@ final class WavefrontLoop {
             for (int x = x0; x < x1; x++) {
                 int pixel = film.pixelIndex(x, y);
                 for (int s = Math.max(firstSample, film.sampleCountAt(pixel)); s < endSample; s++) {
-                    SampleLoop.startSample(w, wf.sampler(n), cameraRays, seed, x, y, s);
+                    SampleLoop.startSample(w, wf.sampler(n), cameraRays, seed, x + imageX, y + imageY, s);
                     wf.start(n, w.ray);
                     w.slotPixel[n] = pixel;
                     if (w.features != null) {

@@ -7,12 +7,14 @@ import dev.strahl.film.Film;
 import dev.strahl.image.Rgb;
 import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
+import dev.strahl.integrator.PathWavefront;
 import dev.strahl.io.SceneLoader;
 import dev.strahl.scene.Camera;
 import dev.strahl.scene.Material;
 import dev.strahl.scene.Scene;
 import dev.strahl.scene.Texture;
 import dev.strahl.scene.TriangleMesh;
+import dev.strahl.units.WorkUnit;
 import dev.strahl.world.World;
 import java.nio.file.Path;
 import java.util.EnumSet;
@@ -25,7 +27,7 @@ import org.junit.jupiter.api.Test;
  * map seen through a thin lens, punctual lights, a glTF scene with textures, alpha cut-outs, the
  * teaching option without shadows and a bounded depth; for batches of one path, of 7 (a pixel's
  * samples split between batches) and of the default size, on 1 and 3 threads, and when a render
- * goes on from a film the scalar path began.
+ * goes on from a film the scalar path began; and in a cluster member's work unit.
  */
 class WavefrontTest {
     private static final int W = 40, H = 30, SPP = 5;
@@ -137,6 +139,40 @@ class WavefrontTest {
         }
         assertThat(WavefrontLoop.of(Integrators.create(World.of(scene), settings()), 64, true, 1)).isNotNull();
         assertThat(WavefrontLoop.of(Integrators.create(World.of(scene), settings()), 0, true, 1)).isNull();
+    }
+
+    /** A cluster member's unit (a tile away from the image's corner, with state it goes on from) gives the scalar bits through the wavefront too. */
+    @Test
+    void aClusterUnitGivesTheScalarBits() throws Exception {
+        Scene scene = SceneLoader.load(Path.of("scenes/cornell-sphere.json"));
+        RenderSettings s = settings();
+        int sums = new Film(W, H, true).stateSums();
+        String before = System.getProperty(PathWavefront.PROPERTY);
+        try {
+            double[][] results = new double[2][];
+            for (String mode : new String[] {"off", "on"}) {
+                System.setProperty(PathWavefront.PROPERTY, mode);
+                var renderer = new UnitRenderers().open(scene, UnitRenderers.encode(s, true), Checkpoint.of(scene, s).sceneDigestBytes(), 1);
+                WorkUnit unit = new WorkUnit(9, 5, 17, 11, 0, 2, new int[17 * 11], new double[17 * 11 * sums]);
+                renderer.render(unit);
+                WorkUnit next = new WorkUnit(9, 5, 17, 11, 2, SPP, unit.counts(), unit.sums());
+                renderer.render(next);
+                double[] all = new double[17 * 11 * (sums + 1)];
+                System.arraycopy(next.sums(), 0, all, 0, next.sums().length);
+                for (int i = 0; i < 17 * 11; i++) {
+                    all[next.sums().length + i] = next.counts()[i];
+                }
+                results[mode.equals("on") ? 1 : 0] = all;
+            }
+            assertThat(results[0][results[0].length - 1]).isEqualTo(SPP);
+            assertThat(results[1]).isEqualTo(results[0]);
+        } finally {
+            if (before == null) {
+                System.clearProperty(PathWavefront.PROPERTY);
+            } else {
+                System.setProperty(PathWavefront.PROPERTY, before);
+            }
+        }
     }
 
     /** A square of half-size h at height z with uvs over [0, 1]², facing up or down. */
