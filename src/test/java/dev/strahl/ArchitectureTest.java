@@ -41,7 +41,7 @@ class ArchitectureTest {
 
     /** The layers bottom to top; each may use only those before it. */
     private static final String[] LAYERS = {"image", "color", "math", "sampling", "texture", "geometry", "material", "accel", "light", "camera",
-        "files", "codec", "codec.exr", "io.text", "denoise", "world", "integrator", "photon", "film", "scene", "units", "render", "io.obj", "io.ply", "io.gltf", "io.mesh", "io.json", "io",
+        "files", "codec", "codec.exr", "io.text", "denoise", "medium", "world", "integrator", "photon", "film", "scene", "units", "render", "io.obj", "io.ply", "io.gltf", "io.mesh", "io.json", "io",
         "cluster", "bench", "viewer", "cli"};
 
     @ArchTest

@@ -16,7 +16,7 @@ import java.util.Arrays;
  *       mirrors and glass;</li>
  *   <li><b>normal</b>: its shading normal in world space, turned to the side the ray came from
  *       for two-sided surfaces (as shading sees it);</li>
- *   <li><b>depth</b>: the distance along the camera ray to the first hit, specular or not.</li>
+ *   <li><b>depth</b>: the distance along the camera ray to the first hit, specular or not, that is not invisible (a null surface).</li>
  * </ul>
  * A ray that leaves the scene records zero albedo and normal (and depth 0 if the camera ray
  * itself escapes).
@@ -71,15 +71,16 @@ public final class FeatureTracer {
         Arrays.fill(out, 0, CHANNELS, 0.0);
         tint.set(1, 1, 1);
         long stream = 0;
-        for (int bounce = 0; ; bounce++) {
+        for (int bounce = 0, first = 0; ; bounce++) {
             double t = tracer.trace(ray, s);
             if (t < 0) {
                 return;
             }
-            if (bounce == 0) {
-                out[6] = t;
-            }
             Bsdf bsdf = s.bsdf;
+            if (bounce == first) {                 // the first hit, past invisible surfaces (a medium's boundary)
+                out[6] += t;
+                first += bsdf instanceof dev.strahl.material.NullBsdf ? 1 : 0;
+            }
             bsdf.albedo(s.sp.uv, s.woLocal, albedo);
             albedo.mul(tint);
             if (!bsdf.isDelta() || bounce == MAX_SPECULAR) {

@@ -37,6 +37,8 @@ public final class Shading {
     public final MutableRgb emitted = new MutableRgb();
     /** Cosine between the emitter's normal and the direction back to the ray origin. */
     double cosEmitter;
+    /** Whether {@link #setUp} turned ng (and n) around to face wo: then the surface's own geometric normal is −sp.ng. */
+    boolean flipped;
 
     /** Each material's BSDF, with diffuse lobes sampled uniformly or cosine-weighted. */
     public static Bsdf[] bsdfs(World world, boolean uniformHemisphere) {
@@ -77,7 +79,8 @@ public final class Shading {
         } else {
             emitted.setZero();
         }
-        if (bsdf.isTwoSided() && cosGeometric < 0) {
+        flipped = bsdf.isTwoSided() && cosGeometric < 0;
+        if (flipped) {
             sp.ng.negate();
             sp.n.negate();
             cosGeometric = -cosGeometric;

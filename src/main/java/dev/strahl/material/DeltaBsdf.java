@@ -10,7 +10,7 @@ import org.joml.Vector3dc;
  * for all of them, and only {@link #sample} sees the lobes (its pdf is the probability of the lobe
  * it chose, pbrt-v4's convention for delta lobes).
  */
-public sealed interface DeltaBsdf extends Bsdf permits Mirror, Dielectric, SmoothConductor {
+public sealed interface DeltaBsdf extends Bsdf permits Mirror, Dielectric, SmoothConductor, NullBsdf {
 
     /** Zero: a delta lobe has no value at directions chosen by someone else. */
     @Override

@@ -349,6 +349,9 @@ final class Checkpoint {
         sb.append("environment ").append(world.environment()).append('\n');
         world.punctualLights().forEach(l -> sb.append("light ").append(l).append('\n'));   // none: the digest stays what it was
         md.update(sb.toString().getBytes(StandardCharsets.UTF_8));
+        if (world.media().any()) {                    // none: the digest stays what it was
+            world.media().digest(md);
+        }
         return md.digest();
     }
 }

@@ -5,11 +5,12 @@ import dev.strahl.geometry.Ray;
 import dev.strahl.integrator.Shading;
 import dev.strahl.integrator.Tracer;
 import dev.strahl.world.World;
+import org.joml.Vector3d;
 
 /**
  * What {@link Scene#focusDistance} finds (the viewer's Ctrl+click): the first surface the pinhole ray through the clicked point hits,
- * found as the renderer finds it (the tracer, so an alpha cut-out's cut-away parts are passed
- * through, as the camera sees them), and its distance along the camera's viewing direction (the thin
+ * found as the renderer finds it (the tracer, so an alpha cut-out's cut-away parts and a medium's
+ * invisible boundaries are passed through, as the camera sees them), and its distance along the camera's viewing direction (the thin
  * lens's focus distance that makes that point sharp).
  */
 final class FocusPicker {
@@ -30,9 +31,18 @@ final class FocusPicker {
         rays.generate(fx * width, fy * height, ray);
         World world = World.of(scene);
         Shading s = new Shading();
-        if (new Tracer(world, Shading.bsdfs(world, false), false).trace(ray, s) < 0) {
-            return Double.NaN;
+        Tracer tracer = new Tracer(world, Shading.bsdfs(world, false), false);
+        Vector3d origin = new Vector3d(ray.o);
+        for (int pass = 0; ; pass++) {
+            if (pass > 1000 || tracer.trace(ray, s) < 0) {
+                return Double.NaN;
+            }
+            if (!world.media().isInvisible(s.sp.material)) {
+                break;
+            }
+            s.spawn(ray, new Vector3d(ray.d));           // a medium's invisible boundary: look through it
         }
+        ray.o.set(origin);
         double fxDir = camera.lookAt().x() - camera.lookFrom().x();
         double fyDir = camera.lookAt().y() - camera.lookFrom().y();
         double fzDir = camera.lookAt().z() - camera.lookFrom().z();

@@ -263,6 +263,18 @@ public final class Material {
     }
 
     /**
+     * An invisible surface (Mitsuba 3's {@code null}): light passes it unchanged. It marks where
+     * a participating medium begins and ends ({@link Scene.Builder#mediumBoundary}); only the
+     * {@code path} integrator renders scenes that have such surfaces.
+     *
+     * @param name for messages
+     * @return the material
+     */
+    public static Material nullSurface(String name) {
+        return new Material(name, new dev.strahl.material.NullBsdf(), Rgb.BLACK);
+    }
+
+    /**
      * Smooth glass: exact dielectric Fresnel reflection and Snell refraction, no absorption.
      *
      * @param name for messages

@@ -69,7 +69,7 @@ public final class Scene {
     }
 
     /**
-     * The materials, each once, in the order they were first used.
+     * The materials in the order they were first used, each once (once per medium boundary, {@link Builder#mediumBoundary}).
      *
      * @return an unmodifiable list
      */
@@ -175,9 +175,9 @@ public final class Scene {
 
     /**
      * Collects shapes, materials, camera, lights and environment, then builds the BVH once. Not
-     * thread-safe. (The lights and the environment are set by the methods of a package-private base.)
+     * thread-safe. (The lights, the environment and the media are set by the methods of package-private bases.)
      */
-    public static final class Builder extends SceneLighting {
+    public static final class Builder extends SceneMediaSetters {
         private final GeometryBuilder geometry = new GeometryBuilder();
         private final List<Material> materials = new ArrayList<>();
         private final Map<Material, Integer> materialIndex = new IdentityHashMap<>();
@@ -188,10 +188,12 @@ public final class Scene {
 
         private int indexOf(Material m) {
             Objects.requireNonNull(m, "material");
-            return materialIndex.computeIfAbsent(m, k -> {
-                materials.add(k);
-                return materials.size() - 1;
-            });
+            return media.bounding() ? media.slot(m, () -> add(m)) : materialIndex.computeIfAbsent(m, this::add);
+        }
+
+        private int add(Material m) {
+            materials.add(m);
+            return materials.size() - 1;
         }
 
         /**
@@ -326,7 +328,7 @@ public final class Scene {
             }
             boolean studio = environment == null && punctual.isEmpty() && !anyEmits(g, emission);
             Environment env = environment != null ? environment : studio ? StudioSky.environment() : Environment.BLACK;
-            World world = World.build(g, bsdfs, emission, maps, env, punctual);
+            World world = World.build(g, bsdfs, emission, maps, env, punctual).withMedia(media.build(bsdfs));
             // A bare model (no light) is an object: shown from above at three quarters. A scene with
             // its own lights is often a room made to be seen from its open front (the Cornell Box): +Z.
             Camera cam = camera != null ? camera : studio ? Camera.framing(world.bounds(), 40) : Camera.frontFraming(world.bounds(), 40);

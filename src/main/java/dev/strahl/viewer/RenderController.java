@@ -86,7 +86,7 @@ final class RenderController {
                      RenderJobs.Scheduler scheduler, LongSupplier nanoTime) {
         this.scene = Objects.requireNonNull(scene, "scene");
         this.view = new ViewCamera(scene.camera());
-        this.settings = Objects.requireNonNull(settings, "settings");
+        this.settings = SceneIntegrators.supported(scene, Objects.requireNonNull(settings, "settings"));
         this.stopAt = ViewerOptions.checkStopAt(stopAt);
         this.starter = starter;
         this.sink = sink;
@@ -162,7 +162,7 @@ final class RenderController {
     }
 
     synchronized void setIntegrator(IntegratorKind integrator) {
-        changeSettings(settings.withIntegrator(integrator));
+        changeSettings(SceneIntegrators.supported(scene, settings.withIntegrator(integrator)));
     }
 
     /** The feature buffers full-resolution jobs keep (View → Denoise adds its guides); previews keep none. */
@@ -183,7 +183,7 @@ final class RenderController {
      */
     synchronized void setScene(Scene newScene, RenderSettings newSettings) {
         scene = Objects.requireNonNull(newScene, "scene");
-        settings = Objects.requireNonNull(newSettings, "settings");
+        settings = SceneIntegrators.supported(newScene, Objects.requireNonNull(newSettings, "settings"));
         view = new ViewCamera(newScene.camera());
         renderAgain();
     }

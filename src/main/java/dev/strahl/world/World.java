@@ -38,15 +38,16 @@ public final class World {
     private final Environment environment;
     private final List<PunctualLight> punctualLights;
     private final double bvhBuildSeconds;
+    private final Media media;
 
     private World(Geometry geometry, Aggregate bvh, Bsdf[] bsdfs, Emission[] emission, SurfaceMaps[] maps, Environment environment,
-                  List<PunctualLight> punctual, double bvhBuildSeconds) {
+                  List<PunctualLight> punctual, double bvhBuildSeconds, Media media) {
         this(geometry, bvh, new LightSampler(geometry, emission, environment, punctual), bsdfs, emission, maps, environment, punctual,
-                bvhBuildSeconds);
+                bvhBuildSeconds, media);
     }
 
     private World(Geometry geometry, Aggregate bvh, LightSampler lights, Bsdf[] bsdfs, Emission[] emission, SurfaceMaps[] maps,
-                  Environment environment, List<PunctualLight> punctual, double bvhBuildSeconds) {
+                  Environment environment, List<PunctualLight> punctual, double bvhBuildSeconds, Media media) {
         this.geometry = geometry;
         this.bvh = bvh;
         this.bsdfs = bsdfs;
@@ -61,6 +62,7 @@ public final class World {
         this.punctualLights = punctual;
         this.bvhBuildSeconds = bvhBuildSeconds;
         this.lights = lights;
+        this.media = media;
     }
 
     /**
@@ -68,7 +70,7 @@ public final class World {
      * primitive instead of the BVH ({@link Aggregate#bruteForce()}); everything else shared.
      */
     public World bruteForce() {
-        return new World(geometry, bvh.bruteForce(), lights, bsdfs, emission, maps, environment, punctualLights, bvhBuildSeconds);
+        return new World(geometry, bvh.bruteForce(), lights, bsdfs, emission, maps, environment, punctualLights, bvhBuildSeconds, media);
     }
 
     /**
@@ -91,7 +93,7 @@ public final class World {
         double seconds = (System.nanoTime() - start) * 1e-9;
         // The BVH hands back the same primitives reordered into its leaves: hits refer to those.
         return new World(bvh.geometry(), bvh, bsdfs.clone(), emission.clone(), maps.clone(), Objects.requireNonNull(environment),
-                List.copyOf(punctual), seconds);
+                List.copyOf(punctual), seconds, Media.NONE);
     }
 
     /** The world behind an API {@code Scene}. */
@@ -127,7 +129,17 @@ public final class World {
 
     /** The same world under another environment: geometry, BVH and material tables are shared, the light sampler is new. */
     public World withEnvironment(Environment newEnvironment) {
-        return new World(geometry, bvh, bsdfs, emission, maps, Objects.requireNonNull(newEnvironment), punctualLights, bvhBuildSeconds);
+        return new World(geometry, bvh, bsdfs, emission, maps, Objects.requireNonNull(newEnvironment), punctualLights, bvhBuildSeconds, media);
+    }
+
+    /** The same world with participating media (and invisible surfaces) where {@code newMedia} says; everything else is shared. */
+    public World withMedia(Media newMedia) {
+        return new World(geometry, bvh, lights, bsdfs, emission, maps, environment, punctualLights, bvhBuildSeconds, Objects.requireNonNull(newMedia));
+    }
+
+    /** The participating media and invisible surfaces ({@link Media#NONE} in a world of surfaces only). */
+    public Media media() {
+        return media;
     }
 
     /** The point, spot and directional lights (sampled by {@link #lights()} too). */

@@ -5,7 +5,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 import dev.strahl.cli.HostileGltf.Asset;
 import dev.strahl.cli.HostileGltf.ImageUse;
 import dev.strahl.cli.HostileImages.Hostile;
+import dev.strahl.medium.VolFiles;
 import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -24,7 +27,7 @@ import org.junit.jupiter.params.provider.MethodSource;
  * through the real command line, each used where such a file can be named: an image as
  * {@code --envmap}, as a scene file's environment, as an MTL {@code map_Kd}, as a scene file's
  * texture and as a glTF texture (a file beside it, a data: URI, a GLB buffer view); an asset as the
- * scene. Every one must give exit code 2 and one line on stderr that is printable ASCII, names the
+ * scene; a Mitsuba {@code .vol} grid as a scene file's medium (issue 29). Every one must give exit code 2 and one line on stderr that is printable ASCII, names the
  * file (the asset, for an embedded image) and says what its case says (the element, the size a bomb
  * claims), with no stack trace, no output file and within 60 s. A missing texture, wherever it is
  * named, is a warning instead, and the image is rendered.
@@ -116,6 +119,40 @@ class HostileFilesTest {
         }
         Path asset = in.resolve(a.main());
         assertRefused(a.name(), List.of(asset.toString()), asset, a.fragments());
+    }
+
+    /** Hostile {@code .vol} density grids: each {name, bytes, what the line says}. */
+    static Stream<Arguments> grids() {
+        float[] box = {0, 0, 0, 1, 1, 1};
+        byte[] escape = VolFiles.bytes(2, 2, 2, box, new float[8]);
+        escape[0] = 0x1b;
+        escape[1] = '[';
+        escape[2] = '3';
+        byte[] bomb = VolFiles.bytes(1, 1, 1, box, new float[0]);
+        ByteBuffer.wrap(bomb).order(ByteOrder.LITTLE_ENDIAN).putInt(8, 1290).putInt(12, 1290).putInt(16, 1290);
+        byte[] huge = VolFiles.bytes(1, 1, 1, box, new float[0]);
+        ByteBuffer.wrap(huge).order(ByteOrder.LITTLE_ENDIAN).putInt(8, 0x7fffffff).putInt(12, 0x7fffffff).putInt(16, 0x7fffffff);
+        byte[] rgb = VolFiles.bytes(2, 2, 2, box, new float[24]);
+        ByteBuffer.wrap(rgb).order(ByteOrder.LITTLE_ENDIAN).putInt(20, 3);
+        byte[] nan = VolFiles.bytes(2, 1, 1, box, new float[] {1, Float.NaN});
+        byte[] truncated = java.util.Arrays.copyOf(VolFiles.bytes(4, 4, 4, box, new float[64]), 100);
+        return Stream.of(
+                Arguments.of("an escape sequence for a magic", escape, List.of("not a Mitsuba volume file", "\\x1b[3")),
+                Arguments.of("a bomb: 1290^3 voxels in 48 bytes", bomb, List.of("truncated: a 1290x1290x1290 grid needs 8586756000 bytes after the header, the file holds 0")),
+                Arguments.of("2^93 voxels", huge, List.of("too large to load")),
+                Arguments.of("three channels", rgb, List.of("holds 3 channels per voxel")),
+                Arguments.of("a NaN density", nan, List.of("media.m.file")),
+                Arguments.of("truncated", truncated, List.of("truncated: a 4x4x4 grid needs 256 bytes after the header, the file holds 52")));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("grids")
+    void aHostileVolumeGridIsOneLineNamingIt(String label, byte[] bytes, List<String> fragments) throws IOException {
+        write(in.resolve("g.vol"), bytes);
+        write(in.resolve("s.json"), "{\"media\": {\"m\": {\"type\": \"grid\", \"file\": \"g.vol\"}},"
+                + " \"materials\": {\"m\": {\"type\": \"null\"}},"
+                + " \"shapes\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1, \"material\": \"m\", \"interior\": \"m\"}]}");
+        assertRefused(label, List.of(in.resolve("s.json").toString()), in.resolve("g.vol"), fragments);
     }
 
     /** Exit code 2, one printable line naming the file with every fragment, no trace, nothing written, within 60 s. */

@@ -38,7 +38,7 @@ class FuzzRegressionTest {
 
     static Stream<Path> regressionCases() throws IOException {
         List<Path> cases = new ArrayList<>();
-        for (String kind : List.of("obj", "mtl", "ply", "json", "gltf", "glb", "exr", "hdr", "pfm", "png")) {
+        for (String kind : List.of("obj", "mtl", "ply", "json", "gltf", "glb", "exr", "hdr", "pfm", "png", "vol")) {
             Path dir = CORPUS.resolve(kind);
             if (Files.isDirectory(dir)) {
                 try (Stream<Path> files = Files.list(dir)) {
@@ -61,9 +61,10 @@ class FuzzRegressionTest {
             case "hdr" -> ParserFuzzTest.hdrTarget();
             case "png" -> ParserFuzzTest.pngTarget();
             case "pfm" -> ParserFuzzTest.pfmTarget();
+            case "vol" -> ParserFuzzTest.volTarget();
             default -> ParserFuzzTest.jsonTarget();
         };
-        Class<? extends Exception> allowed = List.of("exr", "hdr", "pfm", "png").contains(kind) ? ImageFormatException.class : SceneException.class;
+        Class<? extends Exception> allowed = List.of("exr", "hdr", "pfm", "png", "vol").contains(kind) ? ImageFormatException.class : SceneException.class;
         Fuzzer fuzzer = new Fuzzer("regression-" + kind, target, allowed, work.resolve("regression." + kind));
         // the verdict: null = accepted, "" = rejected with the reader's own exception, else what broke
         assertThat(fuzzer.check(Files.readAllBytes(input))).as("%s: null = accepted, \"\" = %s", input, allowed.getSimpleName())

@@ -11,6 +11,8 @@ import dev.strahl.codec.exr.ExrReader;
 import dev.strahl.io.gltf.GltfFuzzInputs;
 import dev.strahl.io.gltf.GltfFuzzSeeds;
 import dev.strahl.io.obj.MtlReader;
+import dev.strahl.medium.VolFile;
+import dev.strahl.medium.VolFuzzInputs;
 import dev.strahl.scene.SceneException;
 import dev.strahl.testing.Fuzzer;
 import dev.strahl.texture.Bitmap;
@@ -29,9 +31,9 @@ import net.jqwik.api.lifecycle.AfterContainer;
 import net.jqwik.api.lifecycle.BeforeContainer;
 
 /**
- * Fuzzing of the OBJ, MTL, PLY, glTF (GLB and JSON) and scene-file readers and of the image readers (EXR, Radiance HDR,
- * PFM, PNG/JPEG textures): random and mutated files may be accepted or rejected with the reader's own
- * error (a {@link SceneException}; an {@link ImageFormatException} for images), never end in
+ * Fuzzing of the OBJ, MTL, PLY, glTF (GLB and JSON) and scene-file readers, of the image readers (EXR, Radiance HDR,
+ * PFM, PNG/JPEG textures) and of Mitsuba's {@code .vol} density grids: random and mutated files may be accepted or rejected with the reader's own
+ * error (a {@link SceneException}; an {@link ImageFormatException} for images and grids), never end in
  * another exception, a hang or running out of memory. Each parser gets a bounded budget ({@link Fuzzer#budget()}); every input that once
  * broke a parser is kept in {@code src/test/resources/fuzz/} and replayed by
  * {@link FuzzRegressionTest}. jqwik examples, since its generators run only inside jqwik.
@@ -107,6 +109,10 @@ class ParserFuzzTest {
         return PfmReader::read;
     }
 
+    static Fuzzer.Target volTarget() {
+        return VolFile::read;
+    }
+
     @Example
     void objReaderOnlyEverThrowsSceneException() throws IOException {
         fuzz("obj", objTarget(), "fuzz.obj", mix(FuzzInputs.randomObj(),
@@ -165,6 +171,11 @@ class ParserFuzzTest {
     void pfmReaderOnlyEverThrowsImageFormatException() throws IOException {
         fuzz("pfm", pfmTarget(), ImageFormatException.class, "fuzz.pfm", mix(PfmFuzzInputs.random(),
                 ImageFuzzInputs.mutated(PfmFuzzInputs.seeds(), PfmFuzzInputs.WORDS)));
+    }
+
+    @Example
+    void volReaderOnlyEverThrowsImageFormatException() throws IOException {
+        fuzz("vol", volTarget(), ImageFormatException.class, "fuzz.vol", mix(VolFuzzInputs.fromTheGrammar(), VolFuzzInputs.mutated()));
     }
 
     private static Arbitrary<byte[]> mix(Arbitrary<byte[]> random, Arbitrary<byte[]> mutated) {

@@ -128,7 +128,7 @@ class WavefrontTest {
         assertThat(state(render(scene, s, ahead, 1, SPP, 7, 2))).as("pixels ahead of the pass").isEqualTo(scalar);
     }
 
-    /** The other integrators have no wavefront: they render one sample at a time whatever the batch. */
+    /** The other integrators, and the path tracer of scenes with media, have no wavefront: they render one sample at a time whatever the batch. */
     @Test
     void otherIntegratorsRenderOneSampleAtATime() throws Exception {
         Scene scene = SceneLoader.load(Path.of("scenes/cornell-box.json"));
@@ -138,6 +138,8 @@ class WavefrontTest {
             assertSameBits(scene, settings().withIntegrator(kind), kind.toString());
         }
         assertThat(WavefrontLoop.of(Integrators.create(World.of(scene), settings()), 64, true, 1)).isNotNull();
+        Scene media = SceneLoader.load(Path.of("scenes/media-showcase.json"));
+        assertThat(WavefrontLoop.of(Integrators.create(World.of(media), settings()), 64, true, 1)).as("media: the scalar path").isNull();
         assertThat(WavefrontLoop.of(Integrators.create(World.of(scene), settings()), 0, true, 1)).isNull();
     }
 

@@ -321,6 +321,20 @@ class RenderControllerTest {
         assertThat(jobs.subList(0, 7)).allSatisfy(j -> assertThat(j.cancelled).isTrue());
     }
 
+    /** A scene with media: whitted and photon do not render it, so the viewer renders it with path and says so in the status. */
+    @Test
+    void aSceneWithMediaIsRenderedWithPathWhereWhittedOrPhotonIsChosen() throws Exception {
+        Scene fog = SceneLoader.load(Path.of("src/test/resources/golden/media/fog.json"));
+        controller.setScene(fog, RenderSettings.defaults().withSize(64, 48).withIntegrator(IntegratorKind.PHOTON));
+        assertThat(job().settings.transport().integrator()).isEqualTo(IntegratorKind.PATH);
+        controller.setIntegrator(IntegratorKind.WHITTED);
+        assertThat(controller.status().integrator()).isEqualTo(IntegratorKind.PATH);
+        controller.setIntegrator(IntegratorKind.DIRECT);
+        assertThat(job().settings.transport().integrator()).isEqualTo(IntegratorKind.DIRECT);
+        controller.setScene(cornell, RenderSettings.defaults().withSize(64, 48).withIntegrator(IntegratorKind.WHITTED));
+        assertThat(job().settings.transport().integrator()).as("a scene of surfaces keeps its integrator").isEqualTo(IntegratorKind.WHITTED);
+    }
+
     /** View → Denoise: feature buffers for full-resolution jobs (a restart only when they change), never for previews. */
     @Test
     void featureBuffersRestartOnlyWhenTheyChangeAndPreviewsKeepNone() {

@@ -25,7 +25,7 @@ final class JsonMaterials {
             "glossy", Set.of("type", "diffuse", "specular", "exponent", "emission"),
             "conductor", Set.of("type", "preset", "eta", "k", "alpha"),
             "principled", Set.of("type", "baseColor", "metallic", "roughness", "specular", "specularColor", "transmission", "ior", "emission",
-                    "emissionStrength"));
+                    "emissionStrength"), "null", Set.of("type"));
     /** The keys of a texture that stands in for a colour or a number. */
     static final Set<String> TEXTURE_KEYS = Set.of("texture", "uvScale", "linear");
 
@@ -48,6 +48,8 @@ final class JsonMaterials {
         }
         v.allowOnly(m, key + " of type " + type, keys);
         switch (type) {
+            case "null":
+                return new SceneDescription.Null();
             case "mirror":
                 return new SceneDescription.Mirror(m.containsKey("reflectance") ? v.unitColor(m.get("reflectance"), key + ".reflectance") : Rgb.WHITE);
             case "dielectric":

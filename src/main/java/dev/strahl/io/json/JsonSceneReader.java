@@ -40,11 +40,11 @@ public final class JsonSceneReader {
     static final Map<String, Set<String>> MATERIAL_KEYS = JsonMaterials.MATERIAL_KEYS;
     /** The shape types and the keys each accepts. */
     static final Map<String, Set<String>> SHAPE_KEYS = Map.of(
-            "sphere", Set.of("type", "center", "radius", "material", "transform"),
-            "mesh", Set.of("type", "file", "material", "transform"), "gltf", Set.of("type", "file", "transform"),
-            "triangles", Set.of("type", "positions", "indices", "normals", "uvs", "material", "transform"));
-    static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment", "lights");
-    static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov", "aperture", "focusDistance");
+            "sphere", Set.of("type", "center", "radius", "material", "transform", "interior", "exterior"),
+            "mesh", Set.of("type", "file", "material", "transform", "interior", "exterior"), "gltf", Set.of("type", "file", "transform", "interior", "exterior"),
+            "triangles", Set.of("type", "positions", "indices", "normals", "uvs", "material", "transform", "interior", "exterior"));
+    static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment", "lights", "media");
+    static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov", "aperture", "focusDistance", "medium");
     /** The environment types (the object form; an array is a constant radiance) and their keys. */
     static final Map<String, Set<String>> ENVIRONMENT_KEYS = Map.of("envmap", Set.of("type", "file", "scale", "rotate"));
     static final Set<String> FILM_KEYS = Set.of("width", "height", "aovs");
@@ -109,9 +109,11 @@ public final class JsonSceneReader {
         if (list.isEmpty()) {
             throw new SceneException(file, shapesNode.line, "'shapes' is empty: the scene has no geometry");
         }
+        SceneFileMedia.Reader media = new SceneFileMedia.Reader(top.get("media"), v, folder(file));
         List<ShapeSpec> shapes = new ArrayList<>();
         for (JsonNode shape : list) {
             shapes.add(shape(shape));
+            media.shape(shape);
         }
         for (var use : materialUses) {
             if (!materials.containsKey(use.getKey())) {
@@ -121,7 +123,8 @@ public final class JsonSceneReader {
         Camera camera = top.containsKey("camera") ? camera(top.get("camera")) : null;
         EnvironmentSpec environment = top.containsKey("environment") ? environment(top.get("environment")) : null;
         SceneSettings settings = settings(top.get("film"), top.get("integrator"));
-        return new SceneDescription(camera, settings, materials, shapes, environment, SceneLights.parse(top.get("lights"), v));
+        return new SceneDescription(camera, settings, materials, shapes, environment, SceneLights.parse(top.get("lights"), v),
+                media.result(top.get("camera")));
     }
 
     // ---- shapes --------------------------------------------------------------------------------

@@ -123,6 +123,15 @@ final class JsonValues {
         return new Rgb(v[0], v[1], v[2]);
     }
 
+    /** A finite number ≥ 0. */
+    double nonNegative(JsonNode node, String key) throws SceneException {
+        double x = number(node, key);
+        if (!(x >= 0)) {
+            throw error(node, "'" + key + "' must be >= 0, got " + format(x));
+        }
+        return x;
+    }
+
     /** A colour with every channel in [0, 1] (a reflectance). */
     Rgb unitColor(JsonNode node, String key) throws SceneException {
         Rgb c = color(node, key);

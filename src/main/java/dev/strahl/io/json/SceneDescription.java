@@ -31,20 +31,22 @@ import org.joml.Vector3dc;
  * @param shapes      the shapes, in file order
  * @param environment the environment, or null for the default
  * @param lights      the punctual lights ({@link SceneLights}), in file order
+ * @param media       the participating media, the camera's and each shape's ({@link SceneFileMedia})
  */
 record SceneDescription(Camera camera, SceneSettings settings, Map<String, MaterialSpec> materials, List<ShapeSpec> shapes,
-                        EnvironmentSpec environment, List<SceneLights.Light> lights) {
+                        EnvironmentSpec environment, List<SceneLights.Light> lights, SceneFileMedia.Media media) {
 
     SceneDescription {
         Objects.requireNonNull(settings, "settings");
         materials = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(materials));
         shapes = List.copyOf(shapes);
         lights = List.copyOf(lights);
+        media = Objects.requireNonNull(media, "media");
     }
 
     SceneDescription(Camera camera, SceneSettings settings, Map<String, MaterialSpec> materials, List<ShapeSpec> shapes,
                      EnvironmentSpec environment) {
-        this(camera, settings, materials, shapes, environment, List.of());
+        this(camera, settings, materials, shapes, environment, List.of(), SceneFileMedia.Media.NONE);
     }
 
     /**
@@ -91,7 +93,7 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
     }
 
     /** A material as the file gives it: its type and that type's keys. */
-    sealed interface MaterialSpec permits Diffuse, Mirror, Dielectric, Glossy, Conductor, Principled {
+    sealed interface MaterialSpec permits Diffuse, Mirror, Dielectric, Glossy, Conductor, Principled, Null {
         Material toMaterial(String name, TextureLoader textures) throws SceneException;
     }
 
@@ -102,6 +104,14 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
                 return Material.emissive(name, albedo.value(), emission);
             }
             return Material.diffuse(name, albedo.resolve(textures, "materials." + name + ".albedo")).withEmission(emission);
+        }
+    }
+
+    /** An invisible surface: a medium's boundary. */
+    record Null() implements MaterialSpec {
+        @Override
+        public Material toMaterial(String name, TextureLoader textures) {
+            return Material.nullSurface(name);
         }
     }
 
@@ -222,8 +232,11 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
         }
         Scene.Builder builder = Scene.builder();
         notes.forEach(builder::note);
+        SceneFileMedia.define(media, builder, file, folder);
         boolean gltfCamera = false;
-        for (ShapeSpec shape : shapes) {
+        for (int i = 0; i < shapes.size(); i++) {
+            ShapeSpec shape = shapes.get(i);
+            SceneFileMedia.boundary(media, i, builder);
             if (shape instanceof SphereShape s) {
                 builder.addSphere(s.center(), s.radius(), byName.get(s.material()), s.transform());
             } else if (shape instanceof MeshShape m && GltfReader.isGltfFile(Path.of(m.file()))) {

@@ -388,7 +388,7 @@ class JsonSceneReaderTest {
                   "shapes": [ %s ],
                   "lamps": []
                 }
-                """.formatted(MATERIALS, SPHERE), "unknown key 'lamps' in scene", "camera, environment, film, integrator, lights, materials, shapes"),
+                """.formatted(MATERIALS, SPHERE), "unknown key 'lamps' in scene", "camera, environment, film, integrator, lights, materials, media, shapes"),
             bad("unknown key in camera", 6, """
                 {
                   %s
@@ -424,7 +424,7 @@ class JsonSceneReaderTest {
                     { "type": "mesh", "file": "x.obj", "scale": 2 }
                   ]
                 }
-                """.formatted(MATERIALS), "unknown key 'scale' in shapes[] of type mesh", "file, material, transform, type"),
+                """.formatted(MATERIALS), "unknown key 'scale' in shapes[] of type mesh", "exterior, file, interior, material, transform, type"),
             // wrong types
             bad("fov is a string", 5, """
                 {
@@ -599,7 +599,7 @@ class JsonSceneReaderTest {
                   },
                   "shapes": [ %s ]
                 }
-                """.formatted(SPHERE), "unknown material type 'metal'", "materials.m", "known: conductor, dielectric, diffuse, glossy, mirror, principled"),
+                """.formatted(SPHERE), "unknown material type 'metal'", "materials.m", "known: conductor, dielectric, diffuse, glossy, mirror, null, principled"),
             bad("unknown shape type", 4, """
                 {
                   %s

@@ -39,7 +39,7 @@ final class SceneFileWriter {
     private void scene(SceneDescription d) throws IOException {
         g.writeStartObject();
         if (d.camera() != null) {
-            camera(d.camera());
+            camera(d.camera(), d.media().camera());
         }
         settings(d.settings());
         g.writeObjectFieldStart("materials");
@@ -49,8 +49,8 @@ final class SceneFileWriter {
         }
         g.writeEndObject();
         g.writeArrayFieldStart("shapes");
-        for (ShapeSpec s : d.shapes()) {
-            shape(s);
+        for (int i = 0; i < d.shapes().size(); i++) {
+            shape(d.shapes().get(i), d.media().boundary(i));
         }
         g.writeEndArray();
         if (d.environment() != null && d.environment().radiance() != null) {
@@ -71,6 +71,35 @@ final class SceneFileWriter {
             }
             g.writeEndArray();
         }
+        if (!d.media().media().isEmpty()) {
+            g.writeObjectFieldStart("media");
+            for (var e : d.media().media().entrySet()) {
+                medium(e.getKey(), e.getValue());
+            }
+            g.writeEndObject();
+        }
+        g.writeEndObject();
+    }
+
+    private void medium(String name, SceneFileMedia.Medium m) throws IOException {
+        g.writeObjectFieldStart(name);
+        g.writeStringField("type", m.type());
+        if (m.sigmaT() != null) {
+            g.writeFieldName("sigmaT");
+            rgb(m.sigmaT());
+        } else {
+            g.writeStringField("file", m.file());
+            if (m.min() != null) {
+                g.writeArrayFieldStart("bounds");
+                vector(m.min());
+                vector(m.max());
+                g.writeEndArray();
+            }
+        }
+        g.writeNumberField("scale", m.scale());
+        g.writeFieldName("albedo");
+        rgb(m.albedo());
+        g.writeNumberField("g", m.g());
         g.writeEndObject();
     }
 
@@ -94,7 +123,7 @@ final class SceneFileWriter {
         g.writeEndObject();
     }
 
-    private void camera(Camera c) throws IOException {
+    private void camera(Camera c, String medium) throws IOException {
         g.writeObjectFieldStart("camera");
         g.writeFieldName("lookFrom");
         vector(c.lookFrom());
@@ -105,6 +134,9 @@ final class SceneFileWriter {
         g.writeNumberField("fov", c.fovDegrees());
         g.writeNumberField("aperture", c.aperture());
         g.writeNumberField("focusDistance", c.focusDistance());
+        if (medium != null) {
+            g.writeStringField("medium", medium);
+        }
         g.writeEndObject();
     }
 
@@ -160,7 +192,9 @@ final class SceneFileWriter {
 
     private void material(MaterialSpec m) throws IOException {
         g.writeStartObject();
-        if (m instanceof SceneDescription.Diffuse d) {
+        if (m instanceof SceneDescription.Null) {
+            g.writeStringField("type", "null");
+        } else if (m instanceof SceneDescription.Diffuse d) {
             g.writeStringField("type", "diffuse");
             g.writeFieldName("albedo");
             colour(d.albedo());
@@ -253,7 +287,7 @@ final class SceneFileWriter {
         }
     }
 
-    private void shape(ShapeSpec shape) throws IOException {
+    private void shape(ShapeSpec shape, SceneFileMedia.Boundary boundary) throws IOException {
         g.writeStartObject();
         if (shape instanceof SceneDescription.SphereShape s) {
             g.writeStringField("type", "sphere");
@@ -286,6 +320,12 @@ final class SceneFileWriter {
         }
         if (!shape.transform().isIdentity()) {
             transform(shape.transform());
+        }
+        if (boundary != null && boundary.interior() != null) {
+            g.writeStringField("interior", boundary.interior());
+        }
+        if (boundary != null && boundary.exterior() != null) {
+            g.writeStringField("exterior", boundary.exterior());
         }
         g.writeEndObject();
     }

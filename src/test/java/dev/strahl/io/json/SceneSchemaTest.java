@@ -62,6 +62,15 @@ class SceneSchemaTest {
         assertThat(errors(SceneFileWriter.write(JsonSceneReader.parse(Path.of("scenes", "cornell-glossy.json"))))).isEmpty();
     }
 
+    @ParameterizedTest
+    @ValueSource(strings = {"fog", "tint", "subsurface", "smoke"})
+    void theMediaScenesAreValidAndSoIsWhatTheWriterWrites(String name) throws Exception {
+        Path file = Path.of("src/test/resources/golden/media", name + ".json");
+        assertThat(errors(Files.readString(file))).isEmpty();
+        assertThat(errors(SceneFileWriter.write(JsonSceneReader.parse(file)))).isEmpty();
+        assertThat(errors(MediaSceneFileTest.SCENE)).isEmpty();
+    }
+
     @Test
     void theExampleOfTheFormatDocumentIsValidAndReadable() throws Exception {
         String doc = Files.readString(Path.of("docs", "scene-format.md"));
@@ -87,6 +96,7 @@ class SceneSchemaTest {
         assertThat(byType(get(defs, "material"))).isEqualTo(sorted(JsonSceneReader.MATERIAL_KEYS));
         assertThat(byType(get(defs, "shape"))).isEqualTo(sorted(JsonSceneReader.SHAPE_KEYS));
         assertThat(byType(get(defs, "light"))).isEqualTo(sorted(SceneLights.KEYS));
+        assertThat(byType(get(defs, "medium"))).isEqualTo(sorted(SceneFileMedia.KEYS));
     }
 
     @ParameterizedTest
@@ -120,7 +130,13 @@ class SceneSchemaTest {
         "{ \"environment\": { \"type\": \"sky\", \"file\": \"sky.hdr\" }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
         "{ \"environment\": { \"type\": \"envmap\", \"file\": \"sky.hdr\", \"scale\": -1 }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
         "{ \"camera\": { \"lookFrom\": [0, 0, 1], \"lookAt\": [0, 0, 0], \"aperture\": -0.1 }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
-        "{ \"camera\": { \"lookFrom\": [0, 0, 1], \"lookAt\": [0, 0, 0], \"focusDistance\": 0 }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }"})
+        "{ \"camera\": { \"lookFrom\": [0, 0, 1], \"lookAt\": [0, 0, 0], \"focusDistance\": 0 }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"media\": { \"m\": { \"type\": \"homogeneous\", \"sigmaT\": -1 } }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"media\": { \"m\": { \"type\": \"homogeneous\", \"sigmaT\": 1, \"albedo\": 1.5 } }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"media\": { \"m\": { \"type\": \"homogeneous\", \"sigmaT\": 1, \"g\": 1 } }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"media\": { \"m\": { \"type\": \"grid\", \"file\": \"a.raw\" } }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"media\": { \"m\": { \"type\": \"cloud\" } }, \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\" } ] }",
+        "{ \"shapes\": [ { \"type\": \"mesh\", \"file\": \"a.obj\", \"interior\": 3 } ] }"})
     void whatTheSchemaRefusesTheReaderRefuses(String json) throws Exception {
         assertThat(errors(json)).as("schema errors").isNotEmpty();
         Files.writeString(dir.resolve("a.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
