@@ -54,15 +54,14 @@ public final class Tracer {
      * origin, else -1. The ray's origin and direction are as they were afterwards.
      */
     public double trace(Ray ray, Shading s) {
-        double tMax = ray.tMax;
-        return closestHit(ray, hit) ? settle(ray, tMax, hit, s) : -1;
-    }
-
-    /** The closest-hit query alone: {@code hit} is reset and filled in; true if the ray hits. */
-    boolean closestHit(Ray ray, Hit hit) {
         rays++;
         hit.reset();
-        return bvh.intersect(ray, hit, stack, cullBackFaces);
+        double tMax = ray.tMax;
+        // the query itself, not through closestHit: one call level less keeps the SIMD kernel's vectors inlined (none allocated)
+        if (!bvh.intersect(ray, hit, stack, cullBackFaces)) {
+            return -1;
+        }
+        return settle(ray, tMax, hit, s);
     }
 
     /** The closest hits of rays [0, n) of {@code batch} at once (the aggregate's batch query), into its hit arrays. */
@@ -72,7 +71,7 @@ public final class Tracer {
     }
 
     /**
-     * Sets up {@code s} at the hit {@link #closestHit} found for {@code ray}, whose tMax was
+     * Sets up {@code s} at the closest hit found for {@code ray} (by {@link #trace} or a batch query), whose tMax was
      * {@code tMax} before the query, and returns its distance; in a world with cut-outs, passes the
      * cut-away surfaces first (tracing on; -1 if nothing is left). The ray's origin and direction
      * are as they were afterwards.
