@@ -1,37 +1,54 @@
 #!/usr/bin/env python3
-"""Measures strahl's denoiser against high-spp references and against Intel Open Image Denoise
-(the oidnDenoise tool of `pip install pyoidn`), for docs/denoising.md.
+"""Measures strahl's denoisers against high-spp references rendered with strahl and against Intel
+Open Image Denoise itself (the oidnDenoise tool of `pip install pyoidn`), for docs/denoising.md.
 
-    python3 docs/anchors/denoise_compare.py WORKDIR [SCENE ...]
+    python3 docs/anchors/denoise_compare.py [--inputs] WORKDIR [SCENE ...]
 
-SCENE defaults to the five Cornell variants in scenes/. Renders with `java -jar target/strahl.jar`
-(set STRAHL to another command), 256x256, into WORKDIR (files already there are reused):
-  NAME-ref.pfm      the reference: 1024 spp, seed 7 (for cornell-box: Mitsuba's 8192 spp 512x512
-                    reference in $STRAHL_REFS, box-filtered 2x2, when present)
+SCENE defaults to the five Cornell variants in scenes/ and showcase-spheres. Renders with
+`java -jar target/strahl.jar` (set STRAHL to another command), SIZE x SIZE (env STRAHL_DENOISE_SIZE,
+default 512), into WORKDIR (files already there are reused, so a slow reference is rendered once):
+  NAME-ref-a.pfm, NAME-ref-b.pfm  two independent parts of the reference, seeds 101 and 102, of
+                    REF_SPP spp each (env STRAHL_REF_SPP, default 2048; NAME-ref-a.spp says how many
+                    a part has, when it was rendered with another count). The reference is their
+                    mean weighted by spp; their difference estimates its own error: for parts of
+                    n_a and n_b spp, the reference's variance is (a - b)^2 n_a n_b / (n_a + n_b)^2.
   NAME-256.pfm      the raw image at 256 spp, seed 1
   NAME-16.pfm       16 spp, seed 1, with NAME-16.albedo.pfm, .normal.pfm, .depth.pfm (--aov)
-  NAME-16-strahl.pfm  the same 16 spp render denoised by strahl (--denoise), its time from the log
-  NAME-16-oidn.pfm  oidnDenoise -d cpu --hdr NAME-16.pfm --alb ... --nrm ... (when on the PATH)
-and prints per scene: relMSE of each against the reference (mean over pixels and channels of
-(x - ref)^2 / (ref^2 + 0.01)), the worst 16x16 region's mean luminance error in percent (regions
-whose reference mean luminance is above 0.01), and the denoising times. Writes NAME-compare.png:
-noisy 16 spp | strahl | OIDN | reference (clamped, sRGB).
+  NAME-16-network.pfm  the same render denoised by `render --denoise` (Open Image Denoise's network
+                    in strahl; renders are deterministic, so it denoises exactly NAME-16.pfm);
+                    strahl's lines in NAME-16-network.log
+  NAME-16-atrous.pfm   the same with --denoiser atrous
+  NAME-16-oidn.pfm  oidnDenoise -d cpu --hdr NAME-16.pfm --alb ... --nrm ... (OIDN 2.5.1's own; the
+                    tool on the PATH, else the one pyoidn ships)
+and prints per scene a table row: relMSE of each against the converged image (mean over pixels and
+channels of (x - ref)^2 / (ref^2 + 0.01), less the reference's own share, "ref": its variance
+in the same measure; the render compared is independent of the reference, so the rest estimates
+its error against the converged image), the network's relMSE over OIDN's, the worst 16x16
+region's mean-luminance error in percent (regions whose reference mean luminance is above 0.01;
+"ref" is the largest the reference's own noise gives a region, estimated from the parts), the
+largest per-pixel difference between strahl's network and OIDN (relative, + 1e-3), and the
+denoising times strahl printed. Writes NAME-compare.png: CROPxCROP crops (env STRAHL_CROP, default 192) at 1:1 of noisy 16 spp |
+network | atrous | OIDN | raw 256 spp | reference. --inputs renders and denoises all but the
+reference and stops (the reference's parts can then be rendered elsewhere, at the same time).
 """
 import os
 import re
 import shlex
+import shutil
+import struct
 import subprocess
 import sys
-import time
 import zlib
-import struct
 
 import numpy as np
 
 STRAHL = shlex.split(os.environ.get("STRAHL", "java -jar target/strahl.jar"))
-REFS = os.environ.get("STRAHL_REFS", "")          # a folder with Mitsuba's 512x512 Cornell reference, if you have one
-SCENES = ["cornell-box", "cornell-sphere", "cornell-mirror", "cornell-glossy", "cornell-empty-rg"]
-SIZE = ["--width", "256", "--height", "256"]
+SIZE = int(os.environ.get("STRAHL_DENOISE_SIZE", "512"))
+REF_SPP = int(os.environ.get("STRAHL_REF_SPP", "2048"))
+CROP = int(os.environ.get("STRAHL_CROP", "192"))
+SCENES = ["cornell-box", "cornell-glossy", "cornell-sphere", "cornell-mirror", "cornell-empty-rg", "showcase-spheres"]
+# where the 1:1 crop of the picture starts (row, column), per scene; the centre otherwise
+CROPS = {"cornell-box": (200, 100), "cornell-glossy": (200, 130), "cornell-sphere": (190, 140)}
 
 
 def read_pfm(path):
@@ -41,14 +58,7 @@ def read_pfm(path):
         scale = float(f.readline())
         channels = 3 if kind == b"PF" else 1
         data = np.fromfile(f, dtype="<f4" if scale < 0 else ">f4").reshape(h, w, channels)
-    return data[::-1].copy()
-
-
-def write_pfm(path, a):
-    h, w, _ = a.shape
-    with open(path, "wb") as f:
-        f.write(b"PF\n%d %d\n-1.0\n" % (w, h))
-        a[::-1].astype("<f4").tofile(f)
+    return data[::-1].astype(np.float64)
 
 
 def write_png(path, a):
@@ -70,13 +80,32 @@ def rel_mse(a, ref):
     return float(np.mean((a - ref) ** 2 / (ref ** 2 + 0.01)))
 
 
+def lum(x):
+    return x @ np.array([0.2126, 0.7152, 0.0722])
+
+
 def worst_region(a, ref, n=16):
-    lum = lambda x: x @ np.array([0.2126, 0.7152, 0.0722])
-    h, w, _ = ref.shape
-    ra = lum(a)[: h // n * n, : w // n * n].reshape(h // n, n, w // n, n).mean(axis=(1, 3))
-    rr = lum(ref)[: h // n * n, : w // n * n].reshape(h // n, n, w // n, n).mean(axis=(1, 3))
+    ra, rr = regions(a, n), regions(ref, n)
     keep = rr > 0.01
     return float(100 * np.max(np.abs(ra - rr)[keep] / rr[keep]))
+
+
+def oidn_tool():
+    tool = shutil.which("oidnDenoise")
+    if tool:
+        return tool
+    import pyoidn
+    return os.path.join(os.path.dirname(pyoidn.__file__), "oidn", "bin", "oidnDenoise")
+
+
+def part_spp(path):
+    spp = path[:-len(".pfm")] + ".spp"
+    return int(open(spp).read()) if os.path.exists(spp) else REF_SPP
+
+
+def regions(x, n=16):
+    h, w = x.shape[:2]
+    return lum(x)[: h // n * n, : w // n * n].reshape(h // n, n, w // n, n).mean(axis=(1, 3))
 
 
 def run(cmd):
@@ -86,46 +115,66 @@ def run(cmd):
     return out.stderr
 
 
+def denoise_time(log):
+    m = re.search(r"denoised with .* in ([0-9.]+) s", log)
+    return float(m.group(1)) if m else float("nan")
+
+
 def main():
-    work = sys.argv[1]
-    scenes = sys.argv[2:] or SCENES
+    args = sys.argv[1:]
+    inputs_only = args[0] == "--inputs"
+    if inputs_only:
+        args = args[1:]
+    work = args[0]
+    scenes = args[1:] or SCENES
     os.makedirs(work, exist_ok=True)
-    have_oidn = subprocess.run(["sh", "-c", "command -v oidnDenoise"], capture_output=True).returncode == 0
-    print("| scene | noisy 16 spp | raw 256 spp | strahl 16 spp denoised | OIDN 16 spp | worst 16x16 region: noisy / strahl / OIDN | strahl time | OIDN time |")
-    print("|---|---|---|---|---|---|---|---|")
+    size = ["--width", str(SIZE), "--height", str(SIZE)]
+    print("%dx%d; relMSE less the reference's own (its variance: column ref), then the worst 16x16 region's error in %%" % (SIZE, SIZE))
+    print("| scene | reference spp | noisy 16 spp | raw 256 spp | **network** 16 spp | OIDN 16 spp | atrous 16 spp | network / OIDN | ref"
+          " | worst region: noisy / network / OIDN / atrous / 256 spp / ref | network vs OIDN, largest pixel difference"
+          " | network time | atrous time |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for name in scenes:
         scene = os.path.join("scenes", name + ".json")
         p = lambda suffix: os.path.join(work, name + suffix)
-        if not os.path.exists(p("-ref.pfm")):
-            mitsuba = os.path.join(REFS, "cornell-original_maxdepth-inf_8192spp.pfm")
-            if name == "cornell-box" and REFS and os.path.exists(mitsuba):
-                m = read_pfm(mitsuba)
-                write_pfm(p("-ref.pfm"), m.reshape(256, 2, 256, 2, 3).mean(axis=(1, 3)))
-            else:
-                run(STRAHL + ["render", scene] + SIZE + ["--spp", "1024", "--seed", "7", "-q", "-o", p("-ref.pfm")])
+        for part, seed in (("a", 101), ("b", 102)):
+            if not inputs_only and not os.path.exists(p("-ref-%s.pfm" % part)):
+                run(STRAHL + ["render", scene] + size + ["--spp", str(REF_SPP), "--seed", str(seed), "-q", "-o", p("-ref-%s.pfm" % part)])
         if not os.path.exists(p("-256.pfm")):
-            run(STRAHL + ["render", scene] + SIZE + ["--spp", "256", "--seed", "1", "-q", "-o", p("-256.pfm")])
+            run(STRAHL + ["render", scene] + size + ["--spp", "256", "--seed", "1", "-q", "-o", p("-256.pfm")])
         if not os.path.exists(p("-16.pfm")):
-            run(STRAHL + ["render", scene] + SIZE + ["--spp", "16", "--seed", "1", "-q", "--aov", "albedo,normal,depth", "-o", p("-16.pfm")])
-        log = run(STRAHL + ["render", scene] + SIZE + ["--spp", "16", "--seed", "1", "--denoise", "-o", p("-16-strahl.pfm")])
-        m = re.search(r"denoised with .* in ([0-9.]+) s", log)
-        strahl_time = float(m.group(1)) if m else float("nan")
-        ref, noisy, raw, den = (read_pfm(p(s)) for s in ("-ref.pfm", "-16.pfm", "-256.pfm", "-16-strahl.pfm"))
-        oidn, oidn_time = None, float("nan")
-        if have_oidn:
-            t0 = time.perf_counter()
-            run(["oidnDenoise", "-d", "cpu", "--hdr", p("-16.pfm"), "--alb", p("-16.albedo.pfm"), "--nrm", p("-16.normal.pfm"),
+            run(STRAHL + ["render", scene] + size + ["--spp", "16", "--seed", "1", "-q", "--aov", "albedo,normal,depth", "-o", p("-16.pfm")])
+        times = []
+        for kind in ("network", "atrous"):
+            if not os.path.exists(p("-16-%s.pfm" % kind)):
+                log = run(STRAHL + ["render", scene] + size + ["--spp", "16", "--seed", "1", "--denoise", "--denoiser", kind,
+                                                             "-o", p("-16-%s.pfm" % kind)])
+                with open(p("-16-%s.log" % kind), "w") as f:
+                    f.write(log)
+            times.append(denoise_time(open(p("-16-%s.log" % kind)).read()) if os.path.exists(p("-16-%s.log" % kind)) else float("nan"))
+        if not os.path.exists(p("-16-oidn.pfm")):
+            run([oidn_tool(), "-d", "cpu", "--hdr", p("-16.pfm"), "--alb", p("-16.albedo.pfm"), "--nrm", p("-16.normal.pfm"),
                  "-o", p("-16-oidn.pfm")])
-            oidn_time = time.perf_counter() - t0
-            oidn = read_pfm(p("-16-oidn.pfm"))
+        if inputs_only:
+            continue
+        a, b = read_pfm(p("-ref-a.pfm")), read_pfm(p("-ref-b.pfm"))
+        na, nb = part_spp(p("-ref-a.pfm")), part_spp(p("-ref-b.pfm"))
+        ref = (na * a + nb * b) / (na + nb)
+        share = na * nb / (na + nb) ** 2
+        ref_noise = float(np.mean((a - b) ** 2 * share / (ref ** 2 + 0.01)))
+        keep = regions(ref) > 0.01
+        ref_region = float(100 * np.max(np.abs(regions(a) - regions(b))[keep] * np.sqrt(share) / regions(ref)[keep]))
+        images = [read_pfm(p(s)) for s in ("-16.pfm", "-256.pfm", "-16-network.pfm", "-16-oidn.pfm", "-16-atrous.pfm")]
+        noisy, raw, net, oidn, atrous = images
+        err = [rel_mse(x, ref) - ref_noise for x in images]
+        diff = float(np.max(np.abs(net - oidn) / (np.abs(oidn) + 1e-3)))
         fmt = lambda x: "%.2e" % x
-        print("| %s | %s | %s | %s | %s | %.1f %% / %.1f %% / %s | %.2f s | %s |" % (
-            name, fmt(rel_mse(noisy, ref)), fmt(rel_mse(raw, ref)), fmt(rel_mse(den, ref)),
-            fmt(rel_mse(oidn, ref)) if oidn is not None else "-", worst_region(noisy, ref), worst_region(den, ref),
-            "%.1f %%" % worst_region(oidn, ref) if oidn is not None else "-", strahl_time,
-            "%.2f s (process)" % oidn_time if oidn is not None else "-"))
-        panels = [noisy, den, oidn if oidn is not None else np.zeros_like(ref), ref]
-        write_png(p("-compare.png"), np.concatenate(panels, axis=1))
+        print("| %s | %d | %s | %s | **%s** | %s | %s | %.2f | %s | %.1f / %.1f / %.1f / %.1f / %.1f / %.1f | %.1e | %.2f s | %.2f s |" % (
+            name, na + nb, *(fmt(e) for e in err), err[2] / err[3], fmt(ref_noise),
+            *(worst_region(x, ref) for x in (noisy, net, oidn, atrous, raw)), ref_region, diff, *times), flush=True)
+        y, x = CROPS.get(name, ((SIZE - CROP) // 2, (SIZE - CROP) // 2))
+        crop = lambda im: im[y:y + CROP, x:x + CROP]
+        write_png(p("-compare.png"), np.concatenate([crop(i) for i in (noisy, net, atrous, oidn, raw, ref)], axis=1))
 
 
 if __name__ == "__main__":

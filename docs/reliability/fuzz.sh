@@ -14,7 +14,7 @@ set -u
 cd "$(dirname "$0")/../.."
 INPUTS=${1:-1000000}
 [ $# -gt 0 ] && shift
-PARSERS=${*:-obj mtl ply json gltf glb exr hdr pfm png vol}
+PARSERS=${*:-obj mtl ply json gltf glb exr hdr pfm png vol tza}
 BUILD=${STRAHL_FUZZ_BUILD:-$PWD/target/fuzz-campaign}
 SEED=${STRAHL_FUZZ_SEED:-20260801}
 mkdir -p "$BUILD/fuzz-logs"

@@ -15,7 +15,7 @@ import com.tngtech.archunit.lang.ArchRule;
  * import fails the build instead of a review. Bottom to top (a layer may use the layers below it):
  * <pre>
  * image ← color ← math ← sampling ← texture ← { geometry, material } ← { accel, light, camera }
- *   ← files ← codec ← codec.exr ← io.text ← denoise ← world ← integrator ← photon ← film ← scene ← units ← render
+ *   ← files ← codec ← codec.exr ← io.text ← denoise ← denoise.net ← world ← integrator ← photon ← film ← scene ← units ← render
  *   ← { io.obj, io.ply, io.gltf } ← io.mesh ← io.json ← io ← cluster ← bench ← viewer ← cli
  * </pre>
  * On top of that: no cycle between any two packages; the scene model knows no file format;
@@ -41,7 +41,7 @@ class ArchitectureTest {
 
     /** The layers bottom to top; each may use only those before it. */
     private static final String[] LAYERS = {"image", "color", "math", "sampling", "texture", "geometry", "material", "accel", "light", "camera",
-        "files", "codec", "codec.exr", "io.text", "denoise", "medium", "world", "integrator", "photon", "film", "scene", "units", "render", "io.obj", "io.ply", "io.gltf", "io.mesh", "io.json", "io",
+        "files", "codec", "codec.exr", "io.text", "denoise", "denoise.net", "medium", "world", "integrator", "photon", "film", "scene", "units", "render", "io.obj", "io.ply", "io.gltf", "io.mesh", "io.json", "io",
         "cluster", "bench", "viewer", "cli"};
 
     @ArchTest

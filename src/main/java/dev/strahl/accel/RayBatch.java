@@ -14,6 +14,8 @@ public final class RayBatch {
     public final double[] ox, oy, oz, dx, dy, dz, tMax;
     public final double[] t, b1, b2;
     public final int[] prim;
+    /** The instance of a hit ({@link Hit#instance}: -1 for the scene's own primitives). */
+    public final int[] instance;
     public final boolean[] occluded;
 
     /** A batch of room for {@code capacity} rays. */
@@ -29,6 +31,7 @@ public final class RayBatch {
         b1 = new double[capacity];
         b2 = new double[capacity];
         prim = new int[capacity];
+        instance = new int[capacity];
         occluded = new boolean[capacity];
     }
 
@@ -58,6 +61,7 @@ public final class RayBatch {
     void store(int i, Ray ray, Hit hit) {
         tMax[i] = ray.tMax;
         prim[i] = hit.prim;
+        instance[i] = hit.instance;
         t[i] = hit.t;
         b1[i] = hit.b1;
         b2[i] = hit.b2;

@@ -15,7 +15,6 @@ import jdk.incubator.vector.FloatVector;
 import jdk.incubator.vector.IntVector;
 import jdk.incubator.vector.VectorMask;
 import jdk.incubator.vector.VectorOperators;
-import jdk.incubator.vector.VectorShuffle;
 import jdk.incubator.vector.VectorSpecies;
 
 /**
@@ -32,6 +31,15 @@ import jdk.incubator.vector.VectorSpecies;
  * that was not inlined is allocated on the heap. Kept apart, each is compiled whole, and the
  * loop allocates nothing.
  *
+ * <p>Within them, no vector or mask is used on only one side of a branch whose sides meet again:
+ * the lane work comes first, then the decisions, on plain values; a branch amid the lane work may
+ * only return. C2 (JDK 17) guards a lane operation with a check of its operand's class, which makes a
+ * new value of that operand on one side only; where the sides meet, C2 merges the two, and a
+ * merged vector is a heap object, allocated on every call. Whether that happens depended on the
+ * profile C2 compiled with: {@code if (cull && hits.and(...).anyTrue())} cost two allocations a
+ * leaf block once the warm-up ({@link SimdWarmUp}, whose rays cull) had compiled the kernel, and
+ * none where only the renderer's rays had (docs/performance.md, round 7).
+ *
  * <p>Leaf block: the triangle test of {@link RayTriangle} in double lanes, from the block's float
  * vertices. A lane with an edge function of exactly zero (a ray through an edge's line) sends the
  * block to {@link RayTriangle} itself, whose exact fallback decides; so does a back face to cull.
@@ -46,8 +54,6 @@ final class SimdKernel {
     private static final VectorSpecies<Float> F4 = FloatVector.SPECIES_128;
     private static final VectorSpecies<Double> D4 = DoubleVector.SPECIES_256;
     private static final IntVector SLOTS = IntVector.fromArray(I8, new int[] {0, 1, 2, 3, 4, 5, 6, 7}, 0);
-    /** Swaps neighbouring lanes (0 and 1, 2 and 3), and the halves: the two steps of a minimum over four lanes. */
-    private static final VectorShuffle<Double> PAIRS = VectorShuffle.fromValues(D4, 1, 0, 3, 2), HALVES = VectorShuffle.fromValues(D4, 2, 3, 0, 1);
 
     /** What {@link #visit} returns where the ray enters no child: the next node comes off the stack. */
     static final int POP = BvhLayout.EMPTY;
@@ -242,20 +248,19 @@ final class SimdKernel {
         if (any) {
             return hits.anyTrue() ? 0 : LANES;
         }
-        if (cull && hits.and(det.compare(VectorOperators.LT, 0)).anyTrue()) {
-            return -1;
-        }
-        // The minimum over the lanes by two compare-and-blend steps (t is never NaN where it hits).
-        DoubleVector m = t.blend(Double.POSITIVE_INFINITY, hits.not());
-        DoubleVector p = m.rearrange(PAIRS);
-        m = m.blend(p, p.compare(VectorOperators.LT, m));
-        p = m.rearrange(HALVES);
-        m = m.blend(p, p.compare(VectorOperators.LT, m));
-        s.bestT = m.lane(0);
+        // All lane work before the decisions below (see the class comment): the back faces hit,
+        // the nearest distance (t is never NaN where it hits) and its first lane, the barycentrics.
+        boolean backHit = hits.and(det.compare(VectorOperators.LT, 0)).anyTrue();
+        double best = t.blend(Double.POSITIVE_INFINITY, hits.not()).reduceLanes(VectorOperators.MIN);
+        int first = t.compare(VectorOperators.EQ, best).and(hits).firstTrue();   // LANES where none hits
         v.intoArray(s.laneV, 0);
         w.intoArray(s.laneW, 0);
         det.intoArray(s.laneDet, 0);
-        return t.compare(VectorOperators.EQ, m).and(hits).firstTrue();
+        if (cull && backHit) {
+            return -1;
+        }
+        s.bestT = best;
+        return first;
     }
 
     private static DoubleVector load(float[] a, int i) {

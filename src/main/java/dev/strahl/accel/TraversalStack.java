@@ -34,6 +34,14 @@ public final class TraversalStack {
     final Ray ray = new Ray();
     final Hit hit = new Hit();
 
+    /** A ray moved into an instance's coordinates and its hit ({@link TwoLevelBvh}). */
+    final Ray instanceRay = new Ray();
+    final Hit instanceHit = new Hit();
+    /** The top-level tree's nodes still to visit and their entry distances, and its ray set-up ({@link InstanceTree}). */
+    final int[] topNodes = new int[InstanceTree.MAX_DEPTH];
+    final double[] topEntries = new double[InstanceTree.MAX_DEPTH];
+    double topOx, topOy, topOz, topIx, topIy, topIz;
+
     /** What the scalar kernel visited, where it counts ({@link ScalarKernel#COUNT}). */
     long nodeVisits, blockTests;
 

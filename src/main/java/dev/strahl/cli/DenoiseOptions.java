@@ -8,7 +8,8 @@ final class DenoiseOptions {
     @Option(names = "--denoise", description = "Denoise the image before writing it (the feature buffers are then rendered too).")
     boolean denoise;
 
-    @Option(names = "--denoiser", defaultValue = "strahl", paramLabel = "strahl|oidn",
-            description = "With --denoise: strahl's own (pure Java, the default) or Intel Open Image Denoise's oidnDenoise found on the PATH.")
+    @Option(names = "--denoiser", defaultValue = "network", paramLabel = "network|atrous|oidn",
+            description = "With --denoise: network (the default: Intel Open Image Denoise's trained network, run in pure Java),"
+                    + " atrous (a blurrier wavelet filter with no weights to read; its old name strahl works too) or oidn (OIDN's oidnDenoise found on the PATH).")
     String denoiserName;
 }

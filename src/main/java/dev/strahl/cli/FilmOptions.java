@@ -16,9 +16,9 @@ final class FilmOptions {
     int height;
 
     @Option(names = "--aov", split = ",", paramLabel = "LIST",
-            description = "Feature buffers to keep beside the image, as a scene file's film.aovs: albedo, normal, depth (comma-separated);"
-                    + " the denoiser's guides. render writes them: in an .exr as channels of the same file, beside a .png or .pfm as"
-                    + " NAME.albedo.pfm, NAME.normal.pfm, NAME.depth.pfm.")
+            description = "Buffers to keep beside the image, as a scene file's film.aovs: albedo, normal, depth (comma-separated),"
+                    + " the denoiser's guides, and spp, the samples each pixel took. render writes them: in an .exr as channels of the"
+                    + " same file, beside a .png or .pfm as NAME.albedo.pfm, NAME.normal.pfm, NAME.depth.pfm, NAME.spp.pfm.")
     List<String> aovNames;
 
     /** The feature buffers asked for with --aov (checked), or none. */

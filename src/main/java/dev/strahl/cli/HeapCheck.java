@@ -1,6 +1,7 @@
 package dev.strahl.cli;
 
 import dev.strahl.codec.ImageLimits;
+import dev.strahl.denoise.net.NeuralDenoiser;
 import dev.strahl.film.Film;
 import java.util.Locale;
 import java.util.function.LongSupplier;
@@ -25,9 +26,11 @@ final class HeapCheck {
      */
     static final long FEATURE_BYTES_PER_PIXEL = 4 * 12 + 7 * 4;
     /**
-     * strahl's denoiser (denoise.AtrousFilter and render.Denoiser): its guides (8 floats and a flag),
+     * The à-trous filter (denoise.AtrousFilter and render.Denoiser): its guides (8 floats and a flag),
      * its working images (14 floats), the weights of its 5×5 kernel (25 floats), its result (3 floats)
-     * and the image made of it (3 floats), and the luminance variance (1 float).
+     * and the image made of it (3 floats), and the luminance variance (1 float). The network, the
+     * default, needs {@link NeuralDenoiser#bytesNeeded} (its largest tile: at most a quarter of the
+     * heap); a render that denoises is counted with the larger of the two.
      */
     static final long DENOISE_BYTES_PER_PIXEL = 8 * 4 + 1 + 14 * 4 + 25 * 4 + 3 * 4 + 12 + 4;
 
@@ -40,8 +43,13 @@ final class HeapCheck {
 
     /** Bytes a render of this size needs: its film and every per-pixel buffer, with the feature buffers and the denoiser's if it keeps them. */
     static long renderBytes(int width, int height, boolean features, boolean denoise) {
-        long perPixel = IMAGE_BYTES_PER_PIXEL + (features ? FEATURE_BYTES_PER_PIXEL : 0) + (denoise ? DENOISE_BYTES_PER_PIXEL : 0);
-        return Film.bytesNeeded(width, height, features) + perPixel * width * (long) height;
+        long perPixel = IMAGE_BYTES_PER_PIXEL + (features ? FEATURE_BYTES_PER_PIXEL : 0);
+        return Film.bytesNeeded(width, height, features) + perPixel * width * (long) height + (denoise ? denoiseBytes(width, height) : 0);
+    }
+
+    /** The larger of what the à-trous filter and the network need. */
+    static long denoiseBytes(int width, int height) {
+        return Math.max(DENOISE_BYTES_PER_PIXEL * width * (long) height, NeuralDenoiser.create().bytesNeeded(width, height));
     }
 
     /**

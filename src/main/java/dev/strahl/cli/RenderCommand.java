@@ -20,6 +20,7 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.EnumSet;
 import java.util.Locale;
+import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
 import picocli.CommandLine.ArgGroup;
@@ -174,7 +175,9 @@ final class RenderCommand implements Callable<Integer> {
         settings = loaded.settings().applyTo(settings, SceneFileOptions.given(spec.commandLine().getParseResult()));
         outcome.keep(settings.output().aovs());
         if (denoising.denoise) {
-            settings = settings.withAovs(EnumSet.allOf(Aov.class));      // the denoiser's guides, written or not
+            Set<Aov> guides = EnumSet.of(Aov.ALBEDO, Aov.NORMAL, Aov.DEPTH);    // the denoiser's guides, written or not
+            guides.addAll(settings.output().aovs());
+            settings = settings.withAovs(guides);
         }
         // the scene file's size and feature buffers
         HeapCheck.checkRender(settings.output().width(), settings.output().height(), keepsFeatures(settings), denoising.denoise);
@@ -191,7 +194,7 @@ final class RenderCommand implements Callable<Integer> {
 
     /** Whether the film keeps feature sums: feature buffers asked for, or the denoiser's guides. */
     private boolean keepsFeatures(RenderSettings settings) {
-        return denoising.denoise || !settings.output().aovs().isEmpty();
+        return denoising.denoise || settings.output().keepsFeatures();
     }
 
     private SceneFile load() throws SceneException {
@@ -245,9 +248,12 @@ final class RenderCommand implements Callable<Integer> {
                 saver.attach(job);
             }
             irq.onFirstSignal(job::cancel);
+            double limit = settings.execution().timeLimit().toNanos() * 1e-9;
             while (!job.await(200, TimeUnit.MILLISECONDS)) {
                 if (showProgress) {
-                    bar.update(job.progress(), job.elapsedSeconds(), job.samplesDone(),
+                    // towards the end that comes first: the samples the render will take, or the time limit
+                    double seconds = job.elapsedSeconds();
+                    bar.update(limit > 0 ? Math.max(job.progress(), Math.min(1, seconds / limit)) : job.progress(), seconds, job.samplesDone(),
                             members != null ? "  " + members.memberCount() + " members" : "");
                 }
             }
@@ -270,7 +276,7 @@ final class RenderCommand implements Callable<Integer> {
         }
         outcome.write(buffers);
         if (files.statsFile != null) {
-            outcome.writeStats(files.statsFile, stats, settings, loadSeconds, bvhSeconds, s.textureBytes());
+            outcome.writeStats(files.statsFile, stats, settings, loadSeconds, bvhSeconds, s);
         }
         irq.written();
         outcome.report(err, stats, settings, time, irq.interrupted());

@@ -28,6 +28,8 @@ final class RenderOutcome {
     private final Path output;
     private final boolean quiet;
     private final OidnDenoiser oidn;
+    /** The pure-Java denoiser asked for (null with --denoiser oidn). */
+    private final Denoiser denoiser;
     /** The feature buffers to write (those the denoiser needs are rendered also when not written). */
     private Set<Aov> written = Set.of();
     private double denoiseSeconds;
@@ -39,9 +41,12 @@ final class RenderOutcome {
         this.output = output;
         this.quiet = quiet;
         String name = denoising.denoiserName;
-        if (!name.equals("strahl") && !name.equals("oidn")) {
-            throw new IllegalArgumentException("--denoiser must be strahl or oidn, got '" + name + "'");
-        }
+        this.denoiser = switch (name) {
+            case "network" -> Denoiser.create();
+            case "atrous", "strahl" -> Denoiser.atrous();
+            case "oidn" -> null;
+            default -> throw new IllegalArgumentException("--denoiser must be network, atrous or oidn, got '" + name + "'");
+        };
         this.oidn = denoising.denoise && name.equals("oidn") ? OidnDenoiser.onPath() : null;
     }
 
@@ -56,15 +61,18 @@ final class RenderOutcome {
             long t0 = System.nanoTime();
             Image clean;
             try {
-                clean = oidn != null ? oidn.denoise(buffers) : Denoiser.create().denoise(buffers);
+                clean = oidn != null ? oidn.denoise(buffers) : denoiser.denoise(buffers);
             } catch (IOException e) {
                 throw new RenderFailure("oidnDenoise failed: " + e.getMessage(), e);
+            } catch (UncheckedIOException e) {                 // the network's weights missing or damaged in the jar
+                throw new RenderFailure(e.getMessage(), e);
             }
             denoiseSeconds = (System.nanoTime() - t0) * 1e-9;
             buffers = buffers.withColor(clean);
         }
         buffers = new RenderBuffers(buffers.color(), buffers.variance(), written.contains(Aov.ALBEDO) ? buffers.albedo() : null,
-                written.contains(Aov.NORMAL) ? buffers.normal() : null, written.contains(Aov.DEPTH) ? buffers.depth() : null);
+                written.contains(Aov.NORMAL) ? buffers.normal() : null, written.contains(Aov.DEPTH) ? buffers.depth() : null,
+                written.contains(Aov.SPP) ? buffers.samples() : null);
         try {
             writer.write(buffers, output);
         } catch (IOException | UncheckedIOException e) {
@@ -72,9 +80,9 @@ final class RenderOutcome {
         }
     }
 
-    void writeStats(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhSeconds, long textureBytes) {
+    void writeStats(Path file, RenderStats stats, RenderSettings settings, double loadSeconds, double bvhSeconds, dev.strahl.scene.Scene scene) {
         try {
-            StatsFile.write(file, stats, settings, loadSeconds, bvhSeconds, textureBytes);
+            StatsFile.write(file, stats, settings, loadSeconds, bvhSeconds, scene.textureBytes(), dev.strahl.world.World.of(scene));
         } catch (IOException e) {
             throw new RenderFailure("cannot write " + file + ": " + e.getMessage(), e);
         }
@@ -85,19 +93,28 @@ final class RenderOutcome {
         Path checkpointFile = time.file();
         String resume = checkpointFile != null ? "; continue with --resume " + checkpointFile : "";
         int spp = settings.sampling().samplesPerPixel();
+        boolean adaptive = settings.sampling().noiseThreshold() > 0;
+        boolean allConverged = adaptive && stats.convergedFraction() >= 1;
         if (interrupted) {
             err.println(String.format(Locale.ROOT, "strahl: interrupted at %d of %d spp after %.2f s: wrote %s%s",
                     stats.samplesPerPixel(), spp, stats.seconds(), output, resume));
         } else if (!quiet) {
-            if (stats.samplesPerPixel() < spp) {
+            if (stats.samplesPerPixel() < spp && !allConverged) {
                 err.println("strahl: note: the time limit of " + limitText(time.timeLimit)
                         + " ended the render at " + stats.samplesPerPixel() + " of " + spp + " spp" + resume);
             }
-            err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %d spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
-                    settings.transport().integrator().id(), settings.output().width(), settings.output().height(), stats.samplesPerPixel(),
+            if (adaptive) {
+                err.println(String.format(Locale.ROOT, "strahl: noise threshold %s: %s of the pixels converged%s; %d to %d spp, %.1f on average",
+                        new BigDecimal(Double.toString(settings.sampling().noiseThreshold())).stripTrailingZeros().toPlainString(), percent(stats.convergedFraction()),
+                        allConverged ? ", which ended the render" : "", stats.minSamplesPerPixel(), stats.maxSamplesPerPixel(),
+                        stats.meanSamplesPerPixel()));
+            }
+            err.println(String.format(Locale.ROOT, "strahl: %s, %dx%d, %s spp in %.2f s (%s samples/s, %s rays/s, %d threads) -> %s",
+                    settings.transport().integrator().id(), settings.output().width(), settings.output().height(),
+                    adaptive ? "up to " + stats.maxSamplesPerPixel() : Integer.toString(stats.samplesPerPixel()),
                     stats.seconds(), NumberText.si(stats.samplesPerSecond()), NumberText.si(stats.raysPerSecond()), stats.threads(), output));
             if (denoising.denoise) {
-                err.println(String.format(Locale.ROOT, "strahl: denoised with %s in %.2f s", oidn != null ? "oidnDenoise" : "strahl's denoiser",
+                err.println(String.format(Locale.ROOT, "strahl: denoised with %s in %.2f s", oidn != null ? "oidnDenoise" : denoiser,
                         denoiseSeconds));
             }
         }
@@ -105,6 +122,12 @@ final class RenderOutcome {
             err.println("strahl: warning: " + stats.invalidSamples() + " samples were NaN or infinite and counted as black");
         }
         err.flush();
+    }
+
+    /** "97 %", "99.9 %", "100 %": a share, never rounded up to all. */
+    static String percent(double fraction) {
+        double p = Math.floor(fraction * 1000) / 10;
+        return (p == Math.floor(p) ? Integer.toString((int) p) : Double.toString(p)) + " %";
     }
 
     /** "0.3 s", "90 s", "5:00", "1:30:00". */

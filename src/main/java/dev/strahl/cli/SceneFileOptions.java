@@ -26,7 +26,8 @@ final class SceneFileOptions {
             Map.entry("--hemisphere", Setting.HEMISPHERE),
             Map.entry("--photons", Setting.PHOTONS),
             Map.entry("--photon-radius", Setting.PHOTON_RADIUS),
-            Map.entry("--aov", Setting.AOVS));
+            Map.entry("--aov", Setting.AOVS),
+            Map.entry("--noise-threshold", Setting.NOISE_THRESHOLD));
 
     private SceneFileOptions() {
     }

@@ -6,7 +6,7 @@ import picocli.CommandLine.Option;
 /**
  * {@code render}'s teaching options (docs/experiments.md): what a first ray tracer did, to measure
  * what strahl does instead. {@code --accel} and {@code --schedule} change no bit of the image,
- * {@code --shadows off} does.
+ * {@code --shadows off} does, and {@code --light-selection power} changes its noise.
  */
 final class TeachingOptions extends ShadowsOption {
 
@@ -20,6 +20,14 @@ final class TeachingOptions extends ShadowsOption {
                     + "32x32 tiles taken by whichever thread is free; same image, threads wait more (default: ${DEFAULT-VALUE}).")
     Schedule schedule;
 
+    @Option(names = "--light-selection", defaultValue = "tree", paramLabel = "tree|power", order = 4,
+            description = "Teaching option: power picks the light of each shadow ray by its power alone instead of by what it gives "
+                    + "the point (a light tree); same image, noisier where there are many lights (default: ${DEFAULT-VALUE}).")
+    LightSelection lightSelection;
+
+    /** The values of --light-selection. */
+    enum LightSelection { TREE, POWER }
+
     /** The values of --accel. */
     enum Accel { BVH, NONE }
 
@@ -28,6 +36,7 @@ final class TeachingOptions extends ShadowsOption {
 
     @Override
     RenderSettings applyTo(RenderSettings base) {
-        return super.applyTo(base).withBruteForce(accel == Accel.NONE).withStripes(schedule == Schedule.STRIPES);
+        return super.applyTo(base).withBruteForce(accel == Accel.NONE).withStripes(schedule == Schedule.STRIPES)
+                .withLightTree(lightSelection != LightSelection.POWER);
     }
 }

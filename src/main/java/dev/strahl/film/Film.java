@@ -319,9 +319,8 @@ public final class Film {
     }
 
     /**
-     * The variance of each pixel's mean luminance: the samples' unbiased variance divided by their
-     * count, (Σy² − (Σy)²/n) / ((n − 1) n), in r, g and b alike; 0 for pixels with fewer than two
-     * samples. In row-major order, like {@link #toImage()}.
+     * The variance of each pixel's mean luminance ({@link #varianceOfMean}) in r, g and b alike, in
+     * row-major order like {@link #toImage()}.
      *
      * @return a new image
      */
@@ -329,17 +328,38 @@ public final class Film {
         float[] v = new float[3 * width * height];
         for (int y = 0; y < height; y++) {
             for (int x = 0; x < width; x++) {
-                int p = pixelIndex(x, y);
-                int n = count[p];
-                if (n > 1) {
-                    double s = luminance(sum[3 * p], sum[3 * p + 1], sum[3 * p + 2]);
-                    double var = Math.max(0, (sumSquares[p] - s * s / n) / ((n - 1.0) * n));
-                    int o = 3 * (y * width + x);
-                    v[o] = v[o + 1] = v[o + 2] = (float) var;
-                }
+                int o = 3 * (y * width + x);
+                v[o] = v[o + 1] = v[o + 2] = (float) varianceOfMean(pixelIndex(x, y));
             }
         }
         return new Image(width, height, v);
+    }
+
+    /**
+     * The variance of a pixel's mean luminance: its samples' unbiased variance divided by their
+     * count, (Σy² − (Σy)²/n) / ((n − 1) n); 0 with fewer than two samples.
+     *
+     * @param pixelIndex the pixel, as given by {@link #pixelIndex}
+     * @return the variance, not negative
+     */
+    public double varianceOfMean(int pixelIndex) {
+        int n = count[pixelIndex];
+        if (n < 2) {
+            return 0;
+        }
+        double s = luminance(sum[3 * pixelIndex], sum[3 * pixelIndex + 1], sum[3 * pixelIndex + 2]);
+        return Math.max(0, (sumSquares[pixelIndex] - s * s / n) / ((n - 1.0) * n));
+    }
+
+    /**
+     * A pixel's mean luminance.
+     *
+     * @param pixelIndex the pixel, as given by {@link #pixelIndex}
+     * @return the mean of its samples' luminance; 0 without samples
+     */
+    public double meanLuminance(int pixelIndex) {
+        int n = count[pixelIndex];
+        return n > 0 ? luminance(sum[3 * pixelIndex], sum[3 * pixelIndex + 1], sum[3 * pixelIndex + 2]) / n : 0;
     }
 
     /**

@@ -202,6 +202,18 @@ public final class Geometry {
      * towards +z), so the image's top row is the north pole.
      */
     public void surface(Ray ray, Hit hit, SurfacePoint sp) {
+        if (hit.prim >= triangleCount) {
+            ray.at(hit.t, sp.p);
+        }
+        surfaceAt(hit, sp);
+    }
+
+    /**
+     * {@link #surface} where the ray is no longer at hand (a hit in an instance, whose ray was in
+     * the instance's coordinates): a triangle needs only the barycentrics; for a sphere,
+     * {@code sp.p} must hold the point o + t·d of the hit in this geometry's coordinates.
+     */
+    public void surfaceAt(Hit hit, SurfacePoint sp) {
         int prim = hit.prim;
         sp.prim = prim;
         sp.material = material(prim);
@@ -227,7 +239,6 @@ public final class Geometry {
         } else {
             int k = 4 * (prim - triangleCount);
             double cx = sph[k], cy = sph[k + 1], cz = sph[k + 2], r = sph[k + 3];
-            ray.at(hit.t, sp.p);
             sp.ng.set(sp.p.x - cx, sp.p.y - cy, sp.p.z - cz).normalize();
             // Re-project onto the surface to remove the round-off of o + t·d.
             sp.p.set(cx + r * sp.ng.x, cy + r * sp.ng.y, cz + r * sp.ng.z);

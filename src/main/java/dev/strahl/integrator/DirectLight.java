@@ -108,7 +108,7 @@ public final class DirectLight {
      */
     public boolean prepare(Shading s, double u1, double u2, double uLight, Use use, int n, double scale, MutableRgb beta, ShadowQuery q) {
         boolean lightAlone = use != Use.MIS;
-        if (!lights.sample(s.sp.p, uLight, u1, u2, lightAlone, lightPoint, ls)) {
+        if (!lights.sample(s.sp.p, s.sp.n, uLight, u1, u2, lightAlone, lightPoint, ls)) {
             return false;
         }
         s.frame.toLocal(ls.wi, wiLocal);
@@ -210,7 +210,7 @@ public final class DirectLight {
             if (!bvh.intersect(ray, hit, stack, false)) {
                 return false;
             }
-            world.geometry().surface(ray, hit, blocker);
+            world.surface(ray, hit, blocker);
             SurfaceMaps maps = world.maps(blocker.material);
             if (maps == null || !maps.cutAway(blocker.uv)) {
                 return true;

@@ -7,6 +7,7 @@ import dev.strahl.material.Bsdf;
 import dev.strahl.math.MathUtil;
 import dev.strahl.sampling.Sampler;
 import dev.strahl.world.World;
+import org.joml.Vector3d;
 
 /**
  * Direct lighting: emission seen by the camera plus light that reaches the first surface straight
@@ -44,6 +45,7 @@ public final class DirectLighting implements Integrator {
         return new TracingWorker(world, bsdfs, cullBackFaces) {
             private final Shading s = new Shading();
             private final MutableRgb beta = new MutableRgb();
+            private final Vector3d firstP = new Vector3d(), firstN = new Vector3d();   // the first hit, where the light samples were chosen
 
             @Override
             public void radiance(Ray ray, Sampler sampler, MutableRgb out) {
@@ -68,6 +70,8 @@ public final class DirectLighting implements Integrator {
                 }
                 double bsdfPdf = bs.pdf;
                 beta.set(bs.weight);
+                firstP.set(s.sp.p);
+                firstN.set(s.sp.n);
                 s.spawn(ray, s.wi);
                 double t = tracer.trace(ray, s);
                 if (t < 0) {
@@ -78,7 +82,7 @@ public final class DirectLighting implements Integrator {
                 }
                 if (!s.emitted.isBlack()) {
                     double w = bs.delta || !lightSampling ? 1
-                            : MathUtil.powerHeuristic(bsdfPdf, lightSamples * lights.pdf(s.sp.material, t, s.cosEmitter));
+                            : MathUtil.powerHeuristic(bsdfPdf, lightSamples * lights.pdf(firstP, firstN, s.sp.prim, t, s.cosEmitter));
                     out.addProduct(beta, s.emitted, w);
                 }
             }

@@ -1,6 +1,7 @@
 package dev.strahl.integrator;
 
 import dev.strahl.color.MutableRgb;
+import org.joml.Vector3d;
 
 /** What a path carries from one vertex to the next: its throughput and what its last BSDF sample was. */
 final class PathState {
@@ -10,6 +11,8 @@ final class PathState {
     double prevPdf;
     /** Whether the last bounce was specular, or there was none yet: emission it reaches counts fully. */
     boolean prevDelta;
+    /** Where the last BSDF sample left from, and the shading normal there: the light sampler's choice at that point (for the MIS weight). */
+    final Vector3d prevP = new Vector3d(), prevN = new Vector3d();
     /** The product of η'² over the refractions so far (for the roulette). */
     double etaScale;
     /** The vertex the path reaches next, from 1 (the camera ray's hit). */

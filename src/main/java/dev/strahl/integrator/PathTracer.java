@@ -107,7 +107,7 @@ public final class PathTracer implements Integrator {
         if (p.prevDelta || strategy == Strategy.BSDF) {
             return 1;
         }
-        return strategy != Strategy.MIS ? 0 : MathUtil.powerHeuristic(p.prevPdf, world.lights().pdf(s.sp.material, t, s.cosEmitter));
+        return strategy != Strategy.MIS ? 0 : MathUtil.powerHeuristic(p.prevPdf, world.lights().pdf(p.prevP, p.prevN, s.sp.prim, t, s.cosEmitter));
     }
 
     /**
@@ -153,6 +153,8 @@ public final class PathTracer implements Integrator {
         p.etaScale *= bs.eta * bs.eta;
         p.prevPdf = bs.pdf;
         p.prevDelta = bs.delta;
+        p.prevP.set(s.sp.p);                       // where the BSDF sample leaves from: the light tree's choice there
+        p.prevN.set(s.sp.n);
         s.spawn(ray, s.wi);
         if (depth >= RR_DEPTH) {
             double survive = survival(beta, p.etaScale);

@@ -201,6 +201,7 @@ public final class PathWavefront {
                 hit.t = queue.t[i];
                 hit.b1 = queue.b1[i];
                 hit.b2 = queue.b2[i];
+                hit.instance = queue.instance[i];
                 double tMax = r.tMax;
                 r.tMax = queue.tMax[i];            // as the query left it
                 t = tracer.settle(r, tMax, hit, s);

@@ -56,7 +56,7 @@ public final class Shading {
      * light through the surface.
      */
     void at(Ray ray, Hit hit, World world, Bsdf[] bsdfs) {
-        world.geometry().surface(ray, hit, sp);
+        world.surface(ray, hit, sp);
         setUp(ray, world, bsdfs);
     }
 

@@ -81,7 +81,7 @@ public final class Tracer {
             s.at(ray, hit, world, bsdfs);
             return hit.t;
         }
-        world.geometry().surface(ray, hit, s.sp);
+        world.surface(ray, hit, s.sp);
         if (!cutAway(s)) {
             s.setUp(ray, world, bsdfs);
             return hit.t;
@@ -106,7 +106,7 @@ public final class Tracer {
                 ray.o.set(origin);
                 return -1;
             }
-            world.geometry().surface(ray, hit, s.sp);
+            world.surface(ray, hit, s.sp);
             if (!cutAway(s)) {
                 break;
             }

@@ -65,7 +65,7 @@ final class Transmittance {
             if (!found) {
                 return true;
             }
-            world.geometry().surface(ray, hit, sp);
+            world.surface(ray, hit, sp);
             SurfaceMaps maps = world.maps(sp.material);
             boolean cutAway = maps != null && maps.cutAway(sp.uv);
             if (!cutAway) {

@@ -58,7 +58,7 @@ final class VolumeLight {
     void atSurface(Shading s, int medium, Sampler sampler, int n, boolean mis, boolean shadows, MutableRgb beta, MutableRgb out) {
         boolean estimate = !s.bsdf.isDelta() && !lights.isEmpty();
         for (int i = 0; i < n; i++) {
-            if (sampleLight(s.sp.p, sampler, mis) && estimate && surfaceFactor(s)) {
+            if (sampleLight(s.sp.p, s.sp.n, sampler, mis) && estimate && surfaceFactor(s)) {
                 s.sp.spawnOrigin(ls.wi, origin);
                 double cosOutward = ls.wi.dot(s.sp.ng) * (s.flipped ? -1 : 1);
                 resolve(origin, media.after(s.sp.material, medium, cosOutward), n, mis, shadows, beta, out);
@@ -70,19 +70,19 @@ final class VolumeLight {
     void atMedium(Vector3dc p, Vector3dc wo, double g, int medium, Sampler sampler, int n, boolean mis, boolean shadows, MutableRgb beta,
                   MutableRgb out) {
         for (int i = 0; i < n; i++) {
-            if (sampleLight(p, sampler, mis) && !lights.isEmpty()) {
+            if (sampleLight(p, null, sampler, mis) && !lights.isEmpty()) {
                 mediumFactor(wo, g);
                 resolve(origin.set(p), medium, n, mis, shadows, beta, out);
             }
         }
     }
 
-    /** Step 1: draws the four numbers and samples a light as seen from p; false if there is none to sample. */
-    private boolean sampleLight(Vector3dc p, Sampler sampler, boolean mis) {
+    /** Step 1: draws the four numbers and samples a light as seen from p (normal n, null in a medium); false if there is none to sample. */
+    private boolean sampleLight(Vector3dc p, Vector3dc n, Sampler sampler, boolean mis) {
         sampler.get2D(uPoint);
         double uLight = sampler.get1D();
         uTrack = sampler.get1D();
-        return lights.sample(p, uLight, uPoint.u1, uPoint.u2, !mis, lightPoint, ls);
+        return lights.sample(p, n, uLight, uPoint.u1, uPoint.u2, !mis, lightPoint, ls);
     }
 
     /** Step 2 at a surface: f = BSDF · |cosθi| into {@link #f}; false where it is zero or the normals disagree (no leaks). */

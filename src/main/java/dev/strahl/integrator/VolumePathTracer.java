@@ -110,6 +110,8 @@ public final class VolumePathTracer implements Integrator {
         private boolean prevDelta;            // whether that direction came from a delta lobe (or the camera)
         private double etaScale;              // product of η'² over the refractions (for the roulette)
         private double sinceScatter;          // distance from the last real scattering point, along the ray
+        private final Vector3d prevP = new Vector3d(), prevN = new Vector3d();   // that point and its normal: the light tree's choice there
+        private boolean prevAtSurface;        // whether it was on a surface (else in a medium: no normal)
 
         @Override
         public void radiance(Ray ray, Sampler sampler, MutableRgb out) {
@@ -190,6 +192,8 @@ public final class VolumePathTracer implements Integrator {
             wo.set(ray.d).negate();
             double g = media.medium(medium).g();
             light.atMedium(p, wo, g, medium, sampler, lightSamples, shadows, shadows, beta, out);
+            prevP.set(p);
+            prevAtSurface = false;
             sampler.get1D();                  // the lobe choice of a surface vertex: the layout stays the same
             sampler.get2D(u);
             prevPdf = HenyeyGreenstein.sample(g, wo, u.u1, u.u2, frame, wi);      // weight p / pdf = 1
@@ -212,7 +216,8 @@ public final class VolumePathTracer implements Integrator {
             if (s.emitted.isBlack()) {
                 return;
             }
-            double w = prevDelta ? 1 : !shadows ? 0 : MathUtil.powerHeuristic(prevPdf, lights.pdf(s.sp.material, sinceScatter, s.cosEmitter));
+            double w = prevDelta ? 1 : !shadows ? 0 : MathUtil.powerHeuristic(prevPdf,
+                    lights.pdf(prevP, prevAtSurface ? prevN : null, s.sp.prim, sinceScatter, s.cosEmitter));
             out.addProduct(beta, s.emitted, w);
         }
 
@@ -237,6 +242,9 @@ public final class VolumePathTracer implements Integrator {
             prevPdf = bs.pdf;
             prevDelta = bs.delta;
             sinceScatter = 0;
+            prevP.set(s.sp.p);
+            prevN.set(s.sp.n);
+            prevAtSurface = true;
             medium = media.after(s.sp.material, medium, s.wi.dot(s.sp.ng) * (s.flipped ? -1 : 1));
             s.spawn(ray, s.wi);
             return true;

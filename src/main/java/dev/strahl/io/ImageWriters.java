@@ -26,13 +26,13 @@ import java.util.Objects;
  *   <li>{@code .pfm} — linear 32-bit float RGB, the values exactly as rendered;</li>
  *   <li>{@code .exr} — OpenEXR, scanline, linear: channels {@code R}, {@code G}, {@code B} and,
  *       from {@link RenderBuffers}, the feature buffers in the same file as {@code albedo.R/G/B},
- *       {@code normal.X/Y/Z} and {@code depth.Z} (always 32-bit float: depths exceed half's
- *       range); {@code half} samples (the default) or {@code float}, ZIP compression (the
+ *       {@code normal.X/Y/Z}, {@code depth.Z} and the sample counts as {@code spp.Y} (those two always
+ *       32-bit float: depths exceed half's range, counts its exact integers); {@code half} samples (the default) or {@code float}, ZIP compression (the
  *       default) or none.</li>
  * </ul>
  * With PNG or PFM output, the feature buffers go to files beside it, named after it:
- * {@code out.albedo.pfm}, {@code out.normal.pfm}, {@code out.depth.pfm} (linear float; depth in
- * all three channels).
+ * {@code out.albedo.pfm}, {@code out.normal.pfm}, {@code out.depth.pfm}, {@code out.spp.pfm} (linear
+ * float; depth and the sample count in all three channels).
  *
  * <p>Writes are atomic ({@link AtomicFile}): the image goes to a temporary file in the same
  * directory, which is then renamed over the target. An interrupted or failed write leaves the
@@ -126,10 +126,10 @@ public final class ImageWriters {
     }
 
     /**
-     * Writes a render's image and its feature buffers (those that are not null): in one EXR file,
-     * or beside a PNG or PFM as {@code NAME.albedo.pfm}, {@code NAME.normal.pfm},
-     * {@code NAME.depth.pfm} (where {@code NAME} is {@code out} without its extension). The
-     * variance is not written.
+     * Writes a render's image and its feature buffers and sample counts (those that are not null):
+     * in one EXR file, or beside a PNG or PFM as {@code NAME.albedo.pfm}, {@code NAME.normal.pfm},
+     * {@code NAME.depth.pfm}, {@code NAME.spp.pfm} (where {@code NAME} is {@code out} without its
+     * extension). The variance is not written.
      *
      * The PNG's tone curve and exposure, the EXR's sample type and compression are this writer's.
      *
@@ -190,6 +190,9 @@ public final class ImageWriters {
         }
         if (buffers.depth() != null) {
             addChannels(channels, buffers.depth(), new String[] {"depth.Z"}, ExrPixelType.FLOAT);
+        }
+        if (buffers.samples() != null) {
+            addChannels(channels, buffers.samples(), new String[] {"spp.Y"}, ExrPixelType.FLOAT);
         }
         ExrWriter.write(out, w, h, channels, new ExrWriter.Options(exrFloat ? ExrPixelType.FLOAT : ExrPixelType.HALF,
                 exrZip ? ExrCompression.ZIP : ExrCompression.NONE));

@@ -1,6 +1,8 @@
 package dev.strahl.light;
 
 import dev.strahl.color.MutableRgb;
+import dev.strahl.geometry.Geometry;
+import dev.strahl.geometry.SurfacePoint;
 import org.joml.Vector3d;
 import org.joml.Vector3dc;
 
@@ -45,5 +47,23 @@ public final class LightSample {
         wi.set(dx * inv, dy * inv, dz * inv);
         distance = dist;
         return dist2;
+    }
+
+    /**
+     * Takes the point uniform by area on the emissive primitive {@code prim} for (u1, u2) into
+     * {@code scratch} and this sample (not infinite, not delta) and aims at it from {@code ref}.
+     * Returns cos θ at the light (between its geometric normal and the way back to ref), or 0
+     * where the point faces away from ref or coincides with it: then there is no sample.
+     */
+    double aimAtAreaLight(Geometry geometry, int prim, Vector3dc ref, double u1, double u2, SurfacePoint scratch) {
+        infinite = false;
+        delta = false;
+        geometry.samplePoint(prim, u1, u2, scratch);
+        p.set(scratch.p);
+        ng.set(scratch.ng);
+        if (aim(ref, p.x, p.y, p.z) == 0) {
+            return 0;
+        }
+        return Math.max(0, -ng.dot(wi));
     }
 }

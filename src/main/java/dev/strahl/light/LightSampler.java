@@ -4,23 +4,22 @@ import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
 import dev.strahl.geometry.SurfacePoint;
 import dev.strahl.image.Rgb;
-import java.util.Arrays;
 import java.util.List;
 import org.joml.Vector3dc;
 
 /**
  * Picks points on the emissive primitives (area lights), punctual lights ({@link PunctualLight})
- * and directions towards the {@link Environment} for next-event estimation.
+ * and directions towards the {@link Environment} for next-event estimation, seen from a shading
+ * point.
  *
  * <p><b>Area lights or environment.</b> When a scene has both, each light sample is of the
- * environment with probability {@value #ENVIRONMENT_PROBABILITY} and of the area lights otherwise
- * (the number that chooses is reused, rescaled, for the choice among area lights); with one kind
- * only, that kind always. Not by power: the power of an infinitely distant light that reaches the
- * scene depends on the scene's size, and either kind can dominate what a given surface receives
- * (a lamp-lit room under a bright sky); an even split bounds either kind's pdf to half its own, so
+ * environment with probability {@value #ENVIRONMENT_PROBABILITY} and of the other lights otherwise
+ * (the number that chooses is reused, rescaled, for the choice among them); with one kind only,
+ * that kind always. Not by power: the power of an infinitely distant light that reaches the scene
+ * depends on the scene's size, and either kind can dominate what a given surface receives (a
+ * lamp-lit room under a bright sky); an even split bounds either kind's pdf to half its own, so
  * neither is ever starved, and MIS with BSDF sampling covers the rest (pbrt-v4 weighs infinite
- * lights the same way in its BVH light sampler). Scenes without an environment keep exactly the
- * numbers they had: the area lights are then chosen with the very same arithmetic.
+ * lights the same way in its BVH light sampler).
  *
  * <p><b>A constant environment</b> is sampled (uniformly over the sphere) only where nothing else
  * would find it: for estimators of light sampling alone ({@code withConstant}: Whitted, the photon
@@ -30,48 +29,26 @@ import org.joml.Vector3dc;
  * {@link #environmentPdf} is 0 (pbrt-v4's "incomplete pdf" for {@code UniformInfiniteLight}). A
  * diffuse object under a constant sky thus stays exact with cosine sampling (the furnace test).
  *
- * <p><b>Area lights.</b> A primitive is
- * chosen in proportion to its power, area × mean(Le), then a point uniformly by area with
- * {@link Geometry#samplePoint} (the one sampling of a primitive); the density per unit area is
- * thus mean(Le) / total power for every emitter, which lets {@link #pdf} work from the material
- * alone. Lights are one-sided: they emit into the hemisphere of their geometric normal.
- * A textured emitter ({@link Emission}) is chosen by area × its mean over the texture, and its
- * point uniformly by area like any other: the sample carries Le at the point's (u, v), which is
- * unbiased whatever the texture (it is not importance-sampled within the texture), and the
- * density stays a function of the material, as the MIS weights of hit emitters need; a point
- * in the emitter's alpha cut-out carries Le = 0.
- *
- * <p><b>Punctual lights</b> share the part of the light samples that is not the environment's
- * with the area lights, by power: a punctual light with probability P_punctual / (P_punctual +
- * P_area), P_area = π·Σ area·mean(Le) the flux of the (Lambertian) area lights and P_punctual the
- * sum of {@link PunctualLight}'s powers (a directional light's over the scene's bounding sphere,
- * {@link #boundingRadius}); among them again by power. The number that chose the kind is
- * rescaled to choose within it, as for the environment. Without punctual lights the area lights
- * get the very same numbers and densities as before they existed.
- * Immutable and thread-safe.
+ * <p><b>The other lights</b> are chosen by what they give the shading point: a {@link LightTree}
+ * over the area and the point and spot lights, the directional lights by their share of the power
+ * ({@link TreeSelection}). {@link #byPower()} is the same sampler choosing by power alone,
+ * wherever the shading point is ({@link PowerSelection}): the teaching option, and what photon
+ * emission uses ({@link #samplePoint}, {@link #selectPunctual}). Lights are one-sided: they emit
+ * into the hemisphere of their geometric normal. Immutable and thread-safe.
  */
 public final class LightSampler {
-    /** The probability of sampling the environment when there are area lights too. */
+    /** The probability of sampling the environment when there are other lights too. */
     public static final double ENVIRONMENT_PROBABILITY = 0.5;
 
     private final Geometry geometry;
     private final Environment environment;
     private final double pEnvironment;   // probability of an environment sample under MIS: 0, 1/2 or 1
-    private final double pArea;          // 1 - pEnvironment
+    private final double pArea;          // 1 - pEnvironment: the other lights'
     private final double pEnvironmentAlone;  // the same for light sampling alone, where a constant environment counts too
     private final double pAreaAlone;
     private final Emission[] emission;   // per material: the caller's table, not a copy
-    private final int[] prims;           // emissive primitives
-    private final double[] cdf;          // cumulative power, cdf[last] = 1
-    private final double totalPower;     // sum of area × mean(Le)
-    private final double[] density;      // per material: mean(Le) / total power, the density per unit area
-    private final PunctualLight[] punctual;
-    private final double[] punctualCdf;  // cumulative power of the punctual lights, last = 1
-    private final double[] punctualProbability;  // each punctual light's share of the punctual power
-    private final double punctualPower;  // their total power (W)
-    private final double pPunctualShare; // of the samples that are not the environment's, the punctual lights' share
-    private final double pAreaLights;    // pArea · (1 − pPunctualShare): exactly pArea without punctual lights
-    private final double pAreaLightsAlone;
+    private final PowerSelection power;
+    private final TreeSelection tree;    // null: choose by power
 
     /**
      * @param emissionByMaterial emission of each material index (black = not a light), constant or
@@ -84,56 +61,46 @@ public final class LightSampler {
         this.geometry = geometry;
         this.environment = environment;
         this.emission = emissionByMaterial;
-        int n = 0;
-        int[] found = new int[16];
-        double[] power = new double[16];
-        double total = 0;
-        for (int prim = 0; prim < geometry.primitiveCount(); prim++) {
-            double w = weight(geometry.material(prim));
-            if (w > 0) {
-                if (n == found.length) {
-                    found = Arrays.copyOf(found, 2 * n);
-                    power = Arrays.copyOf(power, 2 * n);
-                }
-                found[n] = prim;
-                total += w * geometry.area(prim);
-                power[n++] = total;
-            }
-        }
-        this.prims = Arrays.copyOf(found, n);
-        this.cdf = Arrays.copyOf(power, n);
-        for (int i = 0; i < n; i++) {
-            cdf[i] /= total;
-        }
-        this.totalPower = total;
-        this.density = new double[emission.length];
+        double[] materialWeight = new double[emission.length];
         for (int m = 0; m < emission.length; m++) {
-            density[m] = total > 0 ? weight(m) / total : 0;
+            Rgb le = emission[m].mean();
+            materialWeight[m] = (le.r() + le.g() + le.b()) / 3;
         }
-        this.punctual = punctualLights.toArray(new PunctualLight[0]);
         double radius = boundingRadius(geometry.bounds());
-        this.punctualCdf = new double[punctual.length];
-        this.punctualProbability = new double[punctual.length];
-        double sum = 0;
-        for (int i = 0; i < punctual.length; i++) {
-            punctualProbability[i] = punctual[i].power(radius);
-            sum += punctualProbability[i];
-            punctualCdf[i] = sum;
-        }
-        for (int i = 0; i < punctual.length; i++) {
-            punctualCdf[i] = sum > 0 ? punctualCdf[i] / sum : (i + 1.0) / punctual.length;
-            punctualProbability[i] = sum > 0 ? punctualProbability[i] / sum : 1.0 / punctual.length;
-        }
-        this.punctualPower = sum;
-        boolean local = n > 0 || punctual.length > 0;
-        double areaFlux = Math.PI * total;
-        this.pPunctualShare = punctual.length == 0 ? 0 : n == 0 ? 1 : sum / (sum + areaFlux);
+        PunctualLight[] punctual = punctualLights.toArray(new PunctualLight[0]);
+        this.power = new PowerSelection(geometry, materialWeight, punctual, radius);
+        this.tree = new TreeSelection(geometry, power.prims, power.weight, punctual, radius);
+        boolean local = !power.isEmpty();
         this.pEnvironmentAlone = environment.isBlack() ? 0 : !local ? 1 : ENVIRONMENT_PROBABILITY;
         this.pAreaAlone = 1 - pEnvironmentAlone;
         this.pEnvironment = environment.isConstant() ? 0 : pEnvironmentAlone;
         this.pArea = 1 - pEnvironment;
-        this.pAreaLights = pArea * (1 - pPunctualShare);
-        this.pAreaLightsAlone = pAreaAlone * (1 - pPunctualShare);
+    }
+
+    private LightSampler(LightSampler s, TreeSelection tree) {
+        this.geometry = s.geometry;
+        this.environment = s.environment;
+        this.emission = s.emission;
+        this.power = s.power;
+        this.tree = tree;
+        this.pEnvironment = s.pEnvironment;
+        this.pArea = s.pArea;
+        this.pEnvironmentAlone = s.pEnvironmentAlone;
+        this.pAreaAlone = s.pAreaAlone;
+    }
+
+    /**
+     * This sampler choosing among the lights other than the environment by power alone, wherever
+     * the shading point is: the teaching option {@code --light-selection power}, the choice before
+     * the light tree. The environment's share and every table are shared.
+     */
+    public LightSampler byPower() {
+        return tree == null ? this : new LightSampler(this, null);
+    }
+
+    /** Whether lights are chosen by the light tree (else by power). */
+    public boolean usesTree() {
+        return tree != null;
     }
 
     /**
@@ -156,22 +123,22 @@ public final class LightSampler {
 
     /** Number of emissive primitives (area lights). */
     public int lightCount() {
-        return prims.length;
+        return power.prims.length;
     }
 
     /** Whether there is nothing to sample: no area light, no punctual light and a black environment. */
     public boolean isEmpty() {
-        return prims.length == 0 && punctual.length == 0 && pEnvironmentAlone == 0;
+        return power.isEmpty() && pEnvironmentAlone == 0;
     }
 
     /** Number of punctual lights. */
     public int punctualCount() {
-        return punctual.length;
+        return power.punctual.length;
     }
 
     /** Total power of the punctual lights (mean over channels, W); see {@link PunctualLight}. */
     public double punctualPower() {
-        return punctualPower;
+        return power.punctualPower;
     }
 
     /**
@@ -179,22 +146,22 @@ public final class LightSampler {
      * (for {@link #punctualProbability} and {@link #punctualLight}).
      */
     public int selectPunctual(double u) {
-        return select(punctualCdf, u);
+        return power.selectPunctual(u);
     }
 
     /** The probability with which {@link #selectPunctual} picks light i. */
     public double punctualProbability(int i) {
-        return punctualProbability[i];
+        return power.punctualProbability[i];
     }
 
     /** Punctual light i. */
     public PunctualLight punctualLight(int i) {
-        return punctual[i];
+        return power.punctual[i];
     }
 
     /** Total emitted power over π: the sum of area × mean(Le) (the flux of a Lambertian emitter is π times this). */
     public double totalPower() {
-        return totalPower;
+        return power.totalPower;
     }
 
     /** The emission of a material, {@link Emission#BLACK} if it is not a light. */
@@ -202,23 +169,29 @@ public final class LightSampler {
         return emission[material];
     }
 
-    /** Selection weight per unit area: the mean radiance's channel mean (over the texture for a textured emitter). */
-    private double weight(int material) {
-        Rgb le = emission[material].mean();
-        return (le.r() + le.g() + le.b()) / 3;
+    /** Nodes of the light tree (0 when lights are chosen by power or there is no local light). */
+    public int treeNodeCount() {
+        return tree == null ? 0 : tree.nodeCount();
+    }
+
+    /** Bytes of the light tree. */
+    public long treeByteSize() {
+        return tree == null ? 0 : tree.byteSize();
     }
 
     /**
-     * Samples a direction towards a light from {@code ref}: the environment with probability
-     * {@link #environmentProbability} (then {@code out.infinite}), else a punctual light (then
-     * {@code out.delta}) or a point on an area light.
+     * Samples a direction towards a light from the shading point {@code ref} with normal {@code n}:
+     * the environment with probability {@link #environmentProbability} (then {@code out.infinite}),
+     * else a punctual light (then {@code out.delta}) or a point on an area light.
      * Returns false when nothing can be sampled or the chosen point faces away from ref.
      *
+     * @param n            the shading normal at ref (either side), or null for a point that is not on a
+     *                     surface; the light tree weighs lights by the cosine there
      * @param withConstant whether a constant environment is sampled too: true for light sampling
      *                     alone, false where BSDF samples are weighted against these by MIS
      * @param scratch      a per-thread surface record for the sampled point
      */
-    public boolean sample(Vector3dc ref, double uLight, double u1, double u2, boolean withConstant, SurfacePoint scratch,
+    public boolean sample(Vector3dc ref, Vector3dc n, double uLight, double u1, double u2, boolean withConstant, SurfacePoint scratch,
                           LightSample out) {
         double pEnvironment = withConstant ? pEnvironmentAlone : this.pEnvironment;
         double pArea = withConstant ? pAreaAlone : this.pArea;
@@ -230,78 +203,34 @@ public final class LightSampler {
             out.pdf = pEnvironment * pdf;
             return pdf > 0 && Double.isFinite(out.pdf);
         }
-        if (prims.length == 0 && punctual.length == 0) {
+        if (power.isEmpty()) {
             return false;
         }
         if (pEnvironment > 0) {
             uLight = Math.min((uLight - pEnvironment) / pArea, Math.nextDown(1.0));
         }
-        if (pPunctualShare > 0) {
-            if (uLight < pPunctualShare) {
-                int i = select(punctualCdf, Math.min(uLight / pPunctualShare, Math.nextDown(1.0)));
-                out.pdf = pArea * pPunctualShare * punctualProbability[i];
-                return punctual[i].illuminate(ref, out) && out.pdf > 0;
-            }
-            uLight = Math.min((uLight - pPunctualShare) / (1 - pPunctualShare), Math.nextDown(1.0));
-        }
-        out.infinite = false;
-        out.delta = false;
-        geometry.samplePoint(prims[select(cdf, uLight)], u1, u2, scratch);
-        int m = scratch.material;
-        out.p.set(scratch.p);
-        out.ng.set(scratch.ng);
-        if (out.aim(ref, out.p.x, out.p.y, out.p.z) == 0) {
-            return false;
-        }
-        double cosLight = -out.ng.dot(out.wi);
-        if (cosLight <= 0) {
-            return false;
-        }
-        double dist = out.distance;
-        out.pdf = (withConstant ? pAreaLightsAlone : pAreaLights) * density[m] * dist * dist / cosLight;
-        emission[m].eval(scratch.uv, out.radiance);
-        return out.pdf > 0 && Double.isFinite(out.pdf);
-    }
-
-    /** Index of the first emitter whose cumulative power exceeds u: a linear scan for a few lights, else bisection. */
-    private static int select(double[] cdf, double u) {
-        int n = cdf.length;
-        if (n <= 8) {
-            int i = 0;
-            while (i < n - 1 && !(cdf[i] > u)) {
-                i++;
-            }
-            return i;
-        }
-        int i = Arrays.binarySearch(cdf, u);
-        i = i >= 0 ? i + 1 : -i - 1;                 // first entry with cdf > uLight
-        return Math.min(i, n - 1);
+        return tree == null ? power.sample(geometry, emission, ref, uLight, u1, u2, pArea, scratch, out)
+                : tree.sample(geometry, emission, ref, n, uLight, u1, u2, pArea, scratch, out);
     }
 
     /**
      * Picks an emissive primitive in proportion to its power and a point on it uniformly by area,
-     * as {@link #sample} does but without a reference point: the start of a light path (photon
-     * emission). Writes the point, its geometric normal and material into {@code dest} and returns
-     * the point's density per unit area, mean(Le) / {@link #totalPower()}; 0 if there is no light.
+     * without a reference point: the start of a light path (photon emission). Writes the point, its
+     * geometric normal and material into {@code dest} and returns the point's density per unit
+     * area, mean(Le) / {@link #totalPower()}; 0 if there is no light.
      */
     public double samplePoint(double uLight, double u1, double u2, SurfacePoint dest) {
-        if (prims.length == 0) {
-            return 0;
-        }
-        geometry.samplePoint(prims[select(cdf, uLight)], u1, u2, dest);
-        return weight(dest.material) / totalPower;
+        return power.samplePoint(geometry, uLight, u1, u2, dest);
     }
 
     /**
-     * Solid-angle density with which {@link #sample} picks a point of a light of the given
-     * material at distance {@code dist} whose normal makes cosine {@code cosLight} with the
-     * direction to the reference point.
+     * Solid-angle density with which {@link #sample} (under MIS) picks a point of the emissive
+     * primitive {@code prim} seen from the shading point {@code ref} with normal {@code n} (those
+     * that sampled) at distance {@code dist}, whose normal makes cosine {@code cosLight} with the
+     * direction back to ref: what the MIS weight of a BSDF sample that hits it needs.
      */
-    public double pdf(int material, double dist, double cosLight) {
-        if (cosLight <= 0 || totalPower <= 0) {
-            return 0;
-        }
-        return pAreaLights * density[material] * dist * dist / cosLight;
+    public double pdf(Vector3dc ref, Vector3dc n, int prim, double dist, double cosLight) {
+        return tree == null ? power.pdf(geometry.material(prim), dist, cosLight, pArea) : tree.pdf(ref, n, prim, dist, cosLight, pArea);
     }
 
     /**
@@ -310,5 +239,10 @@ public final class LightSampler {
      */
     public double environmentPdf(Vector3dc d) {
         return pEnvironment == 0 ? 0 : pEnvironment * environment.pdf(d);
+    }
+
+    /** The tree's choice, for the tests; null when choosing by power. */
+    TreeSelection treeSelection() {
+        return tree;
     }
 }

@@ -1,5 +1,6 @@
 package dev.strahl.light;
 
+import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Ray;
 import dev.strahl.image.Rgb;
 import dev.strahl.math.Frame;
@@ -128,6 +129,22 @@ public final class PunctualLight {
             case SPOT -> 2 * Math.PI * mean * ((1 - cosInner) + (cosInner - cosOuter) / 3);
             case DIRECTIONAL -> Math.PI * sceneRadius * sceneRadius * mean;
         };
+    }
+
+    /**
+     * The light tree's bounds of a point or spot light: its position, and its intensity mean(I)
+     * (W/sr, as an area light's area × mean(Le)); a point light emits every way, a spot around
+     * its axis within θinner at full intensity and up to θouter − θinner beyond.
+     */
+    LightBounds bounds() {
+        Aabb box = new Aabb().include(position.x, position.y, position.z);
+        double mean = (intensity.r() + intensity.g() + intensity.b()) / 3;
+        if (type == Type.POINT) {
+            return LightBounds.everyWay(box, mean);
+        }
+        double sinInner = Math.sqrt(Math.max(0, 1 - cosInner * cosInner)), sinOuter = Math.sqrt(Math.max(0, 1 - cosOuter * cosOuter));
+        double cosSpread = cosOuter * cosInner + sinOuter * sinInner;           // cos(θouter − θinner)
+        return LightBounds.facing(box, direction.x, direction.y, direction.z, cosInner, cosSpread, mean);
     }
 
     /**

@@ -107,7 +107,7 @@ public final class PhotonMapper implements Integrator {
 
     /** {@value #RADIUS_FRACTION} of the scene's bounding-box diagonal (1 for an empty scene). */
     static double automaticRadius(World world) {
-        Aabb box = world.geometry().bounds();
+        Aabb box = world.bounds();
         double diagonal = box.diagonal();
         return diagonal > 0 && Double.isFinite(diagonal) ? RADIUS_FRACTION * diagonal : 1;
     }

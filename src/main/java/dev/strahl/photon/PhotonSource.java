@@ -61,7 +61,7 @@ final class PhotonSource {
     PhotonSource(World world) {
         this.lights = world.lights();
         this.environment = world.environment();
-        Aabb box = world.geometry().bounds();
+        Aabb box = world.bounds();
         if (box.isEmpty()) {
             this.radius = 1;
         } else {

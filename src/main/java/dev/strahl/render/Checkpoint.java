@@ -33,7 +33,7 @@ import java.util.zip.CheckedOutputStream;
  * the image. Resuming ({@link RenderJob#resumeFrom}) continues every pixel from the sample index it
  * reached, so an interrupted and resumed render is bit-identical to an uninterrupted one.
  *
- * <p>File format (big-endian), version 2:
+ * <p>File format (big-endian), version 3:
  * <pre>
  *   8 bytes   magic "STRAHLCK"
  *   int       format version
@@ -46,37 +46,44 @@ import java.util.zip.CheckedOutputStream;
  *   per pixel, row by row from the top: int sample count, double r, g, b sums, double sum of
  *             the squared luminance and, if the settings keep feature buffers, 7 doubles: the
  *             sums of albedo r, g, b, normal x, y, z and depth
+ *   with a noise threshold (adaptive sampling, {@link NoiseTarget}): int, the last boundary decided
+ *             at, and (width·height + 7) / 8 bytes, a bit per pixel row by row (most significant
+ *             first) set if it still takes samples
  *   int       CRC-32C of all bytes before it
  * </pre>
- * Version 1 (before the film kept the squared luminance for the denoiser's variance) is refused
- * with a message that says so: its films lack what the variance needs, and a resumed render must
- * be the same bits as one never interrupted.
+ * Version 2 is version 3 without the noise threshold's section (it was written before there was
+ * one) and is read as well. Version 1 (before the film kept the squared luminance for the
+ * denoiser's variance) is refused with a message that says so: its films lack what the variance
+ * needs, and a resumed render must be the same bits as one never interrupted.
  * The settings excluded from the fingerprint are those that do not change the bits of the image:
  * the target samples per pixel (a render may be resumed to go further), the thread count, the
  * pass size and the time limit. Every other setting, including any added later, is part of it;
  * a checkpoint written before a setting existed is compared as if it held the value it was
- * rendered with ({@link #ADDED_LATER}: shadows, true), so it still resumes.
+ * rendered with ({@link #ADDED_LATER}: shadows, true; no noise threshold; lightTree, false: lights were chosen by power), so it still resumes.
  */
 final class Checkpoint {
-    static final int VERSION = 2;
+    static final int VERSION = 3;
     private static final byte[] MAGIC = "STRAHLCK".getBytes(StandardCharsets.US_ASCII);
     private static final int PIXEL_BYTES = 4 + 3 * 8;
     private static final Set<String> NOT_IN_FINGERPRINT = Set.of("samplesPerPixel", "threads", "samplesPerPass", "timeLimit", "schedule", "aovs");
     /** Settings added to the fingerprint after version 2 was first written, with the value every older checkpoint was rendered with. */
-    static final Map<String, String> ADDED_LATER = Map.of("shadows", "true");
+    static final Map<String, String> ADDED_LATER = Map.of("shadows", "true", "noiseThreshold", "0.0", "lightTree", "false");
 
     private final byte[] sceneDigest;
     private final String settingsKey;
     private final int width;
     private final int height;
     private final boolean features;
+    /** Whether the render has a noise threshold: its file holds the noise target's state. */
+    private final boolean adaptive;
 
-    private Checkpoint(byte[] sceneDigest, String settingsKey, int width, int height, boolean features) {
+    private Checkpoint(byte[] sceneDigest, String settingsKey, int width, int height, boolean features, boolean adaptive) {
         this.sceneDigest = sceneDigest;
         this.settingsKey = settingsKey;
         this.width = width;
         this.height = height;
         this.features = features;
+        this.adaptive = adaptive;
     }
 
     /** Bytes per pixel: the count, the r, g, b sums, the squared luminance and any feature sums. */
@@ -93,7 +100,8 @@ final class Checkpoint {
      * @return the identity, to save and restore checkpoints of that render
      */
     static Checkpoint of(Scene scene, RenderSettings settings) {
-        return new Checkpoint(sceneDigest(scene), settingsKey(settings), settings.output().width(), settings.output().height(), !settings.output().aovs().isEmpty());
+        return new Checkpoint(sceneDigest(scene), settingsKey(settings), settings.output().width(), settings.output().height(),
+                settings.output().keepsFeatures(), settings.sampling().noiseThreshold() > 0);
     }
 
     /** The fingerprint of the scene's content (SHA-256). */
@@ -108,8 +116,9 @@ final class Checkpoint {
      * @param samplesPerPixel samples per pixel every pixel has reached
      * @param invalidSamples  samples that were NaN or infinite, counted as black
      * @param seconds         seconds of rendering before
+     * @param noise           with a noise threshold, which pixels still render; else null
      */
-    record Restored(Film film, int samplesPerPixel, long invalidSamples, double seconds) {
+    record Restored(Film film, int samplesPerPixel, long invalidSamples, double seconds, NoiseTarget.State noise) {
         /**
          * Checks the film is there.
          *
@@ -117,6 +126,7 @@ final class Checkpoint {
          * @param samplesPerPixel samples per pixel reached
          * @param invalidSamples  invalid samples so far
          * @param seconds         seconds rendered so far
+         * @param noise           the noise target's state, or null
          */
         Restored {
             Objects.requireNonNull(film, "film");
@@ -129,7 +139,22 @@ final class Checkpoint {
      * @return bytes
      */
     long fileSize() {
-        return headerSize(settingsKey) + (long) width * height * pixelBytes() + 4;
+        return headerSize(settingsKey) + (long) width * height * pixelBytes() + noiseBytes() + 4;
+    }
+
+    /** Bytes of the noise target's section in a file of this render. */
+    private long noiseBytes() {
+        return adaptive ? 4 + ((long) width * height + 7) / 8 : 0;
+    }
+
+    /** Whether a file's settings (as {@link #settingsKey} writes them) have a noise threshold: its file has the section. */
+    private static boolean hasNoiseThreshold(String settings) {
+        for (String entry : settings.split(";")) {
+            if (entry.startsWith("noiseThreshold=")) {
+                return !entry.equals("noiseThreshold=0.0");
+            }
+        }
+        return false;
     }
 
     /**
@@ -138,17 +163,21 @@ final class Checkpoint {
      *
      * @param file           where to save; replaced atomically
      * @param film           the render's film, of the settings' size
+     * @param noise          with a noise threshold, the noise target's state; else null
      * @param invalidSamples NaN or infinite samples so far, to report after a resume
      * @param seconds        seconds rendered so far
      * @throws IOException if the file cannot be written; a previous checkpoint is then kept
-     * @throws IllegalArgumentException if the film is not of the settings' size
+     * @throws IllegalArgumentException if the film is not of the settings' size, or the noise state is missing or not wanted
      */
-    void save(Path file, Film film, long invalidSamples, double seconds) throws IOException {
+    void save(Path file, Film film, NoiseTarget.State noise, long invalidSamples, double seconds) throws IOException {
         if (film.width() != width || film.height() != height) {
             throw new IllegalArgumentException("film " + film.width() + "x" + film.height() + " is not " + width + "x" + height);
         }
         if (film.hasFeatures() != features) {
             throw new IllegalArgumentException("the film " + (features ? "lacks" : "has") + " the feature buffers of the settings");
+        }
+        if ((noise != null) != adaptive) {
+            throw new IllegalArgumentException(adaptive ? "a render with a noise threshold needs its state saved" : "no noise threshold, no state");
         }
         int reached = film.minSampleCount();
         AtomicFile.write(file, os -> {
@@ -171,6 +200,10 @@ final class Checkpoint {
                         out.writeDouble(v);
                     }
                 }
+            }
+            if (noise != null) {
+                out.writeInt(noise.boundary());
+                out.write(noise.packedMask());
             }
             out.flush();
             new DataOutputStream(os).writeInt((int) crc.getValue());
@@ -205,7 +238,7 @@ final class Checkpoint {
                 throw new CheckpointException(file, "checkpoint format version 1, made before strahl kept the per-pixel variance;"
                         + " this strahl reads version " + VERSION + " only: render anew");
             }
-            if (version != VERSION) {
+            if (version != VERSION && version != 2) {
                 throw new CheckpointException(file, "checkpoint format version " + version + "; this strahl reads version " + VERSION);
             }
             byte[] digest = in.readNBytes(32);
@@ -213,7 +246,8 @@ final class Checkpoint {
             int w = in.readInt();
             int h = in.readInt();
             // The size the header announces, checked before anything is allocated
-            long expected = headerSize(settings) + (long) Math.max(w, 0) * Math.max(h, 0) * pixelBytes() + 4;
+            long expected = headerSize(settings) + (long) Math.max(w, 0) * Math.max(h, 0) * pixelBytes()
+                    + (version >= 3 && hasNoiseThreshold(settings) ? 4 + ((long) Math.max(w, 0) * Math.max(h, 0) + 7) / 8 : 0) + 4;
             if (w <= 0 || h <= 0 || size > expected) {
                 throw new CheckpointException(file, "corrupt checkpoint (" + size + " bytes for a " + w + "x" + h + " film)");
             }
@@ -255,7 +289,16 @@ final class Checkpoint {
             if (reached != min || invalid < 0 || !(seconds >= 0)) {
                 throw new CheckpointException(file, "corrupt checkpoint (inconsistent header)");
             }
-            return new Restored(film, reached, invalid, seconds);
+            NoiseTarget.State noise = null;
+            if (adaptive) {                        // version 3: a version-2 file has no noise threshold, which the settings refused
+                int boundary = in.readInt();
+                byte[] bits = in.readNBytes((width * height + 7) / 8);
+                if (boundary < 0 || bits.length != (width * height + 7) / 8) {
+                    throw new CheckpointException(file, "corrupt checkpoint (noise threshold's state)");
+                }
+                noise = NoiseTarget.State.unpacked(boundary, bits, width * height);
+            }
+            return new Restored(film, reached, invalid, seconds, noise);
         } catch (EOFException e) {
             throw new CheckpointException(file, "truncated checkpoint");
         } catch (UTFDataFormatException e) {
@@ -319,7 +362,7 @@ final class Checkpoint {
         // Not a setting but decides the samples as much: the sample mode of the JVM (-Dstrahl.sampler).
         entries.put("sampler", SampleLoop.stratifiedSampler() ? "stratified" : "independent");
         // Which buffers are written does not matter, whether the film keeps features does (its layout).
-        entries.put("features", !settings.output().aovs().isEmpty());
+        entries.put("features", settings.output().keepsFeatures());
         return SettingsCodec.text(entries);
     }
 
@@ -332,7 +375,7 @@ final class Checkpoint {
             throw new IllegalStateException("SHA-256 is part of every Java platform", e);
         }
         World world = World.of(scene);
-        world.geometry().digest(md);
+        world.digest(md);
         StringBuilder sb = new StringBuilder();
         for (int m = 0; m < world.materialCount(); m++) {
             // records: every parameter, doubles in full precision

@@ -48,10 +48,13 @@ final class ClusterPasses implements PassRunner {
     }
 
     @Override
-    public void renderPass(int firstSample, int endSample) throws InterruptedException, ExecutionException {
+    public void renderPass(int firstSample, int endSample, NoiseTarget only) throws InterruptedException, ExecutionException {
         int tilesX = film.tileCountX();
         int tileCount = tilesX * film.tileCountY();
         for (int tile = 0; tile < tileCount; tile++) {
+            if (only != null && !only.rendersTile(tile)) {
+                continue;                                  // converged: not handed out again
+            }
             WorkUnit unit;
             synchronized (lock) {
                 while ((holds > 0 || out >= window()) && !cancelled && failure == null) {
@@ -60,7 +63,7 @@ final class ClusterPasses implements PassRunner {
                 if (cancelled || failure != null) {
                     break;
                 }
-                unit = cut(tile, tilesX, firstSample, endSample);
+                unit = cut(tile, tilesX, firstSample, endSample, only);
                 if (unit == null) {
                     continue;
                 }
@@ -83,8 +86,11 @@ final class ClusterPasses implements PassRunner {
         return Math.max(4, UNITS_PER_THREAD * channel.threads());
     }
 
-    /** The unit of one tile for samples [first, end), with the tile's state; null if every pixel has them already. */
-    private WorkUnit cut(int tile, int tilesX, int first, int end) {
+    /**
+     * The unit of one tile for samples [first, end) of its pixels (those {@code only} renders, if not
+     * null), with the tile's state; null if every such pixel has them already.
+     */
+    private WorkUnit cut(int tile, int tilesX, int first, int end, NoiseTarget only) {
         int x0 = (tile % tilesX) * Film.TILE;
         int y0 = (tile / tilesX) * Film.TILE;
         int w = Math.min(Film.TILE, film.width() - x0);
@@ -93,16 +99,21 @@ final class ClusterPasses implements PassRunner {
         int[] counts = new int[w * h];
         double[] sums = new double[perPixel * w * h];
         double[] state = new double[perPixel];
+        boolean[] renders = only != null ? new boolean[w * h] : null;
         boolean any = false;
         for (int ty = 0; ty < h; ty++) {
             for (int tx = 0; tx < w; tx++) {
                 int i = ty * w + tx;
                 counts[i] = film.pixelState(x0 + tx, y0 + ty, state);
                 System.arraycopy(state, 0, sums, perPixel * i, perPixel);
-                any |= counts[i] < end;
+                boolean takes = only == null || only.renders(film.pixelIndex(x0 + tx, y0 + ty));
+                if (renders != null) {
+                    renders[i] = takes;
+                }
+                any |= takes && counts[i] < end;
             }
         }
-        return any ? new WorkUnit(x0, y0, w, h, first, end, counts, sums) : null;
+        return any ? new WorkUnit(x0, y0, w, h, first, end, counts, sums, renders) : null;
     }
 
     private void merge(WorkUnit done, Throwable e, long samples) {

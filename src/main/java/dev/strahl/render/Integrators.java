@@ -15,6 +15,8 @@ final class Integrators {
     static Integrator create(World scene, RenderSettings s) {
         // the teaching option --accel none: the same world, every ray against every primitive
         World world = s.execution().bruteForce() ? scene.bruteForce() : scene;
+        // the teaching option --light-selection power: lights chosen by power alone, as before the light tree
+        world = s.transport().lightTree() ? world : world.lightsByPower();
         boolean uniform = s.transport().hemisphere() == HemisphereSampling.UNIFORM;
         // the teaching option without shadows: next-event estimation takes every light sample as visible
         PathTracer.Strategy path = s.transport().shadows() ? PathTracer.Strategy.MIS : PathTracer.Strategy.UNOCCLUDED;

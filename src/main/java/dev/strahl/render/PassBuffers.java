@@ -72,6 +72,17 @@ final class PassBuffers {
         return new RenderBuffers(color, film.varianceImage(),
                 aovs.contains(Aov.ALBEDO) ? film.featureImage(0) : null,
                 aovs.contains(Aov.NORMAL) ? film.featureImage(3) : null,
-                aovs.contains(Aov.DEPTH) ? film.featureImage(6) : null);
+                aovs.contains(Aov.DEPTH) ? film.featureImage(6) : null, aovs.contains(Aov.SPP) ? sampleCounts() : null);
+    }
+
+    /** The film's sample count of every pixel, in r, g and b alike. */
+    private Image sampleCounts() {
+        float[] n = new float[3 * film.width() * film.height()];
+        for (int y = 0, o = 0; y < film.height(); y++) {
+            for (int x = 0; x < film.width(); x++, o += 3) {
+                n[o] = n[o + 1] = n[o + 2] = film.sampleCount(x, y);
+            }
+        }
+        return new Image(film.width(), film.height(), n);
     }
 }

@@ -11,8 +11,12 @@ import java.util.concurrent.ExecutionException;
  * index order, so the image is the same bits.
  */
 interface PassRunner {
-    /** Renders samples [firstSample, endSample) of every pixel; returns when the pass is done or cancelled. */
-    void renderPass(int firstSample, int endSample) throws InterruptedException, ExecutionException;
+    /**
+     * Renders samples [firstSample, endSample) of every pixel, or with {@code only} non-null of the
+     * pixels it {@linkplain NoiseTarget#renders renders} (skipping tiles without any); returns when the
+     * pass is done or cancelled.
+     */
+    void renderPass(int firstSample, int endSample, NoiseTarget only) throws InterruptedException, ExecutionException;
 
     /** Runs an integrator's per-sample preparation; null when this runner cannot (a cluster). */
     Parallel parallel();

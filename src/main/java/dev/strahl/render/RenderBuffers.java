@@ -1,5 +1,6 @@
 package dev.strahl.render;
 
+import dev.strahl.film.Film;
 import dev.strahl.image.Image;
 import java.util.Objects;
 
@@ -15,8 +16,9 @@ import java.util.Objects;
  * @param normal   the mean {@linkplain Aov#NORMAL normal} (x, y, z in r, g, b; not renormalised),
  *                 or null if not kept
  * @param depth    the mean {@linkplain Aov#DEPTH depth} in r, g and b alike, or null if not kept
+ * @param samples  the {@linkplain Aov#SPP number of samples} of every pixel in r, g and b alike, or null if not kept
  */
-public record RenderBuffers(Image color, Image variance, Image albedo, Image normal, Image depth) {
+public record RenderBuffers(Image color, Image variance, Image albedo, Image normal, Image depth, Image samples) {
 
     /**
      * Checks that the images are there where they must be and have one size.
@@ -26,16 +28,30 @@ public record RenderBuffers(Image color, Image variance, Image albedo, Image nor
      * @param albedo   the albedo, or null
      * @param normal   the normals, or null
      * @param depth    the depth, or null
+     * @param samples  the samples per pixel, or null
      */
     public RenderBuffers {
         Objects.requireNonNull(color, "color");
         Objects.requireNonNull(variance, "variance");
-        for (Image i : new Image[] {variance, albedo, normal, depth}) {
+        for (Image i : new Image[] {variance, albedo, normal, depth, samples}) {
             if (i != null && (i.width() != color.width() || i.height() != color.height())) {
                 throw new IllegalArgumentException("buffer of " + i.width() + "x" + i.height() + " beside an image of "
                         + color.width() + "x" + color.height());
             }
         }
+    }
+
+    /**
+     * Buffers without the sample counts.
+     *
+     * @param color    the image
+     * @param variance the variance of each pixel's mean luminance
+     * @param albedo   the albedo, or null
+     * @param normal   the normals, or null
+     * @param depth    the depth, or null
+     */
+    public RenderBuffers(Image color, Image variance, Image albedo, Image normal, Image depth) {
+        this(color, variance, albedo, normal, depth, null);
     }
 
     /**
@@ -61,7 +77,26 @@ public record RenderBuffers(Image color, Image variance, Image albedo, Image nor
             case ALBEDO -> albedo;
             case NORMAL -> normal;
             case DEPTH -> depth;
+            case SPP -> samples;
         };
+    }
+
+    /**
+     * The relative error of every pixel's mean, the quantity a noise threshold
+     * ({@link RenderSettings#withNoiseThreshold}) bounds: the standard error of its mean luminance
+     * over that luminance, or over 0.05 where the pixel is darker (docs/integrators.md, "Render until
+     * clean"). From the image and the variance, so from floats: within their rounding of what the
+     * render decides by.
+     *
+     * @return a new image with the error (0.01 = 1 %) in r, g and b alike
+     */
+    public Image relativeError() {
+        float[] rgb = color.rgb(), var = variance.rgb();
+        float[] e = new float[rgb.length];
+        for (int i = 0; i < rgb.length; i += 3) {
+            e[i] = e[i + 1] = e[i + 2] = (float) NoiseTarget.relativeError(Film.luminance(rgb[i], rgb[i + 1], rgb[i + 2]), var[i]);
+        }
+        return new Image(color.width(), color.height(), e);
     }
 
     /**
@@ -71,6 +106,6 @@ public record RenderBuffers(Image color, Image variance, Image albedo, Image nor
      * @return new buffers
      */
     public RenderBuffers withColor(Image image) {
-        return new RenderBuffers(image, variance, albedo, normal, depth);
+        return new RenderBuffers(image, variance, albedo, normal, depth, samples);
     }
 }

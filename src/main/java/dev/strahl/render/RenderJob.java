@@ -38,10 +38,11 @@ public final class RenderJob implements AutoCloseable {
     private static final AtomicInteger JOB_NUMBER = new AtomicInteger();
 
     private final RenderSettings settings;
-    private final RenderListener listener;
     private final Film film;
-    private final Integrator integrator;
     private final PassRunner workers;
+    /** With a noise threshold, which pixels still render (saved in checkpoints); else null. */
+    private final NoiseTarget target;
+    private final PassLoop loop;
     private final Scene scene;
     /** What ties a checkpoint to this scene and these settings; digested when first needed. */
     private Checkpoint identity;
@@ -50,8 +51,6 @@ public final class RenderJob implements AutoCloseable {
     private final double earlierSeconds;
     private final int earlierSpp;
     private final CompletableFuture<RenderStats> result = new CompletableFuture<>();
-    private volatile int completedSpp;
-    private final long restoredSamples;              // held by a resumed film before this job began
     /** The last completed pass: its image ({@link #snapshot()}) and, when asked for, its buffers. */
     private final PassBuffers passes;
     private final PauseClock clock = new PauseClock();
@@ -60,19 +59,23 @@ public final class RenderJob implements AutoCloseable {
     private RenderJob(Scene scene, RenderSettings settings, Integrator integrator, RenderListener listener, Checkpoint identity,
                       Checkpoint.Restored restored, Function<Film, PassRunner> cluster) {
         this.settings = Objects.requireNonNull(settings, "settings");
-        this.listener = Objects.requireNonNull(listener, "listener");
+        Objects.requireNonNull(listener, "listener");
+        Objects.requireNonNull(integrator, "integrator");
         this.film = restored != null ? restored.film()
-                : new Film(settings.output().width(), settings.output().height(), !settings.output().aovs().isEmpty());
-        this.integrator = Objects.requireNonNull(integrator, "integrator");
+                : new Film(settings.output().width(), settings.output().height(), settings.output().keepsFeatures());
         this.scene = Objects.requireNonNull(scene, "scene");
         this.identity = identity;
         this.earlierInvalid = restored != null ? restored.invalidSamples() : 0;
         this.earlierSeconds = restored != null ? restored.seconds() : 0;
         int number = JOB_NUMBER.incrementAndGet();
         this.workers = cluster != null ? cluster.apply(film) : RenderWorkers.of(scene, settings, film, integrator, "strahl-render-" + number);
-        this.completedSpp = this.earlierSpp = Math.min(film.minSampleCount(), settings.sampling().samplesPerPixel());   // 0, unless restored
+        NoiseTarget.State noise = restored != null ? restored.noise() : null;
+        this.target = settings.sampling().noiseThreshold() == 0 ? null : noise != null
+                ? new NoiseTarget(film, settings.sampling().noiseThreshold(), noise.boundary(), noise.mask())
+                : new NoiseTarget(film, settings.sampling().noiseThreshold());
         this.passes = new PassBuffers(film, settings.output().aovs());
-        this.restoredSamples = film.totalSamples();
+        this.loop = new PassLoop(settings, integrator, workers, film, passes, listener, target, earlierInvalid);
+        this.earlierSpp = loop.completedSamplesPerPixel();
     }
 
     /**
@@ -179,17 +182,18 @@ public final class RenderJob implements AutoCloseable {
      * @return the count
      */
     public int completedSamplesPerPixel() {
-        return completedSpp;
+        return loop.completedSamplesPerPixel();
     }
 
     /**
-     * Fraction of the requested samples taken.
+     * Fraction of the samples the render will take that it has taken: of the requested samples of
+     * every pixel or, with a noise threshold, of what the pixels that have not converged were
+     * estimated to need at the last decision (from their error and its fall as 1/√n).
      *
      * @return a number in [0, 1]
      */
     public double progress() {
-        double total = (double) settings.sampling().samplesPerPixel() * settings.output().width() * settings.output().height();
-        return Math.min(1, (restoredSamples + workers.samplesDone()) / total);
+        return loop.progress();
     }
 
     /**
@@ -280,7 +284,7 @@ public final class RenderJob implements AutoCloseable {
         workers.hold();
         try {
             workers.awaitStill();
-            identity().save(file, film, invalidSamples(), earlierSeconds + elapsedSeconds());
+            identity().save(file, film, target != null ? target.state() : null, invalidSamples(), earlierSeconds + elapsedSeconds());
         } finally {
             workers.release();
         }
@@ -387,13 +391,6 @@ public final class RenderJob implements AutoCloseable {
     }
 
     private void run() {
-        new PassLoop(settings, integrator, workers, film, passes, listener)
-                .run(restoredSamples > 0, spp -> completedSpp = spp, this::stats, this::elapsedSeconds, result);
-    }
-
-    /** The figures after {@code passCount} passes of this job. */
-    private RenderStats stats(int passCount) {
-        return new RenderStats(elapsedSeconds(), workers.samplesDone(), workers.rayCount(), completedSpp, workers.threads(), workers.cancelled(),
-                invalidSamples(), workers.idleSeconds(), passCount, workers.members());
+        loop.run(this::elapsedSeconds, result);
     }
 }

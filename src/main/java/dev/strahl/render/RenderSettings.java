@@ -9,17 +9,14 @@ import java.util.Set;
 import java.util.function.Consumer;
 
 /**
- * How to render, by concern: the {@link Output} (film size, feature buffers), the {@link Sampling}
- * (samples per pixel, seed), the light {@link Transport} (integrator and its parameters) and the
- * {@link Execution} (threads, passes, time limit; none of it changes the image's bits). Immutable;
- * start from {@link #defaults()} and change what you need with the {@code with...} methods, which
- * return modified copies:
+ * How to render, by concern: the {@link Output} (film size, feature buffers), the {@link Sampling} (samples per
+ * pixel, seed, noise threshold), the light {@link Transport} (integrator and its parameters) and the {@link Execution}
+ * (threads, passes, time limit; none of it changes the image's bits). Immutable; start from {@link #defaults()} and
+ * change what you need with the {@code with...} methods, which return modified copies:
  * <pre>{@code
  * RenderSettings s = RenderSettings.defaults().withSize(800, 600).withSamplesPerPixel(256).withSeed(7);
  * int depth = s.transport().maxDepth();
  * }</pre>
- * Checkpoints, cluster members and {@code render --stats} record the settings by the names of
- * these records' components.
  *
  * @param output    what the render makes: the film and the feature buffers kept beside it
  * @param sampling  how many camera samples each pixel takes, and from which random sequence
@@ -27,7 +24,6 @@ import java.util.function.Consumer;
  * @param execution how the work is done: threads, passes, time limit and the teaching options that change no bit
  */
 public record RenderSettings(Output output, Sampling sampling, Transport transport, Execution execution) {
-
     /** Largest accepted film edge, to refuse absurd sizes before allocating. */
     public static final int MAX_SIZE = 1 << 15;
 
@@ -70,24 +66,38 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
             }
             aovs = aovs.isEmpty() ? Set.of() : Collections.unmodifiableSet(EnumSet.copyOf(aovs));
         }
+
+        /**
+         * Whether the film keeps the sums of the {@linkplain Aov#traced() traced} feature buffers (not needed for {@link Aov#SPP}).
+         *
+         * @return true if a traced feature buffer is among {@link #aovs()}
+         */
+        public boolean keepsFeatures() {
+            return aovs.stream().anyMatch(Aov::traced);
+        }
     }
 
     /**
      * The camera samples of every pixel.
      *
-     * @param samplesPerPixel camera samples per pixel, positive
+     * @param samplesPerPixel camera samples per pixel, positive; with a noise threshold, the most a pixel may take
      * @param seed            the render seed; with the other settings it fixes the image bit for bit
+     * @param noiseThreshold  0, or the target relative standard error of every pixel's mean in (0, 1] (adaptive sampling)
      */
-    public record Sampling(int samplesPerPixel, long seed) {
+    public record Sampling(int samplesPerPixel, long seed, double noiseThreshold) {
         /**
-         * Checks the sample count.
+         * Checks the sample count and the threshold.
          *
          * @param samplesPerPixel camera samples per pixel
          * @param seed            the render seed
+         * @param noiseThreshold  0, or the target relative standard error in (0, 1]
          */
         public Sampling {
             if (samplesPerPixel <= 0) {
                 throw new IllegalArgumentException("samples per pixel must be positive, got " + samplesPerPixel);
+            }
+            if (!(noiseThreshold >= 0 && noiseThreshold <= 1)) {
+                throw new IllegalArgumentException("noise threshold must be 0 (off) or in (0, 1] (0.01 = 1 %), got " + noiseThreshold);
             }
         }
     }
@@ -100,12 +110,12 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
      * @param lightSamples  shadow rays per diffuse or glossy hit for the direct and Whitted integrators, at least 1
      * @param hemisphere    how diffuse surfaces sample directions
      * @param cullBackFaces skip back faces of closed meshes for camera and continuation rays
-     * @param shadows       whether shadow rays are traced; false is a teaching option: every light sample counts as
-     *                      visible, so lights shine through everything onto whatever faces them (no shadows)
+     * @param shadows       whether shadow rays are traced (false, a teaching option: every light sample counts as visible)
+     * @param lightTree     whether lights are chosen by a light tree (false, a teaching option: by their power alone)
      * @param photons       the photon mapper's photons per iteration and initial gather radius
      */
     public record Transport(IntegratorKind integrator, int maxDepth, int lightSamples, HemisphereSampling hemisphere,
-                            boolean cullBackFaces, boolean shadows, PhotonParameters photons) {
+                            boolean cullBackFaces, boolean shadows, boolean lightTree, PhotonParameters photons) {
         /**
          * Checks every value; the message names the one that is wrong.
          *
@@ -115,6 +125,7 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
          * @param hemisphere    cosine or uniform
          * @param cullBackFaces whether back faces of closed meshes are skipped
          * @param shadows       whether shadow rays are traced
+         * @param lightTree     whether lights are chosen by the light tree (else by power)
          * @param photons       the photon mapper's parameters
          */
         public Transport {
@@ -173,25 +184,23 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
     }
 
     /**
-     * 512×512 without feature buffers; 64 spp, seed 0; path tracing with unbounded depth, one light
-     * sample, cosine sampling, no culling, shadows and the photon mapper's
+     * 512×512 without feature buffers; 64 spp, seed 0, no noise threshold; path tracing with unbounded depth, one light
+     * sample, cosine sampling, no culling, shadows, the light tree and the photon mapper's
      * {@linkplain PhotonParameters#defaults() defaults}; all processors, automatic passes, no time
      * limit, the BVH and tiles.
      *
      * @return the defaults
      */
     public static RenderSettings defaults() {
-        return new RenderSettings(new Output(512, 512, Set.of()), new Sampling(64, 0),
-                new Transport(IntegratorKind.PATH, -1, 1, HemisphereSampling.COSINE, false, true, PhotonParameters.defaults()),
+        return new RenderSettings(new Output(512, 512, Set.of()), new Sampling(64, 0, 0),
+                new Transport(IntegratorKind.PATH, -1, 1, HemisphereSampling.COSINE, false, true, true, PhotonParameters.defaults()),
                 new Execution(0, 0, Duration.ZERO, false, false));
     }
 
     /**
-     * Every setting by name, with its value: what checkpoints, cluster members and
-     * {@code render --stats} record. A setting is named by its component in its part
-     * ({@code width}, {@code seed}, {@code maxDepth}, {@code threads}, …; the names are unique), a
-     * value inside a part by the part's component first ({@code photons.photonsPerIteration}).
-     * Values are Integer, Long, Double, Boolean, an enum, a Duration or a set of {@link Aov}.
+     * Every setting by name ({@code width}, {@code seed}, {@code photons.photonsPerIteration}, …) with its value
+     * (Integer, Long, Double, Boolean, an enum, a Duration or a set of {@link Aov}): what checkpoints, cluster
+     * members and {@code render --stats} record.
      *
      * @return the settings in the order of the parts and their components, unmodifiable
      */
@@ -207,16 +216,13 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
      * @return a new settings object
      */
     public RenderSettings withSize(int w, int h) {
-        return edit(e -> {
-            e.width = w;
-            e.height = h;
-        });
+        return edit(e -> e.size(w, h));
     }
 
     /**
      * These settings with other feature buffers.
      *
-     * @param kept the feature buffers to keep beside the image; none for an empty set
+     * @param kept the buffers to keep beside the image; none for an empty set
      * @return a new settings object
      */
     public RenderSettings withAovs(Set<Aov> kept) {
@@ -224,13 +230,24 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
     }
 
     /**
-     * These settings with another sample count.
+     * These settings with another sample count (with a noise threshold: the most a pixel takes).
      *
      * @param spp samples per pixel, positive
      * @return a new settings object
      */
     public RenderSettings withSamplesPerPixel(int spp) {
         return edit(e -> e.samplesPerPixel = spp);
+    }
+
+    /**
+     * These settings with another noise threshold (adaptive sampling: docs/integrators.md, "Render until clean"),
+     * or (0) none; with one, the sample count is the most a pixel takes.
+     *
+     * @param t 0 for none, or the target relative standard error of every pixel's mean, in (0, 1]
+     * @return a new settings object
+     */
+    public RenderSettings withNoiseThreshold(double t) {
+        return edit(e -> e.noiseThreshold = t);
     }
 
     /**
@@ -294,19 +311,24 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
     }
 
     /**
-     * These settings with or without shadows. Without is a teaching option, the picture a first
-     * ray tracer makes before it learns shadow rays: no shadow ray is traced and every light
-     * sample counts as visible, so each point shows the light of every light in front of it as if
-     * nothing stood between (for a diffuse surface: Lambert × light). Every integrator honours it
-     * in its next-event estimation; the path tracer then samples lights alone (no MIS) and, like
-     * the photon mapper, still traces its bounces through the scene, so only the direct light
-     * loses its shadows (docs/experiments.md, experiment 3).
+     * These settings with or without shadows; without is a teaching option (docs/experiments.md, experiment 3).
      *
      * @param s true to trace shadow rays (the default), false for none
      * @return a new settings object
      */
     public RenderSettings withShadows(boolean s) {
         return edit(e -> e.shadows = s);
+    }
+
+    /**
+     * These settings with lights chosen by the light tree or, a teaching option, by their power alone
+     * wherever the shading point is: same image, more noise (docs/integrators.md, many lights).
+     *
+     * @param tree true for the light tree (the default), false for power alone
+     * @return a new settings object
+     */
+    public RenderSettings withLightTree(boolean tree) {
+        return edit(e -> e.lightTree = tree);
     }
 
     /**
@@ -350,9 +372,8 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
     }
 
     /**
-     * These settings with or without the BVH: a teaching option. Without it every ray is tested
-     * against every primitive, the brute-force loop a first ray tracer starts from; same hits and
-     * image, many times slower (docs/experiments.md).
+     * These settings with or without the BVH: a teaching option (docs/experiments.md). Without it every ray is
+     * tested against every primitive, as in a first ray tracer; same image, many times slower.
      *
      * @param b true for brute force, false for the BVH (the default)
      * @return a new settings object
@@ -362,9 +383,7 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
     }
 
     /**
-     * These settings with another way of sharing the image among threads: a teaching option. With
-     * stripes, thread i of n renders the i-th horizontal stripe and nothing else (the scheme of a
-     * first multithreaded renderer); without, threads take 32×32 tiles from a shared counter.
+     * These settings with one horizontal stripe per thread (a teaching option) or 32×32 tiles shared by all.
      *
      * @param s true for stripes, false for tiles (the default)
      * @return a new settings object
@@ -375,8 +394,6 @@ public record RenderSettings(Output output, Sampling sampling, Transport transpo
 
     /** A copy with some values changed: every {@code with...} method is one line, the parts are rebuilt in {@link SettingsFields}. */
     private RenderSettings edit(Consumer<SettingsFields> change) {
-        SettingsFields f = new SettingsFields(this);
-        change.accept(f);
-        return f.settings();
+        return new SettingsFields(this).apply(change);
     }
 }

@@ -11,17 +11,23 @@ import java.util.Objects;
  * @param seconds           wall-clock render time, excluding scene loading and BVH build
  * @param samples           camera samples taken
  * @param rays              rays traced (camera, continuation and shadow)
- * @param samplesPerPixel   completed samples per pixel
+ * @param samplesPerPixel   completed samples per pixel (with a noise threshold: of the pixels still rendering, or at the
+ *                          end of those that rendered longest)
  * @param threads           worker threads used (of every member, on a cluster)
  * @param cancelled         whether the render was cancelled before reaching its sample count (a time limit is not a cancellation)
  * @param invalidSamples    samples whose radiance was NaN or infinite and so was dropped
  * @param threadIdleSeconds summed over the threads: how long each, having finished its part of a
  *                          pass, waited for the last thread to finish it (this session's passes only)
  * @param passes            passes completed
+ * @param minSamplesPerPixel  the fewest samples a pixel holds (with a noise threshold, of the pixels that converged first)
+ * @param meanSamplesPerPixel the mean samples per pixel: the samples the image holds over its pixels
+ * @param maxSamplesPerPixel  the most samples a pixel holds
+ * @param convergedFraction the share of pixels a noise threshold has found converged, from 0 to 1; 0 without one
  * @param members           on a cluster ({@link RenderCluster}), what each member did for this render; empty for a local one
  */
 public record RenderStats(double seconds, long samples, long rays, int samplesPerPixel, int threads, boolean cancelled,
-                          long invalidSamples, double threadIdleSeconds, int passes, List<Member> members) {
+                          long invalidSamples, double threadIdleSeconds, int passes, int minSamplesPerPixel, double meanSamplesPerPixel,
+                          int maxSamplesPerPixel, double convergedFraction, List<Member> members) {
 
     /**
      * Copies the list of members.
@@ -29,12 +35,17 @@ public record RenderStats(double seconds, long samples, long rays, int samplesPe
      * @param seconds           render time
      * @param samples           camera samples
      * @param rays              rays traced
-     * @param samplesPerPixel   completed samples per pixel
+     * @param samplesPerPixel   completed samples per pixel (with a noise threshold: of the pixels still rendering, or at the
+ *                          end of those that rendered longest)
      * @param threads           worker threads
      * @param cancelled         whether it was cancelled
      * @param invalidSamples    NaN or infinite samples
      * @param threadIdleSeconds time threads waited for each other
      * @param passes            passes completed
+     * @param minSamplesPerPixel  the fewest samples of a pixel
+     * @param meanSamplesPerPixel the mean samples of a pixel
+     * @param maxSamplesPerPixel  the most samples of a pixel
+     * @param convergedFraction the share of pixels converged
      * @param members           the cluster's members' figures, or none
      */
     public RenderStats {

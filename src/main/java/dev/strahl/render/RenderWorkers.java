@@ -57,7 +57,7 @@ final class RenderWorkers implements Parallel, PassRunner {
         World world = World.of(scene);
         boolean cull = settings.transport().cullBackFaces();
         return new RenderWorkers(film, CameraRays.of(scene.camera(), settings.output().width(), settings.output().height()), integrator,
-                settings.output().aovs().isEmpty() ? null : () -> new FeatureTracer(world, cull), settings.sampling().seed(),
+                settings.output().keepsFeatures() ? () -> new FeatureTracer(world, cull) : null, settings.sampling().seed(),
                 settings.execution().effectiveThreads(), settings.execution().stripes(), name, WavefrontLoop.batch());
     }
 
@@ -186,16 +186,16 @@ final class RenderWorkers implements Parallel, PassRunner {
         pool.shutdownNow();
     }
 
-    /** Renders samples [firstSample, endSample) of every pixel; returns when all threads are done with it. */
+    /** Renders samples [firstSample, endSample) of every pixel (or those {@code only} renders); returns when all threads are done with it. */
     @Override
-    public void renderPass(int firstSample, int endSample) throws InterruptedException, ExecutionException {
+    public void renderPass(int firstSample, int endSample, NoiseTarget only) throws InterruptedException, ExecutionException {
         AtomicInteger nextTile = new AtomicInteger();
         try {
             onEveryThread(w -> {
                 if (stripes) {
-                    renderStripe(w, firstSample, endSample);
+                    renderStripe(w, firstSample, endSample, only);
                 } else {
-                    renderTiles(w, nextTile, firstSample, endSample);
+                    renderTiles(w, nextTile, firstSample, endSample, only);
                 }
                 w.finished = System.nanoTime();
             });
@@ -279,13 +279,16 @@ final class RenderWorkers implements Parallel, PassRunner {
         }
     }
 
-    private void renderTiles(SampleLoop.WorkerState w, AtomicInteger nextTile, int firstSample, int endSample) {
+    private void renderTiles(SampleLoop.WorkerState w, AtomicInteger nextTile, int firstSample, int endSample, NoiseTarget only) {
         int tilesX = film.tileCountX();
         int tileCount = tilesX * film.tileCountY();
         for (int tile = nextTile.getAndIncrement(); tile < tileCount && !cancelled; tile = nextTile.getAndIncrement()) {
+            if (only != null && !only.rendersTile(tile)) {
+                continue;                                  // every pixel of it has converged
+            }
             int x0 = (tile % tilesX) * Film.TILE;
             int y0 = (tile / tilesX) * Film.TILE;
-            renderRect(w, x0, y0, Math.min(x0 + Film.TILE, film.width()), Math.min(y0 + Film.TILE, film.height()), firstSample, endSample);
+            renderRect(w, x0, y0, Math.min(x0 + Film.TILE, film.width()), Math.min(y0 + Film.TILE, film.height()), firstSample, endSample, only);
             passGate();
         }
     }
@@ -294,18 +297,21 @@ final class RenderWorkers implements Parallel, PassRunner {
      * Teaching option with stripes (a teaching option: thread i of n renders rows [i·h/n, (i+1)·h/n)
      * and nothing else (it may hold still between rows, as between tiles).
      */
-    private void renderStripe(SampleLoop.WorkerState w, int firstSample, int endSample) {
+    private void renderStripe(SampleLoop.WorkerState w, int firstSample, int endSample, NoiseTarget only) {
         int n = workers.length, h = film.height();
         int y0 = (int) ((long) w.index * h / n), y1 = (int) ((long) (w.index + 1) * h / n);
         for (int y = y0; y < y1 && !cancelled; y++) {
-            renderRect(w, 0, y, film.width(), y + 1, firstSample, endSample);
+            renderRect(w, 0, y, film.width(), y + 1, firstSample, endSample, only);
             passGate();
         }
     }
 
-    /** Samples [firstSample, endSample) of every pixel of the rectangle [x0, x1) × [y0, y1). */
-    private void renderRect(SampleLoop.WorkerState w, int x0, int y0, int x1, int y1, int firstSample, int endSample) {
-        if (w.wavefront != null) {
+    /**
+     * Samples [firstSample, endSample) of every pixel of the rectangle [x0, x1) × [y0, y1) (that {@code only} renders, if not null):
+     * through the wavefront where this worker has one and every pixel renders (adaptive sampling's passes render one sample at a time).
+     */
+    private void renderRect(SampleLoop.WorkerState w, int x0, int y0, int x1, int y1, int firstSample, int endSample, NoiseTarget only) {
+        if (w.wavefront != null && only == null) {
             long[] invalid = {0};
             tally.samples.addAndGet(WavefrontLoop.renderRect(w, cameraRays, seed, film, x0, y0, x1, y1, 0, 0, firstSample, endSample, invalid));
             if (invalid[0] > 0) {
@@ -318,6 +324,9 @@ final class RenderWorkers implements Parallel, PassRunner {
             long rowSamples = 0;
             for (int x = x0; x < x1; x++) {
                 int pixel = film.pixelIndex(x, y);
+                if (only != null && !only.renders(pixel)) {
+                    continue;
+                }
                 // a restored film may hold more samples in some pixels: they go on from there
                 int s0 = Math.max(firstSample, film.sampleCountAt(pixel));
                 rowSamples += Math.max(0, endSample - s0);

@@ -2,6 +2,7 @@ package dev.strahl.render;
 
 import java.time.Duration;
 import java.util.Set;
+import java.util.function.Consumer;
 
 /**
  * Every value of a {@link RenderSettings} as a mutable field, for its {@code with...} methods: each
@@ -13,10 +14,11 @@ final class SettingsFields {
     Set<Aov> aovs;
     int samplesPerPixel;
     long seed;
+    double noiseThreshold;
     IntegratorKind integrator;
     int maxDepth, lightSamples;
     HemisphereSampling hemisphere;
-    boolean cullBackFaces, shadows;
+    boolean cullBackFaces, shadows, lightTree;
     PhotonParameters photons;
     int threads, samplesPerPass;
     Duration timeLimit;
@@ -29,6 +31,7 @@ final class SettingsFields {
         aovs = o.aovs();
         samplesPerPixel = s.sampling().samplesPerPixel();
         seed = s.sampling().seed();
+        noiseThreshold = s.sampling().noiseThreshold();
         RenderSettings.Transport t = s.transport();
         integrator = t.integrator();
         maxDepth = t.maxDepth();
@@ -36,6 +39,7 @@ final class SettingsFields {
         hemisphere = t.hemisphere();
         cullBackFaces = t.cullBackFaces();
         shadows = t.shadows();
+        lightTree = t.lightTree();
         photons = t.photons();
         RenderSettings.Execution x = s.execution();
         threads = x.threads();
@@ -45,9 +49,20 @@ final class SettingsFields {
         stripes = x.stripes();
     }
 
+    void size(int w, int h) {
+        width = w;
+        height = h;
+    }
+
+    /** These fields after {@code change}, as settings (each part checks its values). */
+    RenderSettings apply(Consumer<SettingsFields> change) {
+        change.accept(this);
+        return settings();
+    }
+
     RenderSettings settings() {
-        return new RenderSettings(new RenderSettings.Output(width, height, aovs), new RenderSettings.Sampling(samplesPerPixel, seed),
-                new RenderSettings.Transport(integrator, maxDepth, lightSamples, hemisphere, cullBackFaces, shadows, photons),
+        return new RenderSettings(new RenderSettings.Output(width, height, aovs), new RenderSettings.Sampling(samplesPerPixel, seed, noiseThreshold),
+                new RenderSettings.Transport(integrator, maxDepth, lightSamples, hemisphere, cullBackFaces, shadows, lightTree, photons),
                 new RenderSettings.Execution(threads, samplesPerPass, timeLimit, bruteForce, stripes));
     }
 }

@@ -38,7 +38,7 @@ final class UnitRenderers implements UnitService {
         }
         var rays = CameraRays.of(scene.camera(), d.settings.output().width(), d.settings.output().height());
         World world = World.of(scene);
-        Supplier<FeatureTracer> features = d.settings.output().aovs().isEmpty() ? null : () -> new FeatureTracer(world, d.settings.transport().cullBackFaces());
+        Supplier<FeatureTracer> features = d.settings.output().keepsFeatures() ? () -> new FeatureTracer(world, d.settings.transport().cullBackFaces()) : null;
         return new Renderer(integrator, features, rays, d.settings.sampling().seed(), d.stratified);
     }
 
@@ -100,7 +100,7 @@ final class UnitRenderers implements UnitService {
                 double[] sums = unit.sums();
                 double[] state = new double[perPixel];
                 long invalid = 0;
-                if (w.wavefront != null) {
+                if (w.wavefront != null && rendersEveryPixel(unit)) {
                     forEachPixel(unit, (tx, ty, i) -> {
                         System.arraycopy(sums, perPixel * i, state, 0, perPixel);
                         tile.restorePixel(tx, ty, counts[i], state);
@@ -109,27 +109,42 @@ final class UnitRenderers implements UnitService {
                     WavefrontLoop.renderRect(w, rays, seed, tile, 0, 0, unit.width(), unit.height(), unit.x0(), unit.y0(),
                             unit.firstSample(), unit.endSample(), invalidOnes);
                     invalid = invalidOnes[0];
+                    forEachPixel(unit, (tx, ty, i) -> {
+                        counts[i] = tile.pixelState(tx, ty, state);
+                        System.arraycopy(state, 0, sums, perPixel * i, perPixel);
+                    });
                 } else {
                     for (int ty = 0; ty < unit.height(); ty++) {
                         for (int tx = 0; tx < unit.width(); tx++) {
                             int i = ty * unit.width() + tx;
                             System.arraycopy(sums, perPixel * i, state, 0, perPixel);
                             tile.restorePixel(tx, ty, counts[i], state);
+                            if (!unit.renders(i)) {
+                                continue;                              // converged: its state goes back as it came
+                            }
                             int s0 = Math.max(unit.firstSample(), counts[i]);
                             invalid += SampleLoop.samplePixel(w, rays, seed, tile, tile.pixelIndex(tx, ty), unit.x0() + tx, unit.y0() + ty,
                                     s0, unit.endSample());
+                            counts[i] = tile.pixelState(tx, ty, state);
+                            System.arraycopy(state, 0, sums, perPixel * i, perPixel);
                         }
                     }
                 }
-                forEachPixel(unit, (tx, ty, i) -> {
-                    counts[i] = tile.pixelState(tx, ty, state);
-                    System.arraycopy(state, 0, sums, perPixel * i, perPixel);
-                });
                 unit.recordFigures((int) invalid, w.integrator.rayCount() - raysBefore);
             } finally {
                 idle.add(w);
             }
         }
+    }
+
+    /** Whether the unit renders all its pixels (adaptive sampling leaves converged ones out: those units go one sample at a time). */
+    private static boolean rendersEveryPixel(WorkUnit unit) {
+        for (int i = 0; i < unit.width() * unit.height(); i++) {
+            if (!unit.renders(i)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private interface PixelVisitor {

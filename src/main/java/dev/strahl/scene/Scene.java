@@ -178,7 +178,9 @@ public final class Scene {
      * thread-safe. (The lights, the environment and the media are set by the methods of package-private bases.)
      */
     public static final class Builder extends SceneMediaSetters {
-        private final GeometryBuilder geometry = new GeometryBuilder();
+        private final GeometryBuilder base = new GeometryBuilder();
+        private GeometryBuilder geometry = base;      // the scene's own, or the open group's
+        private final SceneGroups groups = new SceneGroups();
         private final List<Material> materials = new ArrayList<>();
         private final Map<Material, Integer> materialIndex = new IdentityHashMap<>();
         private final List<String> notes = new ArrayList<>();
@@ -188,6 +190,10 @@ public final class Scene {
 
         private int indexOf(Material m) {
             Objects.requireNonNull(m, "material");
+            if (groups.open() != null && m.isEmissive()) {
+                throw new IllegalArgumentException("emissive material '" + m.name() + "' in group '" + groups.open()
+                        + "': instanced shapes cannot be lights (place the emitter in the scene itself)");
+            }
             return media.bounding() ? media.slot(m, () -> add(m)) : materialIndex.computeIfAbsent(m, this::add);
         }
 
@@ -286,6 +292,48 @@ public final class Scene {
         }
 
         /**
+         * Starts a group: the shapes added until {@link #endGroup()} are shown only by the instances
+         * that name it ({@link #addInstance}), which share its primitives and BVH. Groups do not
+         * nest and hold no emissive materials (instanced lights are not supported).
+         *
+         * @param name the group's name, unique in the scene
+         * @return this builder
+         * @throws IllegalStateException    if a group is open
+         * @throws IllegalArgumentException if the name is taken
+         */
+        public Builder beginGroup(String name) {
+            geometry = groups.begin(name);
+            return this;
+        }
+
+        /**
+         * Ends the open group: shapes go into the scene itself again.
+         *
+         * @return this builder
+         * @throws IllegalStateException if no group is open
+         */
+        public Builder endGroup() {
+            groups.end();
+            geometry = base;
+            return this;
+        }
+
+        /**
+         * Shows a group moved by a transform, unequal scales and mirrors included (its spheres become
+         * ellipsoids, its normals follow the inverse transpose); its shapes keep their materials.
+         *
+         * @param group     the name of a group begun before
+         * @param transform from the group's coordinates into the scene's
+         * @return this builder
+         * @throws IllegalStateException    if a group is open (groups do not nest)
+         * @throws IllegalArgumentException if no such group was begun
+         */
+        public Builder addInstance(String group, Transform transform) {
+            groups.instance(group, transform);
+            return this;
+        }
+
+        /**
          * The camera; without one, a scene without lights (a bare model) is framed from a raised
          * three-quarter view (azimuth 40° from +Z towards +X, elevation 25°, looking at the centre
          * of the bounds), a scene with lights (often a room open to the front) from +Z, both with a
@@ -311,12 +359,16 @@ public final class Scene {
         }
 
         /**
-         * Builds the scene: concatenates the primitives, builds the BVH and collects the lights.
+         * Builds the scene: concatenates the primitives, builds the BVHs (each group's once) and collects the lights.
          *
          * @return the scene, immutable
+         * @throws IllegalStateException if a group is still open
          */
         public Scene build() {
-            Geometry g = geometry.build();
+            if (groups.open() != null) {
+                throw new IllegalStateException("group '" + groups.open() + "' is never ended");
+            }
+            Geometry g = base.build();
             Bsdf[] bsdfs = new Bsdf[materials.size()];
             Emission[] emission = new Emission[materials.size()];
             SurfaceMaps[] maps = new SurfaceMaps[materials.size()];
@@ -328,7 +380,8 @@ public final class Scene {
             }
             boolean studio = environment == null && punctual.isEmpty() && !anyEmits(g, emission);
             Environment env = environment != null ? environment : studio ? StudioSky.environment() : Environment.BLACK;
-            World world = World.build(g, bsdfs, emission, maps, env, punctual).withMedia(media.build(bsdfs));
+            World world = World.build(g, groups.geometries(), groups.transforms(), bsdfs, emission, maps, env, punctual)
+                    .withMedia(media.build(bsdfs));
             // A bare model (no light) is an object: shown from above at three quarters. A scene with
             // its own lights is often a room made to be seen from its open front (the Cornell Box): +Z.
             Camera cam = camera != null ? camera : studio ? Camera.framing(world.bounds(), 40) : Camera.frontFraming(world.bounds(), 40);

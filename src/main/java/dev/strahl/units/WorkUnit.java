@@ -7,7 +7,7 @@ import java.util.Arrays;
 
 /**
  * One piece of a cluster render: samples [{@code firstSample}, {@code endSample}) of the pixels of
- * one tile, with the state those pixels had before (their sample counts and the film's sums: r, g,
+ * one tile (or of those a mask names: the ones adaptive sampling has not found converged), with the state those pixels had before (their sample counts and the film's sums: r, g,
  * b, squared luminance and, with feature buffers, the feature sums). A
  * member renders it by going on from that state, adding each pixel's samples in index order, and
  * sends the same unit back with the new state. So a unit's result is the very sums the local
@@ -16,7 +16,8 @@ import java.util.Arrays;
  *
  * <p>Wire form (big-endian): int x0, y0, width, height, firstSample, endSample, sums per pixel;
  * int invalid samples, long rays (both 0 on the way out); then either int -1 and one count for
- * every pixel, or the count of every pixel; then the sums as doubles, pixel by pixel, row by row.
+ * every pixel, or the count of every pixel; then int 0 (every pixel takes the samples) or 1 and a byte
+ * per pixel (1 if it takes them); then the sums as doubles, pixel by pixel, row by row.
  */
 public final class WorkUnit {
     /** Largest tile edge a unit may have (a check on what arrives from the network). */
@@ -33,6 +34,8 @@ public final class WorkUnit {
     private final int[] counts;
     private final double[] sums;
     private final int sumsPerPixel;
+    /** Per pixel, row by row: whether it takes the samples; null when every pixel does. */
+    private final boolean[] renders;
     private int invalidSamples;
     private long rays;
 
@@ -49,6 +52,23 @@ public final class WorkUnit {
      * @param sums        per pixel, the same number of sums each (r, g, b first; at most {@value #MAX_SUMS})
      */
     public WorkUnit(int x0, int y0, int width, int height, int firstSample, int endSample, int[] counts, double[] sums) {
+        this(x0, y0, width, height, firstSample, endSample, counts, sums, null);
+    }
+
+    /**
+     * A unit whose samples only some pixels take; the arrays are taken over, not copied.
+     *
+     * @param x0          left column of the tile
+     * @param y0          top row of the tile
+     * @param width       tile width
+     * @param height      tile height
+     * @param firstSample the first sample index to render
+     * @param endSample   one past the last sample index
+     * @param counts      per pixel, row by row within the tile: the samples it holds
+     * @param sums        per pixel, the same number of sums each (r, g, b first; at most {@value #MAX_SUMS})
+     * @param renders     per pixel, row by row: whether it takes the samples; null for every pixel
+     */
+    public WorkUnit(int x0, int y0, int width, int height, int firstSample, int endSample, int[] counts, double[] sums, boolean[] renders) {
         if (width <= 0 || height <= 0 || width > MAX_EDGE || height > MAX_EDGE || x0 < 0 || y0 < 0) {
             throw new IllegalArgumentException("bad unit tile " + x0 + "," + y0 + " " + width + "x" + height);
         }
@@ -59,6 +79,10 @@ public final class WorkUnit {
         if (counts.length != pixels || sums.length % pixels != 0 || sums.length < 3 * pixels || sums.length > MAX_SUMS * pixels) {
             throw new IllegalArgumentException("unit arrays do not fit its tile");
         }
+        if (renders != null && renders.length != pixels) {
+            throw new IllegalArgumentException("unit mask does not fit its tile");
+        }
+        this.renders = renders;
         this.sumsPerPixel = sums.length / pixels;
         this.x0 = x0;
         this.y0 = y0;
@@ -104,6 +128,16 @@ public final class WorkUnit {
         return sums;
     }
 
+    /**
+     * Whether a pixel takes this unit's samples.
+     *
+     * @param i the pixel, row by row within the tile
+     * @return false for a pixel adaptive sampling has found converged
+     */
+    public boolean renders(int i) {
+        return renders == null || renders[i];
+    }
+
     /** How many sums each pixel carries: the film's per-pixel state. */
     public int sumsPerPixel() {
         return sumsPerPixel;
@@ -133,8 +167,8 @@ public final class WorkUnit {
     /** Camera samples this unit adds to its tile (pixels that already hold more add none). */
     public long samples() {
         long n = 0;
-        for (int c : counts) {
-            n += Math.max(0, endSample - Math.max(firstSample, c));
+        for (int i = 0; i < counts.length; i++) {
+            n += renders(i) ? Math.max(0, endSample - Math.max(firstSample, counts[i])) : 0;
         }
         return n;
     }
@@ -142,7 +176,7 @@ public final class WorkUnit {
     /** Bytes of the wire form. */
     public int wireSize() {
         boolean uniform = uniformCount() >= 0;
-        return 8 * 4 + 8 + (uniform ? 8 : 4 * counts.length) + 8 * sums.length;
+        return 8 * 4 + 8 + (uniform ? 8 : 4 * counts.length) + 4 + (renders != null ? renders.length : 0) + 8 * sums.length;
     }
 
     private int uniformCount() {
@@ -172,6 +206,12 @@ public final class WorkUnit {
         } else {
             b.asIntBuffer().put(counts);
             b.position(b.position() + 4 * counts.length);
+        }
+        b.putInt(renders != null ? 1 : 0);
+        if (renders != null) {
+            for (boolean r : renders) {
+                b.put((byte) (r ? 1 : 0));
+            }
         }
         b.asDoubleBuffer().put(sums);
         return bytes;
@@ -209,9 +249,17 @@ public final class WorkUnit {
                 b.asIntBuffer().get(counts);
                 b.position(b.position() + 4 * counts.length);
             }
+            int masked = b.getInt();
+            if (masked != 0 && masked != 1) {
+                throw new IOException("not a work unit (mask flag " + masked + ")");
+            }
+            boolean[] renders = masked == 1 ? new boolean[w * h] : null;
+            for (int i = 0; renders != null && i < renders.length; i++) {
+                renders[i] = b.get() != 0;
+            }
             double[] sums = new double[perPixel * w * h];
             b.asDoubleBuffer().get(sums);
-            WorkUnit unit = new WorkUnit(x0, y0, w, h, first, end, counts, sums);
+            WorkUnit unit = new WorkUnit(x0, y0, w, h, first, end, counts, sums, renders);
             unit.recordFigures(invalid, rays);
             return unit;
         } catch (BufferUnderflowException | IllegalArgumentException e) {

@@ -24,6 +24,10 @@ import java.util.function.Consumer;
  * the {@link LiveDenoiser} hands them over denoised ({@link #acceptDenoised}): once the first
  * denoised frame of a job has come, the newest denoised one is shown, never again a noisy one of
  * that job; before it, and for previews, the noisy frames. Off, the noisy frames again.
+ *
+ * <p>With View → Noise on ({@link #setNoiseView}), a full-resolution frame is shown as the
+ * {@link NoiseHeatMap} of its pixels' relative error, computed from its pass's buffers when it is
+ * handed over (the film still holds that pass then); previews as they are.
  */
 final class FramePresenter implements Consumer<RenderController.Frame>, AutoCloseable {
 
@@ -46,21 +50,64 @@ final class FramePresenter implements Consumer<RenderController.Frame>, AutoClos
     private RenderController.Frame latest;     // guarded by this
     private RenderController.Frame latestDenoised;   // guarded by this
     private boolean denoise;                   // guarded by this: View → Denoise
+    /** View → Noise: the scale of the heat map, or 0 when off (guarded by this). */
+    private double noiseScale;
+    /** The heat map of {@link #latest}, when View → Noise is on and it is no preview (guarded by this). */
+    private BufferedImage latestHeat;
     private volatile double exposure;
     private volatile ToneMapping curve = ToneMapping.CLAMP;
     private volatile Shown shown;
+    /** The heat map {@link #shown} shows, or null for the image (the presenter's thread only). */
+    private BufferedImage shownHeat;
     private final List<Runnable> onShown = new CopyOnWriteArrayList<>();
 
     /** Hands a frame over (from a render thread); returns at once. */
     @Override
     public void accept(RenderController.Frame frame) {
+        double scale;
+        synchronized (this) {
+            if (latest != null && frame.generation() < latest.generation()) {
+                return;
+            }
+            scale = noiseScale;
+        }
+        BufferedImage heat = scale > 0 && !frame.preview()
+                ? frame.buffers().get().map(b -> NoiseHeatMap.of(b.relativeError(), scale)).orElse(null) : null;
         synchronized (this) {
             if (latest != null && frame.generation() < latest.generation()) {
                 return;
             }
             latest = frame;
+            latestHeat = heat;
         }
         schedule();
+    }
+
+    /**
+     * View → Noise: shows the heat map of the remaining relative error against {@code scale} (the
+     * noise threshold, or {@link NoiseHeatMap#DEFAULT_SCALE}) from the next frame on, or (0) the image.
+     */
+    void setNoiseView(double scale) {
+        RenderController.Frame f;
+        synchronized (this) {
+            noiseScale = scale;
+            latestHeat = null;
+            f = latest;
+        }
+        // a held or finished render's film still holds its last pass: its heat map at once
+        BufferedImage heat = scale > 0 && f != null && !f.preview()
+                ? f.buffers().get().map(b -> NoiseHeatMap.of(b.relativeError(), scale)).orElse(null) : null;
+        synchronized (this) {
+            if (latest == f && noiseScale == scale) {
+                latestHeat = heat;
+            }
+        }
+        schedule();
+    }
+
+    /** Whether the heat map is shown (for the status bar and tests). */
+    synchronized boolean noiseView() {
+        return noiseScale > 0;
     }
 
     /** Hands a denoised frame over (from the denoiser's thread); dropped if a newer job's frame has come. */
@@ -146,11 +193,16 @@ final class FramePresenter implements Consumer<RenderController.Frame>, AutoClos
         double e = exposure;
         ToneMapping c = curve;
         Shown s = shown;
-        if (p == null || (s != null && s.frame() == p.frame() && s.exposure() == e && s.curve() == c)) {
+        BufferedImage heat;
+        synchronized (this) {
+            heat = p != null && p.frame() == latest ? latestHeat : null;
+        }
+        if (p == null || (s != null && s.frame() == p.frame() && s.exposure() == e && s.curve() == c && heat == shownHeat)) {
             return;
         }
         RenderController.Frame f = p.frame();
-        shown = new Shown(DisplayEncoding.toBufferedImage(f.image(), e, c), f, e, c, p.denoised());
+        shownHeat = heat;
+        shown = new Shown(heat != null ? heat : DisplayEncoding.toBufferedImage(f.image(), e, c), f, e, c, p.denoised() && heat == null);
         onShown.forEach(Runnable::run);
     }
 

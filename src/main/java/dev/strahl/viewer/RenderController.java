@@ -4,8 +4,8 @@ import dev.strahl.image.Image;
 import dev.strahl.render.Aov;
 import dev.strahl.render.IntegratorKind;
 import dev.strahl.render.RenderJob;
-import dev.strahl.render.RenderListener;
 import dev.strahl.render.RenderSettings;
+import dev.strahl.render.RenderStats;
 import dev.strahl.render.HemisphereSampling;
 import dev.strahl.scene.Scene;
 import java.util.Objects;
@@ -39,22 +39,24 @@ import java.util.function.UnaryOperator;
  */
 final class RenderController {
 
-    /** RUNNING: accumulating; PAUSED: held by the user; DONE: held at the stop-at count; CLOSED: for good. */
+    /** RUNNING: accumulating; PAUSED: held by the user; DONE: held at the stop-at count, or every pixel met the noise threshold; CLOSED: for good. */
     enum State { RUNNING, PAUSED, DONE, CLOSED }
 
     /** Quiet time after the last camera move before full-resolution rendering restarts. */
     static final long SETTLE_MILLIS = 150;
-    /** The preview's film is this many times smaller in each axis. */
-    static final int PREVIEW_DIVISOR = 4;
     /** Stop-at value meaning "never stop". */
     static final int UNLIMITED = 0;
 
     /** One image to show: the mean after {@code samplesPerPixel} samples of job number {@code generation}; its pass's buffers. */
     record Frame(Image image, int samplesPerPixel, boolean preview, long generation, RenderJobs.Buffers buffers) {}
 
-    /** What the status bar shows. {@code seconds} counts only the time the job was not held. */
+    /**
+     * What the status bar shows. {@code seconds} counts only the time the job was not held; {@code converged} is the share of
+     * pixels the noise threshold found converged (0 without one), {@code ended} whether the job ended by itself (all did).
+     */
     record Status(State state, boolean preview, int samplesPerPixel, int stopAt, double seconds, long samples,
-                  int width, int height, IntegratorKind integrator, int maxDepth, HemisphereSampling hemisphere, long generation) {
+                  int width, int height, IntegratorKind integrator, int maxDepth, HemisphereSampling hemisphere, long generation,
+                  double noiseThreshold, double converged, boolean ended) {
         double samplesPerSecond() {
             return seconds > 0 ? samples / seconds : 0;
         }
@@ -75,6 +77,9 @@ final class RenderController {
     private RenderJobs.Job job;
     private boolean preview;
     private int samplesPerPixel;
+    private double converged;
+    /** The job ended by itself: every pixel met the noise threshold. */
+    private boolean ended;
     private int passes;
     private boolean cameraPending;
     private boolean glance;
@@ -132,7 +137,7 @@ final class RenderController {
             state = State.PAUSED;
             hold();
         } else if (state == State.PAUSED) {
-            state = reachedStop() ? State.DONE : State.RUNNING;
+            state = reachedStop() || ended ? State.DONE : State.RUNNING;
             if (state == State.RUNNING) {
                 goOn();
             }
@@ -147,34 +152,27 @@ final class RenderController {
     /** Samples per pixel at which to hold, or {@link #UNLIMITED}; raising it continues a finished render. */
     synchronized void setStopAt(int n) {
         stopAt = ViewerOptions.checkStopAt(n);
-        if (state == State.DONE && !reachedStop()) {
+        if (state == State.DONE && !reachedStop() && !ended) {
             state = State.RUNNING;
             goOn();
         }
     }
 
-    synchronized void setMaxDepth(int maxDepth) {
-        changeSettings(settings.withMaxDepth(maxDepth));
-    }
-
-    synchronized void setHemisphere(HemisphereSampling hemisphere) {
-        changeSettings(settings.withHemisphere(hemisphere));
-    }
-
-    synchronized void setIntegrator(IntegratorKind integrator) {
-        changeSettings(SceneIntegrators.supported(scene, settings.withIntegrator(integrator)));
-    }
-
-    /** The feature buffers full-resolution jobs keep (View → Denoise adds its guides); previews keep none. */
-    synchronized void setAovs(Set<Aov> aovs) {
-        changeSettings(settings.withAovs(aovs));
-    }
-
-    private void changeSettings(RenderSettings s) {
+    /**
+     * Changes a setting (the integrator, depth, hemisphere sampling, noise threshold of the toolbar):
+     * a render with other settings starts again, unless {@code edit} changes nothing.
+     */
+    synchronized void change(UnaryOperator<RenderSettings> edit) {
+        RenderSettings s = SceneIntegrators.supported(scene, edit.apply(settings));
         if (!s.equals(settings)) {
             settings = s;
             renderAgain();
         }
+    }
+
+    /** The feature buffers full-resolution jobs keep (View → Denoise adds its guides); previews keep none. */
+    synchronized void setAovs(Set<Aov> aovs) {
+        change(s -> s.withAovs(aovs));
     }
 
     /**
@@ -195,17 +193,11 @@ final class RenderController {
      * @return the new focus distance, or NaN if nothing was hit
      */
     synchronized double focusAt(double fx, double fy) {
-        double d = scene.focusDistance(view.orbit().toCamera(), fx, fy, (double) settings.output().width() / settings.output().height());
+        double d = view.focusAt(scene, fx, fy, (double) settings.output().width() / settings.output().height());
         if (d > 0) {
-            view.focus(d);
             renderAgain();
         }
         return d;
-    }
-
-    /** The thin lens in use: {aperture, focus distance}. */
-    synchronized double[] lens() {
-        return view.lens();
     }
 
     /** Moves the camera (orbit, pan, dolly): preview now, full resolution once the moves stop. */
@@ -243,10 +235,11 @@ final class RenderController {
     /** What the status bar shows now. */
     synchronized Status status() {
         long samples = job != null ? job.samplesDone() : 0;
-        int w = preview ? previewSize(settings.output().width()) : settings.output().width();
-        int h = preview ? previewSize(settings.output().height()) : settings.output().height();
+        int w = preview ? RenderJobs.previewSize(settings.output().width()) : settings.output().width();
+        int h = preview ? RenderJobs.previewSize(settings.output().height()) : settings.output().height();
         return new Status(state, preview, samplesPerPixel, stopAt, clock.seconds(), samples, w, h, settings.transport().integrator(),
-                settings.transport().maxDepth(), settings.transport().hemisphere(), generation);
+                settings.transport().maxDepth(), settings.transport().hemisphere(), generation, settings.sampling().noiseThreshold(),
+                converged, ended);
     }
 
     synchronized OrbitCamera camera() {
@@ -305,24 +298,17 @@ final class RenderController {
         preview = previewJob;
         glance = mode == Mode.GLANCE;
         samplesPerPixel = 0;
+        converged = 0;
+        ended = false;
         passes = 0;
         cameraPending = false;
         clock.restart();
         if (state == State.DONE) {
             state = State.RUNNING;
         }
-        RenderSettings s = settings.withTimeLimit(java.time.Duration.ZERO);
-        if (previewJob) {
-            s = s.withSize(previewSize(s.output().width()), previewSize(s.output().height())).withAovs(Set.of());   // never denoised
-        }
-        s = s.withSamplesPerPixel(Integer.MAX_VALUE).withSamplesPerPass(1);
         long g = generation;
-        job = starter.start(scene.withCamera(view.camera()), s, new RenderListener() {
-            @Override
-            public void passCompleted(int spp, Image image) {
-                onPass(g, spp, image);
-            }
-        });
+        job = starter.start(scene.withCamera(view.camera()), RenderJobs.settings(settings, previewJob),
+                RenderJobs.listener(g, this::onPass, this::onConvergence));
     }
 
     /** Unless closed: a glance at the change, then full resolution from the first sample. */
@@ -330,10 +316,6 @@ final class RenderController {
         if (state != State.CLOSED) {
             startJob(Mode.GLANCE);
         }
-    }
-
-    static int previewSize(int size) {
-        return Math.max(1, Math.round(size / (float) PREVIEW_DIVISOR));
     }
 
     /** Called by job {@code g}'s coordinator thread after each pass; pauses the job while the viewer holds. */
@@ -371,6 +353,19 @@ final class RenderController {
             if (holds()) {
                 hold();
             }
+        }
+    }
+
+    /** Job {@code g}'s share of converged pixels; {@code end}: it ended by itself, every pixel met the noise threshold. */
+    private synchronized void onConvergence(long g, RenderStats stats, boolean end) {
+        if (g != generation) {
+            return;
+        }
+        converged = stats.convergedFraction();
+        if (end && !preview && !glance && state != State.CLOSED) {
+            ended = true;
+            state = state == State.PAUSED ? state : State.DONE;
+            clock.stop();
         }
     }
 

@@ -43,7 +43,7 @@ final class SceneFiles {
         Path f = file != null ? file : defaultScene();
         SceneFile loaded = SceneFile.load(f);
         RenderSettings settings = options.settingsFor(loaded.settings());
-        filmCheck.check(settings.output().width(), settings.output().height(), !settings.output().aovs().isEmpty());
+        filmCheck.check(settings.output().width(), settings.output().height(), settings.output().keepsFeatures());
         return new Opened(f, options.overrides().applyTo(loaded.scene()), settings);
     }
 

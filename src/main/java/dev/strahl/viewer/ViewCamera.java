@@ -1,6 +1,7 @@
 package dev.strahl.viewer;
 
 import dev.strahl.scene.Camera;
+import dev.strahl.scene.Scene;
 import java.util.function.UnaryOperator;
 
 /**
@@ -36,13 +37,18 @@ final class ViewCamera {
         focusDistance = sceneCamera.focusDistance();
     }
 
-    void focus(double distance) {
-        focusDistance = distance;
-    }
-
-    /** The thin lens in use: {aperture, focus distance}. */
-    double[] lens() {
-        return new double[] {sceneCamera.aperture(), focusDistance};
+    /**
+     * Focuses on the surface of {@code scene} under a point of the image (fractions of its width and
+     * height from the top left, at this aspect), as the orbit camera sees it.
+     *
+     * @return the new focus distance, or NaN (nothing changes) where no surface is hit
+     */
+    double focusAt(Scene scene, double fx, double fy, double aspect) {
+        double d = scene.focusDistance(orbit.toCamera(), fx, fy, aspect);
+        if (d > 0) {
+            focusDistance = d;
+        }
+        return d;
     }
 
     /** The camera the render sees through: the orbit camera with the lens. */

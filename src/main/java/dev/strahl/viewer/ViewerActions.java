@@ -54,6 +54,10 @@ final class ViewerActions {
     final Action normalExposure;
     /** View → Denoise, a check box: its {@link Action#SELECTED_KEY} is the state. */
     final Action denoise;
+    /** View → Noise, a check box: the heat map of the remaining relative error instead of the image. */
+    final Action noiseView;
+    /** The noise threshold of adaptive sampling (0: off). */
+    final Choice<Double> noiseThreshold;
     final Action controls;
     final Action quit;
     final Choice<IntegratorKind> integrator;
@@ -85,17 +89,36 @@ final class ViewerActions {
                 + " normal and depth buffers)", KeyStroke.getKeyStroke(KeyEvent.VK_N, 0),
                 e -> setDenoise(denoiseChecked()));
         denoise.putValue(Action.SELECTED_KEY, false);
+        noiseView = action("Noise", null, "Show a heat map of each pixel's remaining relative error: blue to cyan has met the noise"
+                + " threshold (or 1 % without one), yellow to red has not", KeyStroke.getKeyStroke(KeyEvent.VK_E, 0), e -> showNoise());
+        noiseView.putValue(Action.SELECTED_KEY, false);
         controls = action("Controls", null, "Mouse and keyboard controls", KeyStroke.getKeyStroke(KeyEvent.VK_F1, 0),
                 e -> JOptionPane.showMessageDialog(root, CONTROLS, "strahl viewer: controls", JOptionPane.PLAIN_MESSAGE));
         quit = action("Quit", null, "Close the viewer", KeyStroke.getKeyStroke(KeyEvent.VK_Q, menuMask()), e -> onQuit.run());
 
         integrator = new Choice<>(List.of(IntegratorKind.values()), controller.settings().transport().integrator(), null, IntegratorKind::id,
-                controller::setIntegrator);
-        maxDepth = new Choice<>(DEPTHS, controller.settings().transport().maxDepth(), DEPTH_ORDER, StatusBar::depthText, controller::setMaxDepth);
+                i -> controller.change(s -> s.withIntegrator(i)));
+        maxDepth = new Choice<>(DEPTHS, controller.settings().transport().maxDepth(), DEPTH_ORDER, StatusBar::depthText,
+                d -> controller.change(s -> s.withMaxDepth(d)));
         hemisphere = new Choice<>(List.of(HemisphereSampling.values()), controller.settings().transport().hemisphere(), null,
-                h -> h.name().toLowerCase(Locale.ROOT), controller::setHemisphere);
+                h -> h.name().toLowerCase(Locale.ROOT), h -> controller.change(s -> s.withHemisphere(h)));
         stopAt = new Choice<>(STOP_AT, controller.stopAt(), STOP_AT_ORDER,
                 n -> n == RenderController.UNLIMITED ? "never" : n + " spp", controller::setStopAt);
+        noiseThreshold = new Choice<>(THRESHOLDS, controller.settings().sampling().noiseThreshold(), THRESHOLD_ORDER,
+                t -> t == 0 ? "off" : StatusBar.percent(t), t -> {
+                    controller.change(s -> s.withNoiseThreshold(t));
+                    showNoise();
+                });
+    }
+
+    /** Noise thresholds offered, "off" first, then tighter and tighter. */
+    static final List<Double> THRESHOLDS = List.of(0.0, 0.1, 0.05, 0.02, 0.01, 0.005);
+    static final Comparator<Double> THRESHOLD_ORDER = Comparator.comparingDouble(t -> t == 0 ? Double.MAX_VALUE : -t);
+
+    /** Shows the heat map (View → Noise) against the threshold in use, or the image. */
+    private void showNoise() {
+        double t = controller.settings().sampling().noiseThreshold();
+        presenter.setNoiseView(Boolean.TRUE.equals(noiseView.getValue(Action.SELECTED_KEY)) ? (t > 0 ? t : NoiseHeatMap.DEFAULT_SCALE) : 0);
     }
 
     private static final String CONTROLS = """
@@ -112,6 +135,7 @@ final class ViewerActions {
             <tr><td><b>T / Shift+T</b></td><td>next / previous stop-at count</td></tr>
             <tr><td><b>+ / − / 0</b></td><td>exposure up / down / back to 0 (display only)</td></tr>
             <tr><td><b>N</b></td><td>denoise on / off</td></tr>
+            <tr><td><b>E</b></td><td>noise heat map on / off</td></tr>
             <tr><td><b>Ctrl+O / Ctrl+S / Ctrl+Q</b></td><td>open scene / save image / quit</td></tr>
             </table></html>""";
 
@@ -208,6 +232,8 @@ final class ViewerActions {
         render.add(tip(maxDepth.menu("Max depth", KeyEvent.VK_D), "D / Shift+D: next / previous max depth"));
         render.add(tip(hemisphere.menu("Hemisphere sampling", KeyEvent.VK_H), "H switches between cosine and uniform"));
         render.add(tip(stopAt.menu("Stop at", KeyEvent.VK_S), "T / Shift+T: next / previous stop-at count"));
+        render.add(tip(noiseThreshold.menu("Noise threshold", KeyEvent.VK_N), "Adaptive sampling: each pixel renders until its relative"
+                + " error meets it"));
         bar.add(render);
 
         JMenu view = new JMenu("View");
@@ -222,6 +248,9 @@ final class ViewerActions {
         JCheckBoxMenuItem denoiseItem = new JCheckBoxMenuItem(denoise);
         denoiseItem.setToolTipText(null);
         view.add(denoiseItem);
+        JCheckBoxMenuItem noiseItem = new JCheckBoxMenuItem(noiseView);
+        noiseItem.setToolTipText(null);
+        view.add(noiseItem);
         bar.add(view);
 
         JMenu help = new JMenu("Help");
@@ -282,6 +311,8 @@ final class ViewerActions {
         bar.add(maxDepth.comboBox("depth ", "Max depth: path segments including the camera segment (D, Shift+D)"));
         bar.add(hemisphere.comboBox("", "Hemisphere sampling of diffuse bounces: cosine or uniform (H)"));
         bar.add(stopAt.comboBox("stop at ", "Hold rendering at this many samples per pixel (T, Shift+T)"));
+        bar.add(noiseThreshold.comboBox("noise ", "Adaptive sampling: samples go where the noise is, and a pixel stops once the relative"
+                + " standard error of it and its neighbours is at most this (off: every pixel alike)"));
         bar.addSeparator();
         bar.add(button(darker));
         exposureLabel.setToolTipText("Display exposure in stops: display only, rendering goes on (+, −, 0)");

@@ -2,8 +2,13 @@ package dev.strahl.world;
 
 import dev.strahl.accel.Aggregate;
 import dev.strahl.accel.Bvh;
+import dev.strahl.accel.TwoLevelBvh;
 import dev.strahl.geometry.Aabb;
 import dev.strahl.geometry.Geometry;
+import dev.strahl.geometry.Hit;
+import dev.strahl.geometry.InstanceTransforms;
+import dev.strahl.geometry.Ray;
+import dev.strahl.geometry.SurfacePoint;
 import dev.strahl.light.Emission;
 import dev.strahl.light.Environment;
 import dev.strahl.light.LightSampler;
@@ -74,6 +79,14 @@ public final class World {
     }
 
     /**
+     * Teaching option ({@code --light-selection power}): this world with its lights chosen by
+     * power alone instead of by the light tree ({@link LightSampler#byPower()}); everything else shared.
+     */
+    public World lightsByPower() {
+        return new World(geometry, bvh, lights.byPower(), bsdfs, emission, maps, environment, punctualLights, bvhBuildSeconds, media);
+    }
+
+    /**
      * Builds the BVH over {@code geometry} and the light sampler over its emissive primitives.
      *
      * @param geometry    every primitive, material indices into the tables
@@ -88,8 +101,23 @@ public final class World {
         if (bsdfs.length != emission.length || bsdfs.length != maps.length) {
             throw new IllegalArgumentException(bsdfs.length + " BSDFs for " + emission.length + " emissions and " + maps.length + " maps");
         }
+        return build(geometry, List.of(), InstanceTransforms.NONE, bsdfs, emission, maps, environment, punctual);
+    }
+
+    /**
+     * {@link #build(Geometry, Bsdf[], Emission[], SurfaceMaps[], Environment, List)} with instances:
+     * {@code groups} are geometries not rendered by themselves, each shown by the instances that
+     * name it, through a two-level BVH ({@link TwoLevelBvh}); without instances the scene's
+     * primitives get a plain {@link Bvh}. Groups hold no emitters (the light sampler knows the
+     * scene's own primitives only): {@code Scene.Builder} refuses them.
+     */
+    public static World build(Geometry geometry, List<Geometry> groups, InstanceTransforms instances, Bsdf[] bsdfs, Emission[] emission,
+                              SurfaceMaps[] maps, Environment environment, List<PunctualLight> punctual) {
+        if (bsdfs.length != emission.length || bsdfs.length != maps.length) {
+            throw new IllegalArgumentException(bsdfs.length + " BSDFs for " + emission.length + " emissions and " + maps.length + " maps");
+        }
         long start = System.nanoTime();
-        Aggregate bvh = Bvh.build(geometry);
+        Aggregate bvh = instances.count() == 0 ? Bvh.build(geometry) : TwoLevelBvh.build(geometry, groups, instances);
         double seconds = (System.nanoTime() - start) * 1e-9;
         // The BVH hands back the same primitives reordered into its leaves: hits refer to those.
         return new World(bvh.geometry(), bvh, bsdfs.clone(), emission.clone(), maps.clone(), Objects.requireNonNull(environment),
@@ -170,9 +198,87 @@ public final class World {
         return cutouts;
     }
 
-    /** The bounds of every primitive. */
+    /** The bounds of every primitive, the instances' included. */
     public Aabb bounds() {
-        return geometry.bounds();
+        Aabb box = geometry.bounds();
+        if (bvh instanceof TwoLevelBvh two) {
+            Aabb[] groupBoxes = new Aabb[two.groupCount()];
+            for (int g = 0; g < groupBoxes.length; g++) {
+                groupBoxes[g] = two.groupGeometry(g).bounds();
+            }
+            Aabb moved = new Aabb();
+            for (int i = 0; i < two.instances().count(); i++) {
+                box.include(two.instances().bounds(i, groupBoxes[two.instances().group(i)], moved));
+            }
+        }
+        return box;
+    }
+
+    /**
+     * Fills {@code sp} with the surface data of a hit of {@link #bvh()}: as
+     * {@link Geometry#surface} for the scene's own primitives; for a hit in an instance, the
+     * group's surface at the hit, moved into world coordinates (points and tangents by the
+     * instance's matrix, normals by its inverse transpose; a mirror flips the tangent frame's
+     * handedness, as it reverses a mirrored mesh's winding). Allocates nothing.
+     */
+    public void surface(Ray ray, Hit hit, SurfacePoint sp) {
+        if (hit.instance < 0) {
+            geometry.surface(ray, hit, sp);
+            return;
+        }
+        TwoLevelBvh two = (TwoLevelBvh) bvh;
+        InstanceTransforms inst = two.instances();
+        int i = hit.instance;
+        Geometry group = two.groupGeometry(inst.group(i));
+        if (!group.isTriangle(hit.prim)) {
+            inst.pointToObject(i, ray.at(hit.t, sp.p));
+        }
+        group.surfaceAt(hit, sp);
+        inst.pointToWorld(i, sp.p);
+        inst.normalToWorld(i, sp.ng);
+        inst.normalToWorld(i, sp.n);
+        inst.vectorToWorld(i, sp.dpdu);
+        if (inst.mirrors(i)) {
+            sp.tangentSign = -sp.tangentSign;
+        }
+    }
+
+    /** The instances' placements ({@link InstanceTransforms#NONE} without instances). */
+    public InstanceTransforms instances() {
+        return bvh instanceof TwoLevelBvh two ? two.instances() : InstanceTransforms.NONE;
+    }
+
+    /** Triangles stored: the scene's own and each group's once. */
+    public long uniqueTriangles() {
+        long n = geometry.triangleCount();
+        if (bvh instanceof TwoLevelBvh two) {
+            for (int g = 0; g < two.groupCount(); g++) {
+                n += two.groupGeometry(g).triangleCount();
+            }
+        }
+        return n;
+    }
+
+    /** Triangles as rendered: the scene's own and each instance's group's. */
+    public long instancedTriangles() {
+        long n = geometry.triangleCount();
+        if (bvh instanceof TwoLevelBvh two) {
+            for (int i = 0; i < two.instances().count(); i++) {
+                n += two.groupGeometry(two.instances().group(i)).triangleCount();
+            }
+        }
+        return n;
+    }
+
+    /** Feeds the primitives, the groups and the instances' placements into {@code md} (a checkpoint's tie to its scene). */
+    public void digest(java.security.MessageDigest md) {
+        geometry.digest(md);
+        if (bvh instanceof TwoLevelBvh two) {
+            for (int g = 0; g < two.groupCount(); g++) {
+                two.groupGeometry(g).digest(md);
+            }
+            two.instances().digest(md);
+        }
     }
 
     /** How long building the BVH took. */
@@ -180,8 +286,14 @@ public final class World {
         return bvhBuildSeconds;
     }
 
-    /** Bytes held by the primitive and node arrays. */
+    /** Bytes held by the primitive and node arrays (each group's once), and the instances' matrices. */
     public long byteSize() {
-        return geometry.byteSize() + bvh.byteSize();
+        long groups = 0;
+        if (bvh instanceof TwoLevelBvh two) {
+            for (int g = 0; g < two.groupCount(); g++) {
+                groups += two.groupGeometry(g).byteSize();
+            }
+        }
+        return geometry.byteSize() + groups + bvh.byteSize();
     }
 }

@@ -268,6 +268,31 @@ class ClusterTest {
         }
     }
 
+    /**
+     * A noise threshold on the cluster: the image and the sample counts are the local render's
+     * bits, and a tile whose pixels have all converged is not handed out again. With a field of
+     * view of 80° the box fills the middle column of tiles and the four tiles beside it are black,
+     * done at the first decision: fewer units than every tile in every pass.
+     */
+    @Test
+    @Order(4)
+    void adaptiveSamplingIsBitIdenticalAndConvergedTilesAreNotHandedOutAgain() throws Exception {
+        String[] opts = {"--spp", "512", "--noise-threshold", "0.2", "--aov", "spp", "--fov", "80"};
+        byte[] local = local(SCENE, "ad-local.pfm", opts);
+        Path stats = dir.resolve("ad.json");
+        Run r = onCluster(SCENE, "ad-cluster.pfm", "--spp", "512", "--noise-threshold", "0.2", "--aov", "spp", "--fov", "80",
+                "--stats", stats.toString());
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(Files.readAllBytes(dir.resolve("ad-cluster.pfm"))).as("image").isEqualTo(local);
+        assertThat(Files.readAllBytes(dir.resolve("ad-cluster.spp.pfm"))).as("samples per pixel")
+                .isEqualTo(Files.readAllBytes(dir.resolve("ad-local.spp.pfm")));
+        String json = Files.readString(stats);
+        Matcher passes = Pattern.compile("\"passes\" : (\\d+)").matcher(json);
+        assertThat(passes.find()).isTrue();
+        long units = sum(StatsFileTest.members(stats), "units");
+        assertThat(units).as("units of %s passes over 3 x 2 tiles", passes.group(1)).isLessThanOrEqualTo(2L * Integer.parseInt(passes.group(1)) + 4 * 6);
+    }
+
     @Test
     @Order(4)
     void aTimeLimitAndCtrlCEndAClusterRenderWithTheImageSoFar() throws Exception {

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import dev.strahl.codec.ImageLimits;
+import dev.strahl.denoise.net.NeuralDenoiser;
 import dev.strahl.film.Film;
 import org.junit.jupiter.api.Test;
 
@@ -71,7 +72,11 @@ class HeapCheckTest {
         long plain = HeapCheck.renderBytes(w, h, false, false);
         assertThat(HeapCheck.renderBytes(w, h, true, false) - plain).isEqualTo((56 + HeapCheck.FEATURE_BYTES_PER_PIXEL) * pixels);
         assertThat(HeapCheck.renderBytes(w, h, true, true) - HeapCheck.renderBytes(w, h, true, false))
-                .isEqualTo(HeapCheck.DENOISE_BYTES_PER_PIXEL * pixels);
+                .isEqualTo(Math.max(HeapCheck.DENOISE_BYTES_PER_PIXEL * pixels, NeuralDenoiser.create().bytesNeeded(w, h)));
+        // the network's tile: 680 bytes a pixel of the whole (padded) image while it fits in one tile, more than the filter's
+        assertThat(HeapCheck.denoiseBytes(100, 60)).isEqualTo(680L * 112 * 64 + 24 * 6000);
+        // a large image: the filter's buffers, the network's tiles being bounded
+        assertThat(HeapCheck.denoiseBytes(8192, 8192)).isEqualTo(HeapCheck.DENOISE_BYTES_PER_PIXEL * 8192 * 8192);
         assertThat(Film.bytesNeeded(w, h, true) - Film.bytesNeeded(w, h, false)).as("the film's feature sums").isEqualTo(56 * pixels);
         // 4096² fits in 2 GiB without feature buffers, not with them and the denoiser
         HeapCheck.checkRender(4096, 4096, false, false, 2 * GIB, () -> 0, () -> { });

@@ -190,6 +190,7 @@ class RenderCommandTest {
             Arguments.of(List.of("--accel", "kdtree"), List.of("--accel", "'kdtree'")),
             Arguments.of(List.of("--schedule", "rows"), List.of("--schedule", "'rows'")),
             Arguments.of(List.of("--frobnicate"), List.of("Unknown option: '--frobnicate'")),
+            Arguments.of(List.of("--denoise", "--denoiser", "fast"), List.of("--denoiser must be network, atrous or oidn, got 'fast'")),
             Arguments.of(List.of("--max-dpeth", "3"), List.of("'--max-dpeth'", "did you mean --max-depth")));
     }
 
@@ -292,6 +293,18 @@ class RenderCommandTest {
     @Test
     void quietStillReportsErrors() throws IOException {
         assertRefused(render(CORNELL, out.resolve("a.png"), "-q", "--spp", "0"), "samples per pixel");
+    }
+
+    @Test
+    void denoiseUsesTheNetworkUnlessTheFilterIsAskedFor() throws IOException {
+        Path net = out.resolve("net.pfm");
+        Run r = render(CORNELL, net, "--denoise");
+        assertThat(r.code()).isZero();
+        assertThat(r.errLines()).last().asString().startsWith("strahl: denoised with Open Image Denoise's network in ");
+        Image filter = renderPfm(CORNELL, "atrous.pfm", "--denoise", "--denoiser", "atrous");
+        Image oldName = renderPfm(CORNELL, "strahl.pfm", "--denoise", "--denoiser", "strahl");
+        assertThat(oldName.rgb()).as("strahl: the filter's old name").isEqualTo(filter.rgb());
+        assertThat(PfmReader.read(net).rgb()).isNotEqualTo(filter.rgb());
     }
 
     @Test

@@ -36,7 +36,7 @@ class SceneFileOptionsTest {
         assertThat(view.options().given()).contains(Setting.AOVS);
         cl.parseArgs("view", "s.json", "--aov", "albedo,variance");
         ViewCommand bad = cl.getSubcommands().get("view").getCommand();
-        assertThatThrownBy(bad::options).hasMessage("--aov: unknown feature buffer 'variance': use albedo, normal or depth");
+        assertThatThrownBy(bad::options).hasMessage("--aov: unknown feature buffer 'variance': use albedo, normal, depth or spp");
     }
 
     /** --envmap, --aperture and --focus-distance: on both commands, from the one shared definition. */

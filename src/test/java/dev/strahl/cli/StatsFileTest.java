@@ -53,7 +53,7 @@ class StatsFileTest {
         }
     }
 
-    private static final RenderStats STATS = new RenderStats(2.0, 96 * 64 * 12, 200_000, 12, 1, false, 0, 0, 3, List.of());
+    private static final RenderStats STATS = new RenderStats(2.0, 96 * 64 * 12, 200_000, 12, 1, false, 0, 0, 3, 12, 12, 12, 0, List.of());
     private static final RenderSettings SETTINGS = RenderSettings.defaults().withSize(96, 64).withSamplesPerPixel(12);
 
     @Test
@@ -93,6 +93,6 @@ class StatsFileTest {
 
     private static RenderStats withMembers(RenderStats s, List<RenderStats.Member> members) {
         return new RenderStats(s.seconds(), s.samples(), s.rays(), s.samplesPerPixel(), s.threads(), s.cancelled(), s.invalidSamples(),
-                s.threadIdleSeconds(), s.passes(), members);
+                s.threadIdleSeconds(), s.passes(), s.minSamplesPerPixel(), s.meanSamplesPerPixel(), s.maxSamplesPerPixel(), s.convergedFraction(), members);
     }
 }

@@ -47,7 +47,7 @@ class ViewCommandTest {
 
         ViewerOptions all = parse("view", "--width", "300", "--height", "200", "--max-depth", "4", "--hemisphere", "uniform",
                 "--seed", "3", "--integrator", "direct", "--light-samples", "2", "--photons", "7000", "--photon-radius", "0.5",
-                "--aov", "depth");
+                "--aov", "depth", "--noise-threshold", "0.02");
         assertThat(all.given()).as("every scene-file setting but spp: view's --spp is the stop-at count, not the file's spp")
                 .isEqualTo(EnumSet.complementOf(EnumSet.of(Setting.SAMPLES_PER_PIXEL)));
         assertThat(all.settings().transport().hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
@@ -55,6 +55,7 @@ class ViewCommandTest {
         assertThat(all.settings().transport().photons().photonsPerIteration()).isEqualTo(7000);
         assertThat(all.settings().transport().photons().initialRadius()).isEqualTo(0.5);
         assertThat(all.settings().output().aovs()).containsExactly(dev.strahl.render.Aov.DEPTH);
+        assertThat(all.settings().sampling().noiseThreshold()).isEqualTo(0.02);
         assertThat(all.scene()).isNull();
 
         assertThat(parse("view", "--max-depth", "-1").given()).as("given at its default value is still given")

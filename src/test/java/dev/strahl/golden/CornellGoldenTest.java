@@ -67,6 +67,20 @@ class CornellGoldenTest {
         assertThat(judged.stream().filter(n -> n.startsWith("tallBox("))).hasSizeGreaterThanOrEqualTo(2);
     }
 
+    /**
+     * Adaptive sampling keeps every face's mean within the same 1 % of the reference: a noise
+     * threshold of 3 % (at most {@value #SPP} spp) stops pixels early where they are clean, and the
+     * relMSE stays below T², the noise the threshold allows.
+     */
+    @Test
+    void aNoiseThresholdKeepsEveryFaceWithinTheTolerance() {
+        double t = 0.03;
+        RenderSettings settings = RenderSettings.defaults().withSize(SIZE, SIZE).withSamplesPerPixel(SPP).withSeed(1).withNoiseThreshold(t);
+        Image adaptive = Renders.render(scene, settings);
+        Image ref = Golden.reference("cornell-original_maxdepth-inf_128.pfm");
+        Golden.assertClose(adaptive, ref, regions, REGION_TOLERANCE, t * t, "cornell-original adaptive");
+    }
+
     /** A 2 % change of any single face's brightness must fail the comparison. */
     @Test
     void twoPercentChangeOfAnyFaceFails() {

@@ -50,10 +50,14 @@ class FurnaceTest {
         }
     }
 
+    /**
+     * 256 spp: at 64 the image means of seeds 3..6 spread ±0.035 around 5 (by the light tree as by
+     * power: 4.945, 5.008, 5.030, 4.997 and 4.960, 5.008, 5.025, 4.997), too close to the 1 % bound.
+     */
     @Test
     void uniformHemisphereSamplingConvergesToTheSameFurnace() {
         Scene scene = closedFurnace(0.8);
-        Image img = Renders.render(scene, settings(-1, 64).withHemisphere(HemisphereSampling.UNIFORM));
+        Image img = Renders.render(scene, settings(-1, 256).withHemisphere(HemisphereSampling.UNIFORM));
         assertThat(img.mean()[1]).isCloseTo(5.0, within(0.05));
     }
 

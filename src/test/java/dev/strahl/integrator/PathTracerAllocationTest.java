@@ -20,13 +20,14 @@ import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * The per-sample loop allocates nothing (STYLE.md habit 4): once compiled, tracing paths through
- * the Cornell Box (BVH traversal, shading, light sampling, the stratified sampler) leaves the
+ * the Cornell Box (BVH traversal, shading, light sampling, the stratified sampler), and through
+ * instances (rays moved into each one's coordinates, hits moved back), leaves the
  * thread's allocated-bytes counter where it was.
  */
 class PathTracerAllocationTest {
 
     @ParameterizedTest
-    @ValueSource(strings = {"scenes/cornell-box.json", "src/test/resources/golden/envmap-sphere.json"})
+    @ValueSource(strings = {"scenes/cornell-box.json", "src/test/resources/golden/envmap-sphere.json", "src/test/resources/golden/instances.json"})
     void radianceAllocatesNothingPerSample(String file) throws Exception {
         Scene scene = SceneLoader.load(Path.of(file));
         Integrator.Worker worker = new PathTracer(World.of(scene), -1, false, false, PathTracer.Strategy.MIS).newWorker();

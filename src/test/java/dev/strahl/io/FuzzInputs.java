@@ -150,7 +150,7 @@ final class FuzzInputs {
         Arbitrary<String> film = Combinators.combine(Arbitraries.of("width", "height", "depth"), Arbitraries.of("1", "2", "0", "-1", "8",
                 "1e9", "1.5", "\"x\"")).as((k, v) -> "\"" + k + "\": " + v).list().ofMaxSize(3).map(l -> "{" + String.join(", ", l) + "}");
         Arbitrary<String> integrator = Combinators.combine(Arbitraries.of("type", "spp", "maxDepth", "seed", "lightSamples", "hemisphere",
-                        "photons", "photonRadius"),
+                        "photons", "photonRadius", "noiseThreshold"),
                 Arbitraries.of("\"path\"", "\"direct\"", "\"whitted\"", "\"photon\"", "\"cosine\"", "\"uniform\"", "1", "0", "-1", "-2",
                         "4", "1e10", "2.5", "9223372036854775808")).as((k, v) -> "\"" + k + "\": " + v).list().ofMaxSize(4)
                 .map(l -> "{" + String.join(", ", l) + "}");

@@ -16,6 +16,8 @@ import java.util.SplittableRandom;
 import org.joml.Vector3d;
 import org.joml.Vector3dc;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * Light selection, the solid-angle density of light sampling seen from a point, one-sidedness and
@@ -28,7 +30,7 @@ import org.junit.jupiter.api.Test;
  */
 class LightSamplerTest {
     /** Chi-square tests in this class; together they keep a 1 % false-alarm level. */
-    private static final double ALPHA = ChiSquare.sidak(0.01, 3);
+    private static final double ALPHA = ChiSquare.sidak(0.01, 4);
 
     private static final Rgb[] EMISSION = {
         Rgb.BLACK,                  // 0: not a light
@@ -105,7 +107,7 @@ class LightSamplerTest {
         SplittableRandom random = new SplittableRandom(1);
         for (int i = 0; i < n; i++) {
             scratch.prim = -1;
-            lights.sample(ORIGIN, (i + 0.5) / n, random.nextDouble(), random.nextDouble(), false, scratch, out);
+            lights.sample(ORIGIN, null, (i + 0.5) / n, random.nextDouble(), random.nextDouble(), false, scratch, out);
             assertThat(scratch.prim).as("a primitive was chosen").isNotNegative();
             count[scratch.prim]++;
         }
@@ -124,7 +126,7 @@ class LightSamplerTest {
      * (a point of any of them may be chosen, whatever lies in front), cosLight = −ng·w. One-sided
      * and non-emissive primitives contribute 0 through {@code pdf} itself.
      */
-    private static double directionPdf(LightSampler lights, Geometry geometry, Vector3dc ref, Vector3dc w) {
+    private static double directionPdf(LightSampler lights, Geometry geometry, Vector3dc ref, Vector3dc n, Vector3dc w) {
         Ray ray = new Ray();
         Hit hit = new Hit();
         SurfacePoint sp = new SurfacePoint();
@@ -133,7 +135,7 @@ class LightSamplerTest {
             ray.set(ref, w, Double.POSITIVE_INFINITY);
             if (geometry.intersect(prim, ray, hit.reset(), false)) {
                 geometry.surface(ray, hit, sp);
-                sum += lights.pdf(sp.material, hit.t, -sp.ng.dot(w));
+                sum += lights.pdf(ref, n, hit.prim, hit.t, -sp.ng.dot(w));
             }
         }
         return sum;
@@ -145,12 +147,12 @@ class LightSamplerTest {
      * stream. The three numbers are independent uniforms, so the directions follow the 3-D →
      * direction map of {@code sample} exactly as the integrator uses it.
      */
-    private static ChiSquare.DirectionSampler asDirectionSampler(LightSampler lights, Vector3dc ref, long seed) {
+    private static ChiSquare.DirectionSampler asDirectionSampler(LightSampler lights, Vector3dc ref, Vector3dc n, long seed) {
         SplittableRandom lightChoice = new SplittableRandom(seed);
         SurfacePoint scratch = new SurfacePoint();
         LightSample out = new LightSample();
         return (u1, u2, dest) -> {
-            if (!lights.sample(ref, lightChoice.nextDouble(), u1, u2, false, scratch, out)) {
+            if (!lights.sample(ref, n, lightChoice.nextDouble(), u1, u2, false, scratch, out)) {
                 return false;
             }
             dest.set(out.wi);
@@ -240,21 +242,35 @@ class LightSamplerTest {
         return AREA[FACING_AWAY] * MEAN_LE[FACING_AWAY] / totalPower();
     }
 
-    @Test
-    void sampledDirectionsFollowTheSolidAnglePdfChiSquare() {
+    /** The probability of choosing the light facing away from ref (its samples all fail): by power, or the tree's at (ref, n). */
+    private static double absorbedProbability(LightSampler lights, Vector3dc ref, Vector3dc n) {
+        return lights.usesTree() ? lights.treeSelection().treeProbability(FACING_AWAY, ref, n) : absorbedProbability();
+    }
+
+    /** A normal tilted away from the lights' direction, so that the tree's cosine at the shading point matters. */
+    private static final Vector3dc TILTED = new Vector3d(0.6, 0, 0.8);
+
+    /**
+     * The directions follow the density that {@code pdf} gives a BSDF sample's hit, by power and
+     * by the light tree (whose choice depends on the shading point and its normal).
+     */
+    @ParameterizedTest
+    @ValueSource(booleans = {false, true})
+    void sampledDirectionsFollowTheSolidAnglePdfChiSquare(boolean tree) {
         Geometry geometry = scene();
-        LightSampler lights = areaLights(geometry, EMISSION);
-        capChiSquare(asDirectionSampler(lights, ORIGIN, 2), w -> directionPdf(lights, geometry, ORIGIN, w),
-                absorbedProbability(), 1_000_000, 3).assertAccepted(ALPHA);
+        LightSampler lights = tree ? new LightSampler(geometry, Emission.constants(EMISSION), Environment.BLACK, java.util.List.of()) : areaLights(geometry, EMISSION);
+        capChiSquare(asDirectionSampler(lights, ORIGIN, TILTED, 2), w -> directionPdf(lights, geometry, ORIGIN, TILTED, w),
+                absorbedProbability(lights, ORIGIN, TILTED), 1_000_000, 3).assertAccepted(ALPHA);
     }
 
     /** The density integrates to the probability that a sample succeeds (all but the light facing away). */
-    @Test
-    void solidAnglePdfIntegratesToTheSuccessProbability() {
+    @ParameterizedTest
+    @ValueSource(booleans = {false, true})
+    void solidAnglePdfIntegratesToTheSuccessProbability(boolean tree) {
         Geometry geometry = scene();
-        LightSampler lights = areaLights(geometry, EMISSION);
-        assertThat(sum(capMasses(w -> directionPdf(lights, geometry, ORIGIN, w))))
-                .isCloseTo(1 - absorbedProbability(), within(1e-3));
+        LightSampler lights = tree ? new LightSampler(geometry, Emission.constants(EMISSION), Environment.BLACK, java.util.List.of()) : areaLights(geometry, EMISSION);
+        assertThat(sum(capMasses(w -> directionPdf(lights, geometry, ORIGIN, TILTED, w))))
+                .isCloseTo(1 - absorbedProbability(lights, ORIGIN, TILTED), within(1e-3));
     }
 
     /**
@@ -266,9 +282,9 @@ class LightSamplerTest {
         Geometry geometry = scene();
         LightSampler lights = areaLights(geometry, EMISSION);
         // Every light faces -z, so cosLight = w.z: pdf·w.z drops the 1/cosLight.
-        ChiSquare.DirectionPdf shapeOnly = w -> directionPdf(lights, geometry, ORIGIN, w) * w.z();
+        ChiSquare.DirectionPdf shapeOnly = w -> directionPdf(lights, geometry, ORIGIN, null, w) * w.z();
         double scale = (1 - absorbedProbability()) / sum(capMasses(shapeOnly));
-        capChiSquare(asDirectionSampler(lights, ORIGIN, 2), w -> scale * shapeOnly.pdf(w), absorbedProbability(), 200_000, 3)
+        capChiSquare(asDirectionSampler(lights, ORIGIN, null, 2), w -> scale * shapeOnly.pdf(w), absorbedProbability(), 200_000, 3)
                 .assertRejected(ALPHA);
     }
 
@@ -287,7 +303,7 @@ class LightSamplerTest {
         Vector3dc ref = new Vector3d(0.1, -0.2, 0.05);
         int successes = 0;
         for (int i = 0; i < 10_000; i++) {
-            if (!lights.sample(ref, random.nextDouble(), random.nextDouble(), random.nextDouble(), false, scratch, out)) {
+            if (!lights.sample(ref, null, random.nextDouble(), random.nextDouble(), random.nextDouble(), false, scratch, out)) {
                 assertThat(scratch.prim).as("only the light facing away fails").isEqualTo(FACING_AWAY);
                 continue;
             }
@@ -303,7 +319,7 @@ class LightSamplerTest {
             double cosLight = -out.ng.dot(out.wi);
             double expected = AREA[prim] * MEAN_LE[prim] / totalPower() / AREA[prim] * out.distance * out.distance / cosLight;
             assertThat(out.pdf).isCloseTo(expected, within(1e-6 * expected));
-            assertThat(lights.pdf(MATERIALS[prim], out.distance, cosLight)).isEqualTo(out.pdf);
+            assertThat(lights.pdf(ref, null, prim, out.distance, cosLight)).isEqualTo(out.pdf);
         }
         assertThat(successes).isGreaterThan(9_000);
     }
@@ -322,12 +338,12 @@ class LightSamplerTest {
         Vector3dc behind = new Vector3d(0.1, 0.1, 2), inFront = new Vector3d(0.1, 0.1, 0);
         for (int i = 0; i < 10_000; i++) {
             double ul = random.nextDouble(), u1 = random.nextDouble(), u2 = random.nextDouble();
-            assertThat(lights.sample(behind, ul, u1, u2, false, scratch, out)).as("behind the light").isFalse();
-            assertThat(lights.sample(inFront, ul, u1, u2, false, scratch, out)).as("in front of the light").isTrue();
+            assertThat(lights.sample(behind, null, ul, u1, u2, false, scratch, out)).as("behind the light").isFalse();
+            assertThat(lights.sample(inFront, null, ul, u1, u2, false, scratch, out)).as("in front of the light").isTrue();
         }
-        assertThat(lights.pdf(1, 1, -0.5)).isZero();
-        assertThat(lights.pdf(1, 1, 0)).isZero();
-        assertThat(lights.pdf(1, 1, 0.5)).isPositive();
+        assertThat(lights.pdf(inFront, null, 0, 1, -0.5)).isZero();
+        assertThat(lights.pdf(inFront, null, 0, 1, 0)).isZero();
+        assertThat(lights.pdf(inFront, null, 0, 1, 0.5)).isPositive();
     }
 
     // ---------------------------------------------------------------------------------------------
@@ -350,7 +366,7 @@ class LightSamplerTest {
         SurfacePoint scratch = new SurfacePoint();
         LightSample out = new LightSample();
         ChiSquare.DirectionSampler normals = (u1, u2, dest) -> {
-            if (!lights.sample(ref, lightChoice.nextDouble(), u1, u2, false, scratch, out)) {
+            if (!lights.sample(ref, null, lightChoice.nextDouble(), u1, u2, false, scratch, out)) {
                 return false;
             }
             // The point and its density as the sole light: d²/(cos·area).
@@ -373,7 +389,7 @@ class LightSamplerTest {
         LightSample out = new LightSample();
         SplittableRandom random = new SplittableRandom(8);
         for (int i = 0; i < 1000; i++) {
-            assertThat(lights.sample(new Vector3d(0.1, 0.2, -0.3), random.nextDouble(), random.nextDouble(), random.nextDouble(), false, scratch, out))
+            assertThat(lights.sample(new Vector3d(0.1, 0.2, -0.3), null, random.nextDouble(), random.nextDouble(), random.nextDouble(), false, scratch, out))
                     .as("every point of the sphere faces away from its inside").isFalse();
         }
     }
@@ -390,8 +406,8 @@ class LightSamplerTest {
             assertThat(lights.isEmpty()).isTrue();
             assertThat(lights.lightCount()).isZero();
             assertThat(lights.totalPower()).isZero();
-            assertThat(lights.sample(ORIGIN, 0.5, 0.5, 0.5, true, new SurfacePoint(), new LightSample())).isFalse();
-            assertThat(lights.pdf(0, 1, 1)).isZero();
+            assertThat(lights.sample(ORIGIN, null, 0.5, 0.5, 0.5, true, new SurfacePoint(), new LightSample())).isFalse();
+            
         }
     }
 
@@ -399,11 +415,11 @@ class LightSamplerTest {
     void blackEmissionMakesNoLight() {
         LightSampler lights = areaLights(scene(), new Rgb[] {Rgb.BLACK, Rgb.BLACK, Rgb.BLACK, Rgb.BLACK});
         assertThat(lights.isEmpty()).isTrue();
-        assertThat(lights.sample(ORIGIN, 0.5, 0.5, 0.5, true, new SurfacePoint(), new LightSample())).isFalse();
+        assertThat(lights.sample(ORIGIN, null, 0.5, 0.5, 0.5, true, new SurfacePoint(), new LightSample())).isFalse();
     }
 
-    /** Area lights of constant radiance per material, no environment, no punctual lights. */
+    /** Area lights of constant radiance per material chosen by power, no environment, no punctual lights. */
     private static LightSampler areaLights(Geometry geometry, Rgb[] emission) {
-        return new LightSampler(geometry, Emission.constants(emission), Environment.BLACK, java.util.List.of());
+        return new LightSampler(geometry, Emission.constants(emission), Environment.BLACK, java.util.List.of()).byPower();
     }
 }

@@ -148,17 +148,17 @@ class PunctualLightTest {
     void lightsAreChosenByPowerAndTheAreaLightsDensityShrinksByItsShare() {
         Geometry quad = unitQuad();
         Rgb[] emission = {Rgb.WHITE};
-        LightSampler alone = new LightSampler(quad, Emission.constants(emission), Environment.BLACK, List.of());
+        LightSampler alone = new LightSampler(quad, Emission.constants(emission), Environment.BLACK, List.of()).byPower();
         LightSampler both = new LightSampler(quad, Emission.constants(emission), Environment.BLACK,
-                List.of(PunctualLight.point(new Vector3d(0.5, 2, 0.5), Rgb.WHITE)));
-        assertThat(both.pdf(0, 2, 0.5)).isCloseTo(alone.pdf(0, 2, 0.5) / 5, within(1e-12));
+                List.of(PunctualLight.point(new Vector3d(0.5, 2, 0.5), Rgb.WHITE))).byPower();
+        assertThat(both.pdf(new Vector3d(), null, 0, 2, 0.5)).isCloseTo(alone.pdf(new Vector3d(), null, 0, 2, 0.5) / 5, within(1e-12));
         SurfacePoint sp = new SurfacePoint();
         LightSample ls = new LightSample();
         Vector3d ref = new Vector3d(0.3, 1, 0.4);
         int delta = 0, n = 100_000;
         SplittableRandom random = new SplittableRandom(1);
         for (int i = 0; i < n; i++) {
-            if (both.sample(ref, random.nextDouble(), random.nextDouble(), random.nextDouble(), false, sp, ls) && ls.delta) {
+            if (both.sample(ref, null, random.nextDouble(), random.nextDouble(), random.nextDouble(), false, sp, ls) && ls.delta) {
                 delta++;
                 assertThat(ls.pdf).isCloseTo(0.8, within(1e-12));
             }
@@ -169,18 +169,18 @@ class PunctualLightTest {
                 List.of(PunctualLight.directional(new Vector3d(0, -1, 0), Rgb.WHITE))).isEmpty()).isFalse();
     }
 
-    /** With an environment map too, the environment keeps its half; punctual and area lights share the other half by power. */
+    /** With an environment map too, the environment keeps its half; punctual and area lights share the other half (by power here). */
     @Test
     void anEnvironmentMapKeepsItsHalf() {
         Geometry quad = unitQuad();
         Environment env = Environment.map(2, 2, new float[] {1, 1, 1, 2, 2, 2, 1, 1, 1, 2, 2, 2}, 1, 0, "test");
-        LightSampler s = new LightSampler(quad, Emission.constants(Rgb.WHITE), env, List.of(PunctualLight.point(new Vector3d(0, 3, 0), Rgb.WHITE)));
+        LightSampler s = new LightSampler(quad, Emission.constants(Rgb.WHITE), env, List.of(PunctualLight.point(new Vector3d(0, 3, 0), Rgb.WHITE))).byPower();
         SurfacePoint sp = new SurfacePoint();
         LightSample ls = new LightSample();
         int envCount = 0, pointCount = 0, n = 100_000;
         SplittableRandom random = new SplittableRandom(2);
         for (int i = 0; i < n; i++) {
-            if (s.sample(new Vector3d(0.5, 1, 0.5), random.nextDouble(), random.nextDouble(), random.nextDouble(), false, sp, ls)) {
+            if (s.sample(new Vector3d(0.5, 1, 0.5), null, random.nextDouble(), random.nextDouble(), random.nextDouble(), false, sp, ls)) {
                 envCount += ls.infinite && !ls.delta ? 1 : 0;
                 pointCount += ls.delta ? 1 : 0;
             }

@@ -51,7 +51,7 @@ class CheckpointTest {
         Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
         Path file = dir.resolve("a.ck");
         try (RenderJob first = RenderJob.start(cornell, SETTINGS.withSamplesPerPixel(savedSpp))) {
-            cp.save(file, TestJobs.awaitFilm(first), 0, first.awaitStats().seconds());
+            cp.save(file, TestJobs.awaitFilm(first), null, 0, first.awaitStats().seconds());
         }
         Checkpoint.Restored restored = cp.restore(file);
         assertThat(restored.samplesPerPixel()).isEqualTo(savedSpp);
@@ -71,7 +71,7 @@ class CheckpointTest {
         try (RenderJob first = RenderJob.start(cornell, SETTINGS.withThreads(2))) {
             Thread.sleep(delayMillis);
             first.cancel();
-            cp.save(file, TestJobs.awaitFilm(first), first.invalidSamples(), first.elapsedSeconds());
+            cp.save(file, TestJobs.awaitFilm(first), null, first.invalidSamples(), first.elapsedSeconds());
         }
         Film restored = cp.restore(file).film();
         try (RenderJob second = TestJobs.resume(cornell, SETTINGS.withThreads(1), restored, new RenderListener() {})) {
@@ -98,7 +98,7 @@ class CheckpointTest {
                 first.cancel();
                 Film film = TestJobs.awaitFilm(first);
                 midPass = maxSampleCount(film) > film.minSampleCount();
-                cp.save(file, film, first.invalidSamples(), first.elapsedSeconds());
+                cp.save(file, film, null, first.invalidSamples(), first.elapsedSeconds());
             }
         }
         assertThat(midPass).as("a cancel in the middle of a pass in 5 attempts").isTrue();
@@ -124,7 +124,7 @@ class CheckpointTest {
         Film film = new Film(40, 30);
         for (int spp : new int[] {3, 11, 24}) {
             try (RenderJob job = TestJobs.resume(cornell, SETTINGS.withSamplesPerPixel(spp), film, new RenderListener() {})) {
-                cp.save(file, TestJobs.awaitFilm(job), 0, 0);
+                cp.save(file, TestJobs.awaitFilm(job), null, 0, 0);
             }
             film = cp.restore(file).film();
         }
@@ -211,7 +211,7 @@ class CheckpointTest {
     void aCheckpointThatReachedTheTargetRendersNothingMore() throws Exception {
         Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
         Path file = dir.resolve("e.ck");
-        cp.save(file, uninterrupted, 5, 1.5);
+        cp.save(file, uninterrupted, null, 5, 1.5);
         Checkpoint.Restored r = cp.restore(file);
         assertThat(r.invalidSamples()).isEqualTo(5);
         assertThat(r.seconds()).isEqualTo(1.5);
@@ -227,7 +227,7 @@ class CheckpointTest {
     @Test
     void otherSettingsAreRefusedNamingTheSetting() throws Exception {
         Path file = dir.resolve("s.ck");
-        Checkpoint.of(cornell, SETTINGS).save(file, uninterrupted, 0, 0);
+        Checkpoint.of(cornell, SETTINGS).save(file, uninterrupted, null, 0, 0);
         assertRefused(Checkpoint.of(cornell, SETTINGS.withSeed(10)), file, "other settings", "seed 9 in the checkpoint, 10 now");
         assertRefused(Checkpoint.of(cornell, SETTINGS.withMaxDepth(5)), file, "maxDepth -1 in the checkpoint, 5 now");
         assertRefused(Checkpoint.of(cornell, SETTINGS.withSize(41, 30)), file, "width 40 in the checkpoint, 41 now");
@@ -249,10 +249,10 @@ class CheckpointTest {
         assertThat(Checkpoint.settingsKey(SETTINGS)).contains(";shadows=true;");
         assertThat(Checkpoint.settingsKey(SETTINGS.withShadows(false))).contains(";shadows=false;");
         Path with = dir.resolve("with.ck");
-        Checkpoint.of(cornell, SETTINGS).save(with, uninterrupted, 0, 0);
+        Checkpoint.of(cornell, SETTINGS).save(with, uninterrupted, null, 0, 0);
         assertRefused(Checkpoint.of(cornell, SETTINGS.withShadows(false)), with, "other settings", "shadows true in the checkpoint, false now");
         Path without = dir.resolve("without.ck");
-        Checkpoint.of(cornell, SETTINGS.withShadows(false)).save(without, uninterrupted, 0, 0);
+        Checkpoint.of(cornell, SETTINGS.withShadows(false)).save(without, uninterrupted, null, 0, 0);
         assertRefused(Checkpoint.of(cornell, SETTINGS), without, "shadows false in the checkpoint, true now");
     }
 
@@ -260,11 +260,24 @@ class CheckpointTest {
     @Test
     void aCheckpointFromBeforeTheShadowsSettingResumesWithShadows() throws Exception {
         Path file = dir.resolve("older.ck");
-        Checkpoint.of(cornell, SETTINGS).save(file, uninterrupted, 0, 0);
+        Checkpoint.of(cornell, SETTINGS).save(file, uninterrupted, null, 0, 0);
         removeSetting(file, ";shadows=true");
         assertSameBits(Checkpoint.of(cornell, SETTINGS).restore(file).film(), uninterrupted);
         assertRefused(Checkpoint.of(cornell, SETTINGS.withShadows(false)), file, "shadows true in the checkpoint, false now");
         assertRefused(Checkpoint.of(cornell, SETTINGS.withSeed(10)), file, "seed 9 in the checkpoint, 10 now");
+    }
+
+    /** A checkpoint of version 2, written before the noise threshold: it resumes as a render without one, and only as that. */
+    @Test
+    void aCheckpointOfVersionTwoResumesWithoutANoiseThreshold() throws Exception {
+        Path file = dir.resolve("v2.ck");
+        Checkpoint.of(cornell, SETTINGS).save(file, uninterrupted, null, 0, 0);
+        byte[] b = Files.readAllBytes(file);
+        b[11] = 2;
+        Files.write(file, b);
+        removeSetting(file, ";noiseThreshold=0.0");
+        assertSameBits(Checkpoint.of(cornell, SETTINGS).restore(file).film(), uninterrupted);
+        assertRefused(Checkpoint.of(cornell, SETTINGS.withNoiseThreshold(0.05)), file, "noiseThreshold 0.0 in the checkpoint, 0.05 now");
     }
 
     /** Rewrites a checkpoint as one without {@code entry} in its settings: the string, its length and the checksum. */
@@ -291,7 +304,7 @@ class CheckpointTest {
     @Test
     void anotherSceneOrCameraIsRefused() throws Exception {
         Path file = dir.resolve("t.ck");
-        Checkpoint.of(cornell, SETTINGS).save(file, uninterrupted, 0, 0);
+        Checkpoint.of(cornell, SETTINGS).save(file, uninterrupted, null, 0, 0);
         Scene mirror = SceneLoader.load(Path.of("scenes/cornell-mirror.json"));
         assertRefused(Checkpoint.of(mirror, SETTINGS), file, "another scene");
         Camera c = cornell.camera();
@@ -306,7 +319,7 @@ class CheckpointTest {
         Path png = dir.resolve("wood.png");
         Scene first = texturedQuad(png, 0x806040);
         Path file = dir.resolve("tex.ck");
-        Checkpoint.of(first, SETTINGS).save(file, uninterrupted, 0, 0);
+        Checkpoint.of(first, SETTINGS).save(file, uninterrupted, null, 0, 0);
         Checkpoint.of(texturedQuad(png, 0x806040), SETTINGS).restore(file);       // same pixels: the same scene
         assertRefused(Checkpoint.of(texturedQuad(png, 0x806041), SETTINGS), file, "another scene");
     }
@@ -328,7 +341,7 @@ class CheckpointTest {
     void everyTruncationIsRefusedAsTruncated() throws Exception {
         Path file = dir.resolve("u.ck");
         Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
-        cp.save(file, uninterrupted, 0, 0);
+        cp.save(file, uninterrupted, null, 0, 0);
         byte[] bytes = Files.readAllBytes(file);
         assertThat((long) bytes.length).isEqualTo(cp.fileSize());
         Path cut = dir.resolve("cut.ck");
@@ -344,7 +357,7 @@ class CheckpointTest {
     void everyFlippedByteIsRefused() throws Exception {
         Path file = dir.resolve("v.ck");
         Checkpoint cp = Checkpoint.of(cornell, SETTINGS);
-        cp.save(file, uninterrupted, 0, 0);
+        cp.save(file, uninterrupted, null, 0, 0);
         byte[] bytes = Files.readAllBytes(file);
         Path bad = dir.resolve("bad.ck");
         SplittableRandom random = new SplittableRandom(4);
@@ -365,11 +378,11 @@ class CheckpointTest {
         Path png = Files.write(dir.resolve("x.ck"), new byte[] {(byte) 0x89, 'P', 'N', 'G', 13, 10, 26, 10, 0, 0, 0, 0});
         assertRefused(cp, png, "not a strahl checkpoint");
         Path future = dir.resolve("y.ck");
-        cp.save(future, uninterrupted, 0, 0);
+        cp.save(future, uninterrupted, null, 0, 0);
         byte[] b = Files.readAllBytes(future);
-        b[11] = 3;                                      // format version 3
+        b[11] = 4;                                      // format version 4
         Files.write(future, b);
-        assertRefused(cp, future, "version 3");
+        assertRefused(cp, future, "version 4");
         b[11] = 1;                                      // version 1: before the film kept the variance
         Files.write(future, b);
         assertRefused(cp, future, "version 1", "render anew");

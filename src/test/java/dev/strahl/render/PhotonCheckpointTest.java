@@ -42,7 +42,7 @@ class PhotonCheckpointTest {
                 Thread.sleep(1);
             }
             first.cancel();
-            cp.save(file, TestJobs.awaitFilm(first), first.invalidSamples(), first.elapsedSeconds());
+            cp.save(file, TestJobs.awaitFilm(first), null, first.invalidSamples(), first.elapsedSeconds());
         }
         Film restored = cp.restore(file).film();
         try (RenderJob second = TestJobs.resume(scene, SETTINGS.withThreads(1), restored, new RenderListener() {})) {
@@ -54,7 +54,7 @@ class PhotonCheckpointTest {
     @Test
     void otherPhotonParametersAreRefused() throws Exception {
         Path file = dir.resolve("q.ck");
-        Checkpoint.of(scene, SETTINGS).save(file, uninterrupted, 0, 0);
+        Checkpoint.of(scene, SETTINGS).save(file, uninterrupted, null, 0, 0);
         assertThatThrownBy(() -> Checkpoint.of(scene, SETTINGS.withPhotons(new PhotonParameters(6000, 0))).restore(file)).hasMessageContaining("photons");
         assertThatThrownBy(() -> Checkpoint.of(scene, SETTINGS.withPhotons(new PhotonParameters(SETTINGS.transport().photons().photonsPerIteration(), 0.05))).restore(file)).hasMessageContaining("initialRadius");
     }

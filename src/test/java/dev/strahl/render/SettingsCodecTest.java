@@ -12,7 +12,7 @@ class SettingsCodecTest {
     @Test
     void everySettingHasItsOwnNameInTheOrderOfTheParts() {
         assertThat(RenderSettings.defaults().entries().keySet()).containsExactly("width", "height", "aovs", "samplesPerPixel", "seed",
-                "integrator", "maxDepth", "lightSamples", "hemisphere", "cullBackFaces", "shadows", "photons.photonsPerIteration",
+                "noiseThreshold", "integrator", "maxDepth", "lightSamples", "hemisphere", "cullBackFaces", "shadows", "lightTree", "photons.photonsPerIteration",
                 "photons.initialRadius", "threads", "samplesPerPass", "timeLimit", "bruteForce", "stripes");
     }
 
@@ -21,7 +21,7 @@ class SettingsCodecTest {
     void theFingerprintKeepsTheNamesOfTheFlatSettings() {
         assertThat(SettingsCodec.parse(Checkpoint.settingsKey(RenderSettings.defaults())).keySet()).containsExactlyInAnyOrder("width",
                 "height", "maxDepth", "seed", "hemisphere", "cullBackFaces", "integrator", "lightSamples", "photons.photonsPerIteration",
-                "photons.initialRadius", "bruteForce", "stripes", "shadows", "sampler", "features");
+                "photons.initialRadius", "bruteForce", "stripes", "shadows", "lightTree", "noiseThreshold", "sampler", "features");
         // as version 2 wrote it before the parts: the same settings in the order of the flat record
         String flat = "width=512;height=512;maxDepth=-1;seed=0;hemisphere=COSINE;cullBackFaces=false;integrator=PATH;lightSamples=1;"
                 + "photons.photonsPerIteration=100000;photons.initialRadius=0.0;bruteForce=false;stripes=false;shadows=true";

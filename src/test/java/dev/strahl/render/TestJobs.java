@@ -29,7 +29,7 @@ public final class TestJobs {
             throws java.io.IOException, CheckpointException {
         java.nio.file.Path file = java.nio.file.Files.createTempFile("strahl-test", ".ck");
         try {
-            Checkpoint.of(scene, settings).save(file, film, 0, 0);
+            Checkpoint.of(scene, settings).save(file, film, null, 0, 0);
             return RenderJob.resumeFrom(file, scene, settings, listener);
         } finally {
             java.nio.file.Files.deleteIfExists(file);

@@ -40,7 +40,7 @@ class WavefrontTest {
         RenderWorkers workers = new RenderWorkers(film, CameraRays.of(scene.camera(), W, H), integrator, () -> new FeatureTracer(world, cull),
                 settings.sampling().seed(), threads, false, "wavefront-test", batch);
         try {
-            workers.renderPass(s0, s1);
+            workers.renderPass(s0, s1, null);
         } finally {
             workers.shutdown();
         }

@@ -49,6 +49,22 @@ class WorkUnitTest {
         assertThat(unit(true).wireSize()).as("uniform counts are sent once").isEqualTo(unit(false).wireSize() - 4 * 640 + 8);
     }
 
+    /** A unit of adaptive sampling names the pixels that take samples: the mask survives the wire, and only they count. */
+    @Test
+    void theMaskOfPixelsThatTakeSamplesRoundTrips() throws IOException {
+        boolean[] renders = {true, false, false, true};
+        WorkUnit u = new WorkUnit(0, 0, 2, 2, 4, 10, new int[] {4, 4, 4, 4}, new double[16], renders);
+        assertThat(u.samples()).isEqualTo(12);
+        WorkUnit back = WorkUnit.decode(u.encode(0), 0);
+        for (int i = 0; i < 4; i++) {
+            assertThat(back.renders(i)).isEqualTo(renders[i]);
+        }
+        assertThat(back.samples()).isEqualTo(12);
+        assertThat(u.wireSize()).isEqualTo(new WorkUnit(0, 0, 2, 2, 4, 10, new int[] {4, 4, 4, 4}, new double[16]).wireSize() + 4);
+        assertThatThrownBy(() -> new WorkUnit(0, 0, 2, 2, 4, 10, new int[4], new double[16], new boolean[3]))
+                .isInstanceOf(IllegalArgumentException.class);
+    }
+
     @Test
     void samplesCountsOnlyWhatPixelsLack() {
         int[] counts = {0, 5, 10, 12};

@@ -306,15 +306,15 @@ class RenderControllerTest {
 
     @Test
     void renderSettingsRestartOnlyWhenTheyChange() {
-        controller.setMaxDepth(-1);
-        controller.setHemisphere(HemisphereSampling.COSINE);
-        controller.setIntegrator(IntegratorKind.PATH);
+        controller.change(s -> s.withMaxDepth(-1));
+        controller.change(s -> s.withHemisphere(HemisphereSampling.COSINE));
+        controller.change(s -> s.withIntegrator(IntegratorKind.PATH));
         assertThat(jobs).hasSize(2);
-        controller.setMaxDepth(3);
+        controller.change(s -> s.withMaxDepth(3));
         assertThat(glance().settings.transport().maxDepth()).isEqualTo(3);
-        controller.setHemisphere(HemisphereSampling.UNIFORM);
+        controller.change(s -> s.withHemisphere(HemisphereSampling.UNIFORM));
         assertThat(glance().settings.transport().hemisphere()).isEqualTo(HemisphereSampling.UNIFORM);
-        controller.setIntegrator(IntegratorKind.WHITTED);
+        controller.change(s -> s.withIntegrator(IntegratorKind.WHITTED));
         assertThat(glance().settings.transport().integrator()).isEqualTo(IntegratorKind.WHITTED);
         assertThat(controller.status().integrator()).isEqualTo(IntegratorKind.WHITTED);
         assertThat(jobs).hasSize(8);
@@ -327,9 +327,9 @@ class RenderControllerTest {
         Scene fog = SceneLoader.load(Path.of("src/test/resources/golden/media/fog.json"));
         controller.setScene(fog, RenderSettings.defaults().withSize(64, 48).withIntegrator(IntegratorKind.PHOTON));
         assertThat(job().settings.transport().integrator()).isEqualTo(IntegratorKind.PATH);
-        controller.setIntegrator(IntegratorKind.WHITTED);
+        controller.change(s -> s.withIntegrator(IntegratorKind.WHITTED));
         assertThat(controller.status().integrator()).isEqualTo(IntegratorKind.PATH);
-        controller.setIntegrator(IntegratorKind.DIRECT);
+        controller.change(s -> s.withIntegrator(IntegratorKind.DIRECT));
         assertThat(job().settings.transport().integrator()).isEqualTo(IntegratorKind.DIRECT);
         controller.setScene(cornell, RenderSettings.defaults().withSize(64, 48).withIntegrator(IntegratorKind.WHITTED));
         assertThat(job().settings.transport().integrator()).as("a scene of surfaces keeps its integrator").isEqualTo(IntegratorKind.WHITTED);
@@ -447,8 +447,8 @@ class RenderControllerTest {
 
     @Test
     void previewSizeIsAQuarterAndNeverZero() {
-        assertThat(RenderController.previewSize(512)).isEqualTo(128);
-        assertThat(RenderController.previewSize(3)).isEqualTo(1);
-        assertThat(RenderController.previewSize(1)).isEqualTo(1);
+        assertThat(RenderJobs.previewSize(512)).isEqualTo(128);
+        assertThat(RenderJobs.previewSize(3)).isEqualTo(1);
+        assertThat(RenderJobs.previewSize(1)).isEqualTo(1);
     }
 }

@@ -215,4 +215,27 @@ class ViewerPartsTest {
         Choice<IntegratorKind> kinds = new Choice<>(List.of(IntegratorKind.PATH), IntegratorKind.PATH, null, IntegratorKind::id, k -> { });
         assertThatThrownBy(() -> kinds.show(IntegratorKind.DIRECT)).isInstanceOf(IllegalArgumentException.class);
     }
+
+    /** The status bar's share never says all while a pixel is left; the heat map is blue to cyan where met, yellow to red where not. */
+    @Test
+    void noiseShareAndHeatMapColours() {
+        assertThat(StatusBar.noiseText(0.6321)).isEqualTo("63.2 % converged");
+        assertThat(StatusBar.noiseText(0.99999)).isEqualTo("99.9 % converged");
+        assertThat(StatusBar.noiseText(1)).isEqualTo("100 % converged");
+        assertThat(StatusBar.percent(0.05)).isEqualTo("5 %");
+        assertThat(StatusBar.percent(0.005)).isEqualTo("0.5 %");
+        assertThat(NoiseHeatMap.color(1)).isEqualTo(0x00ffff);
+        assertThat(NoiseHeatMap.color(4)).isEqualTo(0xff0000);
+        assertThat(NoiseHeatMap.color(100)).isEqualTo(0xff0000);
+        assertThat(NoiseHeatMap.color(Double.NaN)).isEqualTo(0xff00ff);
+        for (double v = 0; v <= 1; v += 0.125) {
+            assertThat(NoiseHeatMap.color(v) >> 16).as("met: no red, %s", v).isZero();
+        }
+        for (double v = 1.01; v < 8; v *= 1.3) {
+            assertThat(NoiseHeatMap.color(v) >> 16).as("not met: red, %s", v).isEqualTo(255);
+        }
+        var img = NoiseHeatMap.of(new dev.strahl.image.Image(2, 1, new float[] {0.01f, 0.01f, 0.01f, 0.5f, 0.5f, 0.5f}), 0.01);
+        assertThat(img.getRGB(0, 0) & 0xffffff).isEqualTo(0x00ffff);
+        assertThat(img.getRGB(1, 0) & 0xffffff).isEqualTo(0xff0000);
+    }
 }

@@ -24,7 +24,7 @@ import java.util.Set;
 final class GltfDocument {
     /** The extensions read here (the rest are ignored with a note, or refused when required). */
     static final Set<String> SUPPORTED = Set.of("KHR_texture_transform", "KHR_materials_emissive_strength", "KHR_materials_specular",
-            "KHR_materials_transmission", "KHR_materials_ior", "KHR_lights_punctual");
+            "KHR_materials_transmission", "KHR_materials_ior", "KHR_lights_punctual", "EXT_mesh_gpu_instancing");
 
     final Path file;
     final GltfJson root;

@@ -83,13 +83,18 @@ final class GltfNodes {
             }
             visited[index] = true;
             Matrix4d world = new Matrix4d(top.parentWorld()).mul(local(node));
+            GltfJson ext = node.get("extensions");
             if (node.has("mesh")) {
-                meshes.add(new Placed(index, world, node.get("mesh").index(doc.root.array("meshes").size())));
+                int mesh = node.get("mesh").index(doc.root.array("meshes").size());
+                if (ext != null && ext.has("EXT_mesh_gpu_instancing")) {
+                    gpuInstances(ext.get("EXT_mesh_gpu_instancing"), index, world, mesh);
+                } else {
+                    meshes.add(new Placed(index, world, mesh));
+                }
             }
             if (node.has("camera")) {
                 cameras.add(new Placed(index, world, node.get("camera").index(doc.root.array("cameras").size())));
             }
-            GltfJson ext = node.get("extensions");
             if (ext != null && ext.has("KHR_lights_punctual")) {
                 GltfJson light = ext.get("KHR_lights_punctual").require("light");
                 lights.add(new Placed(index, world, light.index(GltfLights.definitions(doc).size())));
@@ -101,6 +106,43 @@ final class GltfNodes {
             for (int c = children.size() - 1; c >= 0; c--) {      // pushed last first: visited first to last
                 stack.push(new Pending(children.get(c).index(visited.length), world));
             }
+        }
+    }
+
+    /**
+     * EXT_mesh_gpu_instancing: the node's mesh placed once per element of its TRANSLATION,
+     * ROTATION and SCALE accessors (VEC3, VEC4 quaternion, VEC3; absent ones are 0, identity, 1),
+     * each T · R · S after the node's world matrix. The accessors are checked as every accessor
+     * is (type, bounds, the heap) before anything is allocated, and must agree on the count.
+     */
+    private void gpuInstances(GltfJson ext, int node, Matrix4d world, int mesh) throws SceneException {
+        GltfJson attributes = ext.require("attributes");
+        Accessors accessors = new Accessors(doc);
+        float[] t = attributes.has("TRANSLATION") ? accessors.floats(attributes.get("TRANSLATION"), 3, "TRANSLATION") : null;
+        float[] r = attributes.has("ROTATION") ? accessors.floats(attributes.get("ROTATION"), 4, "ROTATION") : null;
+        float[] s = attributes.has("SCALE") ? accessors.floats(attributes.get("SCALE"), 3, "SCALE") : null;
+        int count = t != null ? t.length / 3 : r != null ? r.length / 4 : s != null ? s.length / 3 : -1;
+        if (count < 0) {
+            throw attributes.error("names none of TRANSLATION, ROTATION and SCALE");
+        }
+        if (t != null && t.length / 3 != count || r != null && r.length / 4 != count || s != null && s.length / 3 != count) {
+            throw attributes.error("TRANSLATION, ROTATION and SCALE must have as many elements each ("
+                    + (t == null ? "-" : t.length / 3) + ", " + (r == null ? "-" : r.length / 4) + ", " + (s == null ? "-" : s.length / 3) + ")");
+        }
+        for (int i = 0; i < count; i++) {
+            Quaterniond q = r == null ? new Quaterniond() : new Quaterniond(r[4 * i], r[4 * i + 1], r[4 * i + 2], r[4 * i + 3]);
+            double length = Math.sqrt(q.lengthSquared());
+            if (!(length > 1e-6) || !Double.isFinite(length)) {
+                throw attributes.get("ROTATION").error("element " + i + " must be a unit quaternion, got length " + length);
+            }
+            q.normalize();
+            Matrix4d local = new Matrix4d().translationRotateScale(t == null ? 0 : t[3 * i], t == null ? 0 : t[3 * i + 1], t == null ? 0 : t[3 * i + 2],
+                    q.x, q.y, q.z, q.w, s == null ? 1 : s[3 * i], s == null ? 1 : s[3 * i + 1], s == null ? 1 : s[3 * i + 2]);
+            Matrix4d placed = new Matrix4d(world).mul(local);
+            if (!placed.isFinite() || placed.determinant3x3() == 0) {
+                throw attributes.error("instance " + i + " has a non-finite or zero scale");
+            }
+            meshes.add(new Placed(node, placed, mesh));
         }
     }
 

@@ -51,20 +51,33 @@ public final class GltfReader {
         GltfNodes nodes = GltfNodes.walk(doc, placement.matrix());
         GltfMaterials materials = new GltfMaterials(doc);
         GltfMeshes meshes = new GltfMeshes(doc, materials);
-        Map<Integer, Integer> uses = new HashMap<>();
-        long triangles = 0;
+        java.util.Set<String> definedGroups = new java.util.HashSet<>();
+        Map<Integer, List<GltfNodes.Placed>> uses = new HashMap<>();
         for (GltfNodes.Placed p : nodes.meshes) {
-            uses.merge(p.element(), 1, Integer::sum);
-            for (GltfMeshes.Primitive prim : meshes.mesh(p.element())) {
-                triangles += prim.indices().length / 3;
+            uses.computeIfAbsent(p.element(), k -> new ArrayList<>()).add(p);
+        }
+        // A mesh placed more than once is instanced (one group, its triangles once), unless it emits
+        // light or a placement shears it (an instance's transform is made of steps): then it is copied.
+        Map<Integer, String> groups = new HashMap<>();
+        long triangles = 0;
+        for (var e : uses.entrySet()) {
+            long count = 0;
+            for (GltfMeshes.Primitive prim : meshes.mesh(e.getKey())) {
+                count += prim.indices().length / 3;
             }
+            boolean instanced = e.getValue().size() > 1 && count > 0 && !emits(meshes.mesh(e.getKey()), materials)
+                    && e.getValue().stream().allMatch(p -> GltfInstances.steps(p.world()) != null);
+            if (instanced) {
+                groups.put(e.getKey(), file.getFileName() + " mesh " + e.getKey() + " #" + GROUPS.incrementAndGet());
+            }
+            triangles += instanced ? count : count * e.getValue().size();
         }
         String tooMany = HeapBudget.tooMany(triangles);
         if (tooMany != null) {
             throw new SceneException(file, tooMany);
         }
         long copyBytes = 0;
-        int copies = 0;
+        int copies = 0, instances = 0;
         for (GltfNodes.Placed p : nodes.meshes) {
             List<GltfMeshes.Primitive> prims = meshes.mesh(p.element());
             if (prims.isEmpty()) {
@@ -78,6 +91,17 @@ public final class GltfReader {
                     palette.add(materials.material(prim.material()));
                 }
             }
+            String group = groups.get(p.element());
+            if (group != null) {
+                if (!defined(group, definedGroups)) {
+                    builder.beginGroup(group);
+                    Instance shape = flatten(prims, new Matrix4d(), slot);
+                    builder.addMesh(shape.mesh, shape.materialOfTriangle, palette).endGroup();
+                }
+                builder.addInstance(group, GltfInstances.steps(p.world()));
+                instances++;
+                continue;
+            }
             Instance instance;
             try {
                 instance = flatten(prims, p.world(), slot);
@@ -88,15 +112,17 @@ public final class GltfReader {
                 continue;
             }
             builder.addMesh(instance.mesh, instance.materialOfTriangle, palette);
-            if (uses.get(p.element()) > 1) {
+            if (uses.get(p.element()).size() > 1) {
                 copies++;
                 copyBytes += instance.bytes;
             }
         }
+        if (instances > 0) {
+            doc.notes.add(groups.size() + " mesh" + (groups.size() == 1 ? " is" : "es are") + " used by several nodes: " + instances + " instances");
+        }
         if (copies > 0) {
-            int shared = (int) uses.values().stream().filter(n -> n > 1).count();
-            doc.notes.add(shared + " mesh" + (shared == 1 ? " is" : "es are") + " used by several nodes: " + copies
-                    + " instances flattened into copies (" + String.format("%.1f", copyBytes / 1048576.0) + " MiB)");
+            doc.notes.add("meshes that emit light or are sheared are copied per node: " + copies
+                    + " copies (" + String.format("%.1f", copyBytes / 1048576.0) + " MiB)");
         }
         GltfCameras.Found camera = GltfCameras.first(doc, nodes);
         List<GltfLights.Light> lights = GltfLights.placed(doc, nodes);
@@ -122,6 +148,22 @@ public final class GltfReader {
                     break;
             }
         }
+    }
+
+    /** Names for the groups of instanced meshes, unique in the process (an asset may be added twice). */
+    private static final java.util.concurrent.atomic.AtomicLong GROUPS = new java.util.concurrent.atomic.AtomicLong();
+
+    private static boolean defined(String group, java.util.Set<String> defined) {
+        return !defined.add(group);
+    }
+
+    private static boolean emits(List<GltfMeshes.Primitive> prims, GltfMaterials materials) throws SceneException {
+        for (GltfMeshes.Primitive prim : prims) {
+            if (materials.material(prim.material()).isEmissive()) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private record Instance(TriangleMesh mesh, int[] materialOfTriangle, long bytes) {}

@@ -42,17 +42,21 @@ public final class JsonSceneReader {
     static final Map<String, Set<String>> SHAPE_KEYS = Map.of(
             "sphere", Set.of("type", "center", "radius", "material", "transform", "interior", "exterior"),
             "mesh", Set.of("type", "file", "material", "transform", "interior", "exterior"), "gltf", Set.of("type", "file", "transform", "interior", "exterior"),
-            "triangles", Set.of("type", "positions", "indices", "normals", "uvs", "material", "transform", "interior", "exterior"));
-    static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "shapes", "environment", "lights", "media");
+            "triangles", Set.of("type", "positions", "indices", "normals", "uvs", "material", "transform", "interior", "exterior"),
+            "instance", Set.of("type", "group", "transform"));
+    static final Set<String> TOP_KEYS = Set.of("camera", "film", "integrator", "materials", "groups", "shapes", "environment", "lights", "media");
     static final Set<String> CAMERA_KEYS = Set.of("lookFrom", "lookAt", "up", "fov", "aperture", "focusDistance", "medium");
     /** The environment types (the object form; an array is a constant radiance) and their keys. */
     static final Map<String, Set<String>> ENVIRONMENT_KEYS = Map.of("envmap", Set.of("type", "file", "scale", "rotate"));
     static final Set<String> FILM_KEYS = Set.of("width", "height", "aovs");
     static final Set<String> INTEGRATOR_KEYS = Set.of("type", "spp", "maxDepth", "seed", "lightSamples", "hemisphere", "photons",
-            "photonRadius");
+            "photonRadius", "noiseThreshold");
 
     private final Path file;
     private final JsonValues v;
+    /** The groups read so far (instances name them), and the one being read (null outside groups). */
+    private final Map<String, List<ShapeSpec>> groups = new LinkedHashMap<>();
+    private String inGroup;
     /** Material names used by shapes, with the line of the use, checked once all materials are known. */
     private final List<Map.Entry<String, Integer>> materialUses = new ArrayList<>();
 
@@ -104,6 +108,20 @@ public final class JsonSceneReader {
                 materials.put(e.getKey(), new JsonMaterials(file, v).material(e.getKey(), e.getValue()));
             }
         }
+        if (top.containsKey("groups")) {
+            for (var e : v.object(top.get("groups"), "groups").entrySet()) {
+                inGroup = e.getKey();
+                List<ShapeSpec> members = new ArrayList<>();
+                for (JsonNode shape : v.array(e.getValue(), "groups." + e.getKey())) {
+                    members.add(shape(shape));
+                }
+                if (members.isEmpty()) {
+                    throw new SceneException(file, e.getValue().line, "'groups." + e.getKey() + "' is empty: a group needs shapes");
+                }
+                groups.put(e.getKey(), members);
+            }
+            inGroup = null;
+        }
         JsonNode shapesNode = v.require(top, "shapes", root);
         List<JsonNode> list = v.array(shapesNode, "shapes");
         if (list.isEmpty()) {
@@ -123,7 +141,7 @@ public final class JsonSceneReader {
         Camera camera = top.containsKey("camera") ? camera(top.get("camera")) : null;
         EnvironmentSpec environment = top.containsKey("environment") ? environment(top.get("environment")) : null;
         SceneSettings settings = settings(top.get("film"), top.get("integrator"));
-        return new SceneDescription(camera, settings, materials, shapes, environment, SceneLights.parse(top.get("lights"), v),
+        return new SceneDescription(camera, settings, materials, groups, shapes, environment, SceneLights.parse(top.get("lights"), v),
                 media.result(top.get("camera")));
     }
 
@@ -134,7 +152,22 @@ public final class JsonSceneReader {
         String type = v.type(s, node, "shapes[]", SHAPE_KEYS.keySet(), "shape", "", "");
         v.allowOnly(s, "shapes[] of type " + type, SHAPE_KEYS.get(type));
         Transform transform = s.containsKey("transform") ? TransformReader.read(v, s.get("transform")) : Transform.IDENTITY;
+        if (inGroup != null && (type.equals("instance") || type.equals("gltf"))) {
+            throw new SceneException(file, node.line, "'groups." + inGroup + "' holds " + (type.equals("instance")
+                    ? "an instance: groups do not nest (place instances in 'shapes')" : "a glTF file: glTF instances its own meshes (place it in 'shapes')"));
+        }
+        if (inGroup != null && (s.containsKey("interior") || s.containsKey("exterior"))) {
+            throw new SceneException(file, node.line, "'groups." + inGroup + "': a shape in a group bounds no media (place it in 'shapes')");
+        }
         switch (type) {
+            case "instance": {
+                JsonNode groupNode = v.require(s, "group", node);
+                String group = v.string(groupNode, "shapes[].group");
+                if (!groups.containsKey(group)) {
+                    throw new SceneException(file, groupNode.line, "unknown group '" + group + "' (define it under 'groups')");
+                }
+                return new SceneDescription.InstanceShape(group, transform);
+            }
             case "mesh", "gltf": {
                 JsonNode fileNode = v.require(s, "file", node);
                 String name = v.string(fileNode, "shapes[].file");
@@ -332,6 +365,7 @@ public final class JsonSceneReader {
                 }
             }
         }
-        return new SceneSettings(width, height, spp, maxDepth, seed, type, lightSamples, hemisphere, photons, photonRadius, SceneSettings.readAovs(film, v));
+        return new SceneSettings(width, height, spp, maxDepth, seed, type, lightSamples, hemisphere, photons, photonRadius,
+                SceneSettings.readAovs(film, v), null, SceneSettings.readNoiseThreshold(integrator, v));
     }
 }

@@ -28,17 +28,19 @@ import org.joml.Vector3dc;
  * @param camera      the camera, or null to frame the scene
  * @param settings    the film and integrator keys
  * @param materials   the named materials, in file order
+ * @param groups      the groups of shapes (not rendered by themselves) that instances show, by name, in file order
  * @param shapes      the shapes, in file order
  * @param environment the environment, or null for the default
  * @param lights      the punctual lights ({@link SceneLights}), in file order
  * @param media       the participating media, the camera's and each shape's ({@link SceneFileMedia})
  */
-record SceneDescription(Camera camera, SceneSettings settings, Map<String, MaterialSpec> materials, List<ShapeSpec> shapes,
-                        EnvironmentSpec environment, List<SceneLights.Light> lights, SceneFileMedia.Media media) {
+record SceneDescription(Camera camera, SceneSettings settings, Map<String, MaterialSpec> materials, Map<String, List<ShapeSpec>> groups,
+                        List<ShapeSpec> shapes, EnvironmentSpec environment, List<SceneLights.Light> lights, SceneFileMedia.Media media) {
 
     SceneDescription {
         Objects.requireNonNull(settings, "settings");
         materials = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(materials));
+        groups = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(groups));
         shapes = List.copyOf(shapes);
         lights = List.copyOf(lights);
         media = Objects.requireNonNull(media, "media");
@@ -46,7 +48,7 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
 
     SceneDescription(Camera camera, SceneSettings settings, Map<String, MaterialSpec> materials, List<ShapeSpec> shapes,
                      EnvironmentSpec environment) {
-        this(camera, settings, materials, shapes, environment, List.of(), SceneFileMedia.Media.NONE);
+        this(camera, settings, materials, Map.of(), shapes, environment, List.of(), SceneFileMedia.Media.NONE);
     }
 
     /**
@@ -168,9 +170,12 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
     }
 
     /** A shape as the file gives it; {@code material} names an entry of {@code materials}. */
-    sealed interface ShapeSpec permits SphereShape, MeshShape, TrianglesShape {
+    sealed interface ShapeSpec permits SphereShape, MeshShape, TrianglesShape, InstanceShape {
         Transform transform();
     }
+
+    /** A group moved by a transform (only in {@code shapes}: groups do not nest). */
+    record InstanceShape(String group, Transform transform) implements ShapeSpec {}
 
     /** An analytic sphere. */
     record SphereShape(Vector3dc center, double radius, String material, Transform transform) implements ShapeSpec {
@@ -233,13 +238,22 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
         Scene.Builder builder = Scene.builder();
         notes.forEach(builder::note);
         SceneFileMedia.define(media, builder, file, folder);
+        for (var g : groups.entrySet()) {
+            builder.beginGroup(g.getKey());
+            for (ShapeSpec shape : g.getValue()) {
+                try {
+                    add(shape, builder, byName, folder);
+                } catch (IllegalArgumentException e) {
+                    throw new SceneException(file, "'groups." + g.getKey() + "': " + e.getMessage());
+                }
+            }
+            builder.endGroup();
+        }
         boolean gltfCamera = false;
         for (int i = 0; i < shapes.size(); i++) {
             ShapeSpec shape = shapes.get(i);
             SceneFileMedia.boundary(media, i, builder);
-            if (shape instanceof SphereShape s) {
-                builder.addSphere(s.center(), s.radius(), byName.get(s.material()), s.transform());
-            } else if (shape instanceof MeshShape m && GltfReader.isGltfFile(Path.of(m.file()))) {
+            if (shape instanceof MeshShape m && GltfReader.isGltfFile(Path.of(m.file()))) {
                 // a glTF asset's camera and lights are used only where the scene has none of its own
                 GltfReader.Asset asset = GltfReader.add(folder.resolve(m.file()), m.transform(), builder);
                 if (camera == null && asset.camera() != null && !gltfCamera) {
@@ -249,12 +263,8 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
                 if (environment == null && lights.isEmpty() && byName.values().stream().noneMatch(Material::isEmissive)) {
                     GltfReader.addLights(asset, builder);
                 }
-            } else if (shape instanceof MeshShape m) {
-                Material material = m.material() == null ? null : byName.get(m.material());
-                MeshFiles.add(folder.resolve(m.file()), material, m.transform(), builder);
             } else {
-                TrianglesShape t = (TrianglesShape) shape;
-                builder.addMesh(t.mesh(), byName.get(t.material()), t.transform());
+                add(shape, builder, byName, folder);
             }
         }
         SceneLights.addTo(lights, builder);
@@ -272,5 +282,20 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
             }
         }
         return builder.build();
+    }
+
+    /** Adds a shape that is not a glTF file: into the open group, or into the scene itself. */
+    private static void add(ShapeSpec shape, Scene.Builder builder, Map<String, Material> byName, Path folder) throws SceneException {
+        if (shape instanceof SphereShape s) {
+            builder.addSphere(s.center(), s.radius(), byName.get(s.material()), s.transform());
+        } else if (shape instanceof InstanceShape i) {
+            builder.addInstance(i.group(), i.transform());
+        } else if (shape instanceof MeshShape m) {
+            Material material = m.material() == null ? null : byName.get(m.material());
+            MeshFiles.add(folder.resolve(m.file()), material, m.transform(), builder);
+        } else {
+            TrianglesShape t = (TrianglesShape) shape;
+            builder.addMesh(t.mesh(), byName.get(t.material()), t.transform());
+        }
     }
 }

@@ -29,13 +29,21 @@ import java.util.Set;
  * @param aovs            the feature buffers to keep ({@code film.aovs}), or null
  * @param aspectRatio     the film's width / height to keep when a command line gives only one of
  *                        them (a glTF camera's {@code aspectRatio}), or null: each on its own
+ * @param noiseThreshold  the noise threshold of adaptive sampling ({@code integrator.noiseThreshold}; 0 = none), or null
  */
 public record SceneSettings(Integer width, Integer height, Integer samplesPerPixel, Integer maxDepth, Long seed,
                             IntegratorKind integrator, Integer lightSamples, HemisphereSampling hemisphere,
-                            Integer photons, Double photonRadius, Set<Aov> aovs, Double aspectRatio) {
+                            Integer photons, Double photonRadius, Set<Aov> aovs, Double aspectRatio, Double noiseThreshold) {
 
     public SceneSettings {
         aovs = aovs == null ? null : Set.copyOf(aovs);
+    }
+
+    /** Settings without a noise threshold. */
+    public SceneSettings(Integer width, Integer height, Integer samplesPerPixel, Integer maxDepth, Long seed, IntegratorKind integrator,
+                         Integer lightSamples, HemisphereSampling hemisphere, Integer photons, Double photonRadius, Set<Aov> aovs,
+                         Double aspectRatio) {
+        this(width, height, samplesPerPixel, maxDepth, seed, integrator, lightSamples, hemisphere, photons, photonRadius, aovs, aspectRatio, null);
     }
 
     /** Settings without an aspect ratio to keep. */
@@ -55,7 +63,7 @@ public record SceneSettings(Integer width, Integer height, Integer samplesPerPix
      * itself, so that the file's value of those is not used.
      */
     public enum Setting {
-        WIDTH, HEIGHT, SAMPLES_PER_PIXEL, MAX_DEPTH, SEED, INTEGRATOR, LIGHT_SAMPLES, HEMISPHERE, PHOTONS, PHOTON_RADIUS, AOVS
+        WIDTH, HEIGHT, SAMPLES_PER_PIXEL, MAX_DEPTH, SEED, INTEGRATOR, LIGHT_SAMPLES, HEMISPHERE, PHOTONS, PHOTON_RADIUS, AOVS, NOISE_THRESHOLD
     }
 
     /** A file that says nothing about rendering (and every OBJ or PLY). */
@@ -96,6 +104,9 @@ public record SceneSettings(Integer width, Integer height, Integer samplesPerPix
         if (seed != null && !given.contains(Setting.SEED)) {
             s = s.withSeed(seed);
         }
+        if (noiseThreshold != null && !given.contains(Setting.NOISE_THRESHOLD)) {
+            s = s.withNoiseThreshold(noiseThreshold);
+        }
         if (integrator != null && !given.contains(Setting.INTEGRATOR)) {
             s = s.withIntegrator(integrator);
         }
@@ -121,6 +132,22 @@ public record SceneSettings(Integer width, Integer height, Integer samplesPerPix
     /** A film side of about {@code pixels}, within the limits of {@link RenderSettings}. */
     public static int filmSide(double pixels) {
         return (int) Math.max(1, Math.min(RenderSettings.MAX_SIZE, Math.round(pixels)));
+    }
+
+    /**
+     * The {@code integrator.noiseThreshold} key of an integrator object the reader has checked
+     * ({@code null}: no integrator): 0 (none) or a number in (0, 1]; null where the key is absent.
+     */
+    static Double readNoiseThreshold(JsonNode integrator, JsonValues v) throws SceneException {
+        JsonNode node = integrator == null ? null : integrator.object().get("noiseThreshold");
+        if (node == null) {
+            return null;
+        }
+        double t = v.number(node, "integrator.noiseThreshold");
+        if (!(t >= 0 && t <= 1)) {
+            throw v.error(node, "'integrator.noiseThreshold' must be 0 (none) or in (0, 1] (0.01 = 1 %), got " + JsonValues.format(t));
+        }
+        return t;
     }
 
     /**

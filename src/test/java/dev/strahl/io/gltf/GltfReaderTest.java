@@ -229,14 +229,30 @@ class GltfReaderTest {
     }
 
     @Test
-    void aMeshUsedByTwoNodesIsFlattenedAndTheMemoryNoted() throws Exception {
+    void aMeshUsedByTwoNodesIsInstancedAndSaid() throws Exception {
         GltfWriter w = new GltfWriter();
         int mesh = w.mesh(TRIANGLE, null, null);
         w.rootNode(map("mesh", mesh));
         w.rootNode(map("mesh", mesh, "translation", List.of(0, 0, 3)));
         Scene scene = SceneLoader.load(w.writeGlb(dir.resolve("instances.glb")));
+        assertThat(World.of(scene).geometry().triangleCount()).isZero();
+        assertThat(World.of(scene).uniqueTriangles()).isEqualTo(1);
+        assertThat(World.of(scene).instancedTriangles()).isEqualTo(2);
+        assertThat(scene.notes()).anyMatch(n -> n.contains("1 mesh is used by several nodes: 2 instances"));
+    }
+
+    @Test
+    void aMeshUsedByTwoNodesOneOfThemShearedIsCopiedAndTheMemoryNoted() throws Exception {
+        GltfWriter w = new GltfWriter();
+        int mesh = w.mesh(TRIANGLE, null, null);
+        w.rootNode(map("mesh", mesh));
+        // A rotated child under a parent scaled unequally: a shear, which an instance's steps cannot give.
+        int child = w.add("nodes", map("mesh", mesh, "rotation", List.of(0, 0, 0.3826834, 0.9238795)));
+        w.rootNode(map("scale", List.of(2, 1, 1), "children", List.of(child)));
+        Scene scene = SceneLoader.load(w.writeGlb(dir.resolve("sheared.glb")));
         assertThat(World.of(scene).geometry().triangleCount()).isEqualTo(2);
-        assertThat(scene.notes()).anyMatch(n -> n.contains("1 mesh is used by several nodes: 2 instances flattened") && n.contains("MiB"));
+        assertThat(World.of(scene).instances().count()).isZero();
+        assertThat(scene.notes()).anyMatch(n -> n.contains("copied per node: 2 copies") && n.contains("MiB"));
     }
 
     @Test

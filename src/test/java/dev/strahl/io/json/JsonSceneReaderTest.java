@@ -388,7 +388,7 @@ class JsonSceneReaderTest {
                   "shapes": [ %s ],
                   "lamps": []
                 }
-                """.formatted(MATERIALS, SPHERE), "unknown key 'lamps' in scene", "camera, environment, film, integrator, lights, materials, media, shapes"),
+                """.formatted(MATERIALS, SPHERE), "unknown key 'lamps' in scene", "camera, environment, film, groups, integrator, lights, materials, media, shapes"),
             bad("unknown key in camera", 6, """
                 {
                   %s
@@ -607,7 +607,7 @@ class JsonSceneReaderTest {
                     { "type": "cube", "size": 1 }
                   ]
                 }
-                """.formatted(MATERIALS), "unknown shape type 'cube'", "known: gltf, mesh, sphere, triangles"),
+                """.formatted(MATERIALS), "unknown shape type 'cube'", "known: gltf, instance, mesh, sphere, triangles"),
             bad("albedo above 1", 3, """
                 {
                   "materials": {

@@ -40,7 +40,7 @@ class SceneFileFormatTest {
               "camera": { "lookFrom": [0, 1, 5], "lookAt": [0, 1, 0], "up": [0, 1, 0], "fov": 35, "aperture": 0.05, "focusDistance": 4.5 },
               "film": { "width": 320, "height": 200, "aovs": ["albedo", "depth"] },
               "integrator": { "type": "direct", "spp": 12, "maxDepth": 3, "seed": 9007199254740993, "lightSamples": 4,
-                              "hemisphere": "uniform", "photons": 2500, "photonRadius": 0.05 },
+                              "hemisphere": "uniform", "photons": 2500, "photonRadius": 0.05, "noiseThreshold": 0.02 },
               "materials": {
                 "lamp":  { "type": "diffuse", "albedo": [0.5, 0.5, 0.5], "emission": [8, 7, 6] },
                 "white": { "type": "diffuse", "albedo": [0.7, 0.7, 0.7] },
@@ -92,7 +92,7 @@ class SceneFileFormatTest {
         SceneFile file = SceneFile.load(everyKey());
         Scene scene = file.scene();
         assertThat(file.settings()).isEqualTo(new SceneSettings(320, 200, 12, 3, 9007199254740993L, IntegratorKind.DIRECT, 4,
-                HemisphereSampling.UNIFORM, 2500, 0.05, java.util.Set.of(dev.strahl.render.Aov.ALBEDO, dev.strahl.render.Aov.DEPTH)));
+                HemisphereSampling.UNIFORM, 2500, 0.05, java.util.Set.of(dev.strahl.render.Aov.ALBEDO, dev.strahl.render.Aov.DEPTH), null, 0.02));
         assertThat(scene.camera().fovDegrees()).isEqualTo(35);
         assertThat(scene.camera().aperture()).isEqualTo(0.05);
         assertThat(scene.camera().focusDistance()).isEqualTo(4.5);
@@ -129,7 +129,7 @@ class SceneFileFormatTest {
         RenderSettings s = file.applyTo(RenderSettings.defaults().withThreads(3));
         assertThat(s).isEqualTo(RenderSettings.defaults().withThreads(3).withSize(320, 200).withSamplesPerPixel(12).withMaxDepth(3)
                 .withSeed(9007199254740993L).withIntegrator(IntegratorKind.DIRECT).withLightSamples(4)
-                .withHemisphere(HemisphereSampling.UNIFORM).withPhotons(new PhotonParameters(2500, 0.05))
+                .withHemisphere(HemisphereSampling.UNIFORM).withPhotons(new PhotonParameters(2500, 0.05)).withNoiseThreshold(0.02)
                 .withAovs(java.util.EnumSet.of(dev.strahl.render.Aov.ALBEDO, dev.strahl.render.Aov.DEPTH)));
         assertThat(SceneSettings.NONE.applyTo(RenderSettings.defaults())).isEqualTo(RenderSettings.defaults());
         RenderSettings halfGiven = new SceneSettings(100, null, null, null, null, null, null, null, null, null)
@@ -174,7 +174,7 @@ class SceneFileFormatTest {
                 "maxDepth", "seed", "lightSamples", "hemisphere", "photons", "photonRadius", "materials", "albedo", "emission", "reflectance", "ior",
                 "diffuse", "specular", "exponent", "shapes", "file", "material", "transform", "scale", "rotate", "axis", "degrees",
                 "translate", "positions", "indices", "normals", "center", "radius", "environment", "lights", "position", "direction",
-                "intensity", "irradiance", "innerCone", "outerCone", "aovs")) {
+                "intensity", "irradiance", "innerCone", "outerCone", "aovs", "noiseThreshold")) {
             assertThat(written).as("key %s", key).contains("\"" + key + "\"");
         }
         assertThat(SceneFileWriter.write(again)).isEqualTo(written);
@@ -211,7 +211,7 @@ class SceneFileFormatTest {
     static Stream<Arguments> badScenes() {
         return Stream.of(
             bad(3, "\"film\": { \"width\": 64, \"depth\": 3 },", "unknown key 'depth' in film (known: aovs, height, width)"),
-            bad(3, "\"film\": { \"aovs\": [\"albedo\", \"variance\"] },", "'film.aovs': unknown feature buffer 'variance': use albedo, normal or depth"),
+            bad(3, "\"film\": { \"aovs\": [\"albedo\", \"variance\"] },", "'film.aovs': unknown feature buffer 'variance': use albedo, normal, depth or spp"),
             bad(3, "\"film\": { \"aovs\": [\"depth\", \"depth\"] },", "'film.aovs' names 'depth' twice"),
             bad(3, "\"film\": { \"aovs\": \"albedo\" },", "'film.aovs' must be an array, got a string"),
             bad(3, "\"lights\": { \"type\": \"point\" },", "'lights' must be an array, got an object"),
@@ -232,8 +232,11 @@ class SceneFileFormatTest {
             bad(3, "\"film\": { \"height\": 0 },", "'film.height' must be in [1, 32768], got 0"),
             bad(3, "\"film\": { \"width\": \"wide\" },", "'film.width' must be a number, got a string"),
             bad(3, "\"integrator\": { \"samples\": 4 },",
-                    "unknown key 'samples' in integrator (known: hemisphere, lightSamples, maxDepth, photonRadius, photons, seed, spp, type)"),
+                    "unknown key 'samples' in integrator (known: hemisphere, lightSamples, maxDepth, noiseThreshold, photonRadius, photons, seed, spp, type)"),
             bad(3, "\"integrator\": { \"spp\": 0 },", "'integrator.spp' must be >= 1, got 0"),
+            bad(3, "\"integrator\": { \"noiseThreshold\": -0.01 },", "'integrator.noiseThreshold' must be 0 (none) or in (0, 1] (0.01 = 1 %), got -0.01"),
+            bad(3, "\"integrator\": { \"noiseThreshold\": 1.5 },", "'integrator.noiseThreshold' must be 0 (none) or in (0, 1] (0.01 = 1 %), got 1.5"),
+            bad(3, "\"integrator\": { \"noiseThreshold\": \"low\" },", "'integrator.noiseThreshold' must be a number, got a string"),
             bad(3, "\"integrator\": { \"maxDepth\": 0 },", "'integrator.maxDepth' must be -1 (unbounded) or >= 1, got 0"),
             bad(3, "\"integrator\": { \"maxDepth\": -2 },", "'integrator.maxDepth' must be >= -1, got -2"),
             bad(3, "\"integrator\": { \"seed\": 1.5 },", "'integrator.seed' must be a whole number, got 1.5"),
@@ -264,7 +267,7 @@ class SceneFileFormatTest {
                     "unknown material 'n' (define it under 'materials')"),
             shape("{ \"type\": \"mesh\", \"file\": \"tri.stl\" }", "'shapes[].file' must name an .obj or .ply file, got 'tri.stl'"),
             shape("{ \"type\": \"mesh\", \"file\": \"none.ply\" }", "mesh file not found: "),
-            shape("{ \"type\": \"cube\" }", "unknown shape type 'cube' (known: gltf, mesh, sphere, triangles)"),
+            shape("{ \"type\": \"cube\" }", "unknown shape type 'cube' (known: gltf, instance, mesh, sphere, triangles)"),
             transform("{ \"translate\": [1, 2, 3] }", "'shapes[].transform' must be an array, got an object"),
             transform("[ { \"translate\": [1, 2, 3], \"scale\": 2 } ]",
                     "each step of 'shapes[].transform' must have exactly one key of rotate, scale, translate, got scale, translate"),

@@ -48,6 +48,17 @@ final class SceneFileWriter {
             material(e.getValue());
         }
         g.writeEndObject();
+        if (!d.groups().isEmpty()) {
+            g.writeObjectFieldStart("groups");
+            for (var e : d.groups().entrySet()) {
+                g.writeArrayFieldStart(e.getKey());
+                for (ShapeSpec s : e.getValue()) {
+                    shape(s, null);
+                }
+                g.writeEndArray();
+            }
+            g.writeEndObject();
+        }
         g.writeArrayFieldStart("shapes");
         for (int i = 0; i < d.shapes().size(); i++) {
             shape(d.shapes().get(i), d.media().boundary(i));
@@ -159,7 +170,7 @@ final class SceneFileWriter {
             g.writeEndObject();
         }
         if (s.integrator() == null && s.samplesPerPixel() == null && s.maxDepth() == null && s.seed() == null
-                && s.lightSamples() == null && s.hemisphere() == null && s.photons() == null && s.photonRadius() == null) {
+                && s.lightSamples() == null && s.hemisphere() == null && s.photons() == null && s.photonRadius() == null && s.noiseThreshold() == null) {
             return;
         }
         g.writeObjectFieldStart("integrator");
@@ -186,6 +197,9 @@ final class SceneFileWriter {
         }
         if (s.photonRadius() != null) {
             g.writeNumberField("photonRadius", s.photonRadius());
+        }
+        if (s.noiseThreshold() != null) {
+            g.writeNumberField("noiseThreshold", s.noiseThreshold());
         }
         g.writeEndObject();
     }
@@ -295,6 +309,9 @@ final class SceneFileWriter {
             vector(s.center());
             g.writeNumberField("radius", s.radius());
             g.writeStringField("material", s.material());
+        } else if (shape instanceof SceneDescription.InstanceShape i) {
+            g.writeStringField("type", "instance");
+            g.writeStringField("group", i.group());
         } else if (shape instanceof SceneDescription.MeshShape m) {
             g.writeStringField("type", "mesh");
             g.writeStringField("file", m.file());

@@ -28,12 +28,12 @@ import org.junit.jupiter.api.Test;
 class SceneSettingsTest {
     /** A file that sets every key, each to a value unlike the command line's below. */
     static final SceneSettings EVERY_KEY = new SceneSettings(320, 160, 8, 3, 42L, IntegratorKind.DIRECT, 4, HemisphereSampling.UNIFORM, 2000, 0.1,
-            Set.of(Aov.ALBEDO, Aov.DEPTH));
+            Set.of(Aov.ALBEDO, Aov.DEPTH), null, 0.05);
     /** A command line with a value for every setting and for settings a file cannot give (threads, culling, pass size, time limit). */
     static final RenderSettings COMMAND_LINE = RenderSettings.defaults().withSize(200, 100).withSamplesPerPixel(256).withMaxDepth(5)
             .withSeed(9).withIntegrator(IntegratorKind.WHITTED).withLightSamples(2).withHemisphere(HemisphereSampling.COSINE)
             .withThreads(3).withCullBackFaces(true).withSamplesPerPass(2).withTimeLimit(Duration.ofSeconds(7))
-            .withPhotons(new PhotonParameters(5000, 0.25)).withAovs(EnumSet.of(Aov.NORMAL));
+            .withPhotons(new PhotonParameters(5000, 0.25)).withAovs(EnumSet.of(Aov.NORMAL)).withNoiseThreshold(0.01);
 
     /** Each setting's value in a RenderSettings. */
     static final Map<Setting, Function<RenderSettings, Object>> VALUE = new EnumMap<>(Map.ofEntries(
@@ -47,7 +47,8 @@ class SceneSettingsTest {
             Map.entry(Setting.LIGHT_SAMPLES, r -> r.transport().lightSamples()),
             Map.entry(Setting.HEMISPHERE, r -> r.transport().hemisphere()),
             Map.entry(Setting.PHOTONS, r -> r.transport().photons().photonsPerIteration()),
-            Map.entry(Setting.PHOTON_RADIUS, r -> r.transport().photons().initialRadius())));
+            Map.entry(Setting.PHOTON_RADIUS, r -> r.transport().photons().initialRadius()),
+            Map.entry(Setting.NOISE_THRESHOLD, r -> r.sampling().noiseThreshold())));
 
     @Test
     void withNothingGivenTheFileReplacesEverySettingItHas() throws Exception {
@@ -55,7 +56,7 @@ class SceneSettingsTest {
         assertThat(s).isEqualTo(EVERY_KEY.applyTo(COMMAND_LINE));
         assertThat(s).isEqualTo(COMMAND_LINE.withSize(320, 160).withSamplesPerPixel(8).withMaxDepth(3).withSeed(42)
                 .withIntegrator(IntegratorKind.DIRECT).withLightSamples(4).withHemisphere(HemisphereSampling.UNIFORM)
-                .withPhotons(new PhotonParameters(2000, 0.1)).withAovs(EnumSet.of(Aov.ALBEDO, Aov.DEPTH)));
+                .withPhotons(new PhotonParameters(2000, 0.1)).withAovs(EnumSet.of(Aov.ALBEDO, Aov.DEPTH)).withNoiseThreshold(0.05));
         assertThat(SceneSettings.NONE.applyTo(COMMAND_LINE, Set.of())).as("a file that says nothing").isEqualTo(COMMAND_LINE);
     }
 
