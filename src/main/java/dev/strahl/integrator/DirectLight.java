@@ -2,6 +2,7 @@ package dev.strahl.integrator;
 
 import dev.strahl.color.MutableRgb;
 import dev.strahl.accel.Aggregate;
+import dev.strahl.accel.RayBatch;
 import dev.strahl.accel.TraversalStack;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
@@ -55,6 +56,7 @@ public final class DirectLight {
     private final Vector3d origin = new Vector3d();
     private final SurfacePoint lightPoint = new SurfacePoint();
     private final LightSample ls = new LightSample();
+    private final ShadowQuery query = new ShadowQuery();
     private final Ray shadow = new Ray();
     private final Vector3d wiLocal = new Vector3d();
     private final Vector3d toSurface = new Vector3d();
@@ -77,40 +79,78 @@ public final class DirectLight {
      * over them to {@code out}: w = 1 for {@link Use#LIGHT_ONLY} and {@link Use#UNOCCLUDED}; for
      * {@link Use#MIS} the power heuristic with sample counts against one BSDF sample (Veach 1997,
      * eq. 9.13), (n·pl)² / ((n·pl)² + pb²). Only {@link Use#UNOCCLUDED} skips the shadow rays.
+     * Each sample is {@link #prepare} then {@link #resolve}: the path tracer's wavefront does the
+     * two apart, with every shadow ray of a batch traced in between.
      */
     public void add(Shading s, Sampler sampler, int n, Use use, MutableRgb beta, MutableRgb out) {
-        Bsdf bsdf = s.bsdf;
-        boolean estimate = use != Use.DRAW_ONLY && !bsdf.isDelta() && !lights.isEmpty();
-        boolean lightAlone = use != Use.MIS;
-        boolean shadows = use != Use.UNOCCLUDED;
+        boolean estimate = estimates(s, use);
         double scale = 1.0 / n;
         for (int i = 0; i < n; i++) {
             sampler.get2D(uPoint);                 // the point on the light: one stratified pair
             double uLight = sampler.get1D();
-            if (!estimate || !lights.sample(s.sp.p, s.sp.n, uLight, uPoint.u1, uPoint.u2, lightAlone, lightPoint, ls)) {
-                continue;
+            if (estimate && prepare(s, uPoint.u1, uPoint.u2, uLight, use, n, scale, beta, query)) {
+                resolve(query, out);
             }
-            s.frame.toLocal(ls.wi, wiLocal);
-            if (ls.wi.dot(s.sp.ng) * wiLocal.z <= 0) {
-                continue;                          // shading and geometric normal disagree: no leaks
-            }
-            bsdf.eval(s.sp.uv, s.woLocal, wiLocal, f);
-            if (f.isBlack() || shadows && !visible(s.sp)) {
-                continue;
-            }
-            double w = lightAlone || ls.delta ? 1 : MathUtil.powerHeuristic(n * ls.pdf, bsdf.pdf(s.sp.uv, s.woLocal, wiLocal));
-            f.mul(ls.radiance);
-            out.addProduct(beta, f, Math.abs(wiLocal.z) * w * scale / ls.pdf);
         }
     }
 
-    /** Whether the sampled light point (or, for the environment, the way out along wi) is visible from sp (both ends moved off their surfaces). */
-    private boolean visible(SurfacePoint sp) {
+    /** Whether light samples at {@code s} estimate anything: not at a pure delta BSDF, nor without lights, nor for {@link Use#DRAW_ONLY}. */
+    public boolean estimates(Shading s, Use use) {
+        return use != Use.DRAW_ONLY && !s.bsdf.isDelta() && !lights.isEmpty();
+    }
+
+    /**
+     * Makes the shadow query of one light sample at {@code s} (where {@link #estimates} holds),
+     * from its numbers: a pair (u1, u2) for the point on the light and uLight for the choice of
+     * light. Returns false if the sample adds nothing whatever stands in its way; otherwise
+     * {@code q} holds the contribution beta·f·Le·|cosθi|·w·scale/pdf and the shadow ray that
+     * decides it (none for {@link Use#UNOCCLUDED}), for {@link #resolve}.
+     */
+    public boolean prepare(Shading s, double u1, double u2, double uLight, Use use, int n, double scale, MutableRgb beta, ShadowQuery q) {
+        boolean lightAlone = use != Use.MIS;
+        if (!lights.sample(s.sp.p, s.sp.n, uLight, u1, u2, lightAlone, lightPoint, ls)) {
+            return false;
+        }
+        s.frame.toLocal(ls.wi, wiLocal);
+        if (ls.wi.dot(s.sp.ng) * wiLocal.z <= 0) {
+            return false;                          // shading and geometric normal disagree: no leaks
+        }
+        Bsdf bsdf = s.bsdf;
+        bsdf.eval(s.sp.uv, s.woLocal, wiLocal, f);
+        if (f.isBlack()) {
+            return false;
+        }
+        q.traced = use != Use.UNOCCLUDED;
+        if (q.traced && !shadowRay(s.sp, q.ray)) {
+            return false;
+        }
+        double w = lightAlone || ls.delta ? 1 : MathUtil.powerHeuristic(n * ls.pdf, bsdf.pdf(s.sp.uv, s.woLocal, wiLocal));
+        f.mul(ls.radiance);
+        double k = Math.abs(wiLocal.z) * w * scale / ls.pdf;
+        q.contribution.set(beta.r * f.r * k, beta.g * f.g * k, beta.b * f.b * k);   // addProduct's order: the same bits
+        return true;
+    }
+
+    /** Adds a prepared query's contribution to {@code out} unless its shadow ray is blocked (tracing it; it may move the ray's origin). */
+    public void resolve(ShadowQuery q, MutableRgb out) {
+        if (!q.traced || !occluded(q.ray)) {
+            out.r += q.contribution.r;
+            out.g += q.contribution.g;
+            out.b += q.contribution.b;
+        }
+    }
+
+    /**
+     * The shadow ray from sp to the sampled light point (or, for the environment, the way out along
+     * wi), both ends moved off their surfaces, into {@code shadow}; false where the two coincide
+     * (nothing to trace: the sample counts as blocked).
+     */
+    private boolean shadowRay(SurfacePoint sp, Ray shadow) {
         sp.spawnOrigin(ls.wi, shadow.o);
         if (ls.infinite) {
             shadow.d.set(ls.wi);
             shadow.tMax = Double.POSITIVE_INFINITY;
-            return !occluded(shadow);
+            return true;
         }
         if (ls.delta) {
             target.set(ls.p);                      // a point light is no surface: nothing to move off
@@ -125,7 +165,7 @@ public final class DirectLight {
         }
         shadow.d.div(dist);
         shadow.tMax = dist;
-        return !occluded(shadow);
+        return true;
     }
 
     /**
@@ -133,14 +173,35 @@ public final class DirectLight {
      * cut-outs, a blocked ray is traced again hit by hit (closest hits), past every cut-away
      * surface, and counts as blocked only by a surface that is there. May move the ray's origin.
      */
-    private boolean occluded(Ray ray) {
+    boolean occluded(Ray ray) {
         rays++;
-        if (!bvh.occluded(ray, stack)) {
-            return false;
-        }
+        return bvh.occluded(ray, stack) && (!cutouts || blockedPastCutouts(ray));
+    }
+
+    /**
+     * Whether each of shadow rays [0, n) of {@code batch} is blocked, into {@code batch.occluded}:
+     * {@link #occluded(Ray)} of each, the first any-hit query of all of them at once (the
+     * aggregate's batch query), then the cut-outs ray by ray.
+     */
+    void occluded(RayBatch batch, int n) {
+        rays += n;
+        bvh.occluded(batch, 0, n, stack);
         if (!cutouts) {
-            return true;
+            return;
         }
+        Ray ray = shadow;
+        for (int i = 0; i < n; i++) {
+            if (batch.occluded[i]) {
+                ray.o.set(batch.ox[i], batch.oy[i], batch.oz[i]);
+                ray.d.set(batch.dx[i], batch.dy[i], batch.dz[i]);
+                ray.tMax = batch.tMax[i];
+                batch.occluded[i] = blockedPastCutouts(ray);
+            }
+        }
+    }
+
+    /** For a shadow ray found blocked: whether it still is when cut-away surfaces let it pass (tracing on hit by hit; may move its origin). */
+    private boolean blockedPastCutouts(Ray ray) {
         double tMax = ray.tMax;
         origin.set(ray.o);
         for (int pass = 0; pass < Tracer.MAX_PASSES; pass++) {

@@ -101,7 +101,12 @@ public final class Shading {
     public boolean sampleBsdf(Sampler sampler) {
         double uc = sampler.get1D();
         sampler.get2D(uDirection);
-        if (!bsdf.sample(sp.uv, woLocal, uc, uDirection.u1, uDirection.u2, bs)) {
+        return sampleBsdf(uc, uDirection.u1, uDirection.u2);
+    }
+
+    /** {@link #sampleBsdf(Sampler)} with its numbers given: uc for the lobe, (u1, u2) for the direction. */
+    boolean sampleBsdf(double uc, double u1, double u2) {
+        if (!bsdf.sample(sp.uv, woLocal, uc, u1, u2, bs)) {
             return false;
         }
         frame.toWorld(bs.wi, wi);

@@ -1,6 +1,7 @@
 package dev.strahl.integrator;
 
 import dev.strahl.accel.Aggregate;
+import dev.strahl.accel.RayBatch;
 import dev.strahl.accel.TraversalStack;
 import dev.strahl.geometry.Hit;
 import dev.strahl.geometry.Ray;
@@ -56,9 +57,26 @@ public final class Tracer {
         rays++;
         hit.reset();
         double tMax = ray.tMax;
+        // the query itself, not through closestHit: one call level less keeps the SIMD kernel's vectors inlined (none allocated)
         if (!bvh.intersect(ray, hit, stack, cullBackFaces)) {
             return -1;
         }
+        return settle(ray, tMax, hit, s);
+    }
+
+    /** The closest hits of rays [0, n) of {@code batch} at once (the aggregate's batch query), into its hit arrays. */
+    void closestHits(RayBatch batch, int n) {
+        rays += n;
+        bvh.intersect(batch, 0, n, stack, cullBackFaces);
+    }
+
+    /**
+     * Sets up {@code s} at the closest hit found for {@code ray} (by {@link #trace} or a batch query), whose tMax was
+     * {@code tMax} before the query, and returns its distance; in a world with cut-outs, passes the
+     * cut-away surfaces first (tracing on; -1 if nothing is left). The ray's origin and direction
+     * are as they were afterwards.
+     */
+    double settle(Ray ray, double tMax, Hit hit, Shading s) {
         if (!cutouts) {
             s.at(ray, hit, world, bsdfs);
             return hit.t;
@@ -68,7 +86,7 @@ public final class Tracer {
             s.setUp(ray, world, bsdfs);
             return hit.t;
         }
-        return passCutouts(ray, tMax, s);
+        return passCutouts(ray, tMax, s, hit);
     }
 
     private boolean cutAway(Shading s) {
@@ -77,7 +95,7 @@ public final class Tracer {
     }
 
     /** Continues the ray past cut-away surfaces (s.sp holds the first) to the first surface that is there. */
-    private double passCutouts(Ray ray, double tMax, Shading s) {
+    private double passCutouts(Ray ray, double tMax, Shading s, Hit hit) {
         origin.set(ray.o);
         for (int pass = 0; pass < MAX_PASSES; pass++) {
             s.sp.spawnOrigin(ray.d, ray.o);

@@ -219,9 +219,7 @@ public final class PhotonMapper implements Integrator {
                 etaScale *= s.bs.eta * s.bs.eta;
                 s.spawn(ray, s.wi);
                 if (depth >= PathTracer.RR_DEPTH) {
-                    // As in PathTracer: the roulette sees the throughput without the radiance
-                    // scaling 1/η'² of the refractions, which leaving the glass undoes.
-                    double q = Math.min(beta.max() * etaScale, 0.95);
+                    double q = PathTracer.survival(beta, etaScale);
                     if (!(sampler.get1D() < q)) {
                         return;
                     }

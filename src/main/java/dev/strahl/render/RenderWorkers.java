@@ -5,6 +5,7 @@ import dev.strahl.film.Film;
 import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
 import dev.strahl.integrator.Parallel;
+import dev.strahl.integrator.PathWavefront;
 import dev.strahl.scene.Scene;
 import dev.strahl.world.World;
 import java.util.ArrayList;
@@ -57,15 +58,17 @@ final class RenderWorkers implements Parallel, PassRunner {
         boolean cull = settings.transport().cullBackFaces();
         return new RenderWorkers(film, CameraRays.of(scene.camera(), settings.output().width(), settings.output().height()), integrator,
                 settings.output().keepsFeatures() ? () -> new FeatureTracer(world, cull) : null, settings.sampling().seed(),
-                settings.execution().effectiveThreads(), settings.execution().stripes(), name);
+                settings.execution().effectiveThreads(), settings.execution().stripes(), name, WavefrontLoop.batch());
     }
 
     /**
      * Workers of one job; they also trace the feature buffers of every camera sample when
      * {@code features} (else null) makes a tracer per thread (the film must then keep features).
+     * With {@code wavefrontBatch} above 0 an integrator that has a wavefront renders batches of that
+     * many paths ({@link WavefrontLoop}; the same bits).
      */
     RenderWorkers(Film film, CameraRays cameraRays, Integrator integrator, Supplier<FeatureTracer> features, long seed, int threads,
-                  boolean stripes, String name) {
+                  boolean stripes, String name, int wavefrontBatch) {
         if (features != null && !film.hasFeatures()) {
             throw new IllegalArgumentException("feature buffers need a film that keeps them");
         }
@@ -82,7 +85,9 @@ final class RenderWorkers implements Parallel, PassRunner {
         });
         this.workers = new SampleLoop.WorkerState[threads];
         for (int i = 0; i < threads; i++) {
-            workers[i] = new SampleLoop.WorkerState(i, integrator.newWorker(), SampleLoop.newSampler(stratified, seed), features != null ? features.get() : null);
+            PathWavefront wavefront = WavefrontLoop.of(integrator, wavefrontBatch, stratified, seed);
+            workers[i] = new SampleLoop.WorkerState(i, wavefront != null ? wavefront.worker() : integrator.newWorker(),
+                    SampleLoop.newSampler(stratified, seed), features != null ? features.get() : null, wavefront);
         }
     }
 
@@ -301,8 +306,19 @@ final class RenderWorkers implements Parallel, PassRunner {
         }
     }
 
-    /** Samples [firstSample, endSample) of every pixel of the rectangle [x0, x1) × [y0, y1) (that {@code only} renders, if not null). */
+    /**
+     * Samples [firstSample, endSample) of every pixel of the rectangle [x0, x1) × [y0, y1) (that {@code only} renders, if not null):
+     * through the wavefront where this worker has one and every pixel renders (adaptive sampling's passes render one sample at a time).
+     */
     private void renderRect(SampleLoop.WorkerState w, int x0, int y0, int x1, int y1, int firstSample, int endSample, NoiseTarget only) {
+        if (w.wavefront != null && only == null) {
+            long[] invalid = {0};
+            tally.samples.addAndGet(WavefrontLoop.renderRect(w, cameraRays, seed, film, x0, y0, x1, y1, 0, 0, firstSample, endSample, invalid));
+            if (invalid[0] > 0) {
+                tally.invalid.addAndGet(invalid[0]);
+            }
+            return;
+        }
         long invalid = 0;
         for (int y = y0; y < y1 && !cancelled; y++) {
             long rowSamples = 0;

@@ -4,6 +4,7 @@ import dev.strahl.camera.CameraRays;
 import dev.strahl.film.Film;
 import dev.strahl.integrator.FeatureTracer;
 import dev.strahl.integrator.Integrator;
+import dev.strahl.integrator.PathWavefront;
 import dev.strahl.scene.Scene;
 import dev.strahl.units.UnitRenderer;
 import dev.strahl.units.UnitService;
@@ -83,8 +84,9 @@ final class UnitRenderers implements UnitService {
         public void render(WorkUnit unit) {
             SampleLoop.WorkerState w = idle.poll();
             if (w == null) {
-                w = new SampleLoop.WorkerState(0, integrator.newWorker(), SampleLoop.newSampler(stratified, seed),
-                        features != null ? features.get() : null);
+                PathWavefront wavefront = WavefrontLoop.of(integrator, WavefrontLoop.batch(), stratified, seed);
+                w = new SampleLoop.WorkerState(0, wavefront != null ? wavefront.worker() : integrator.newWorker(),
+                        SampleLoop.newSampler(stratified, seed), features != null ? features.get() : null, wavefront);
             }
             try {
                 long raysBefore = w.integrator.rayCount();
@@ -97,25 +99,63 @@ final class UnitRenderers implements UnitService {
                 int[] counts = unit.counts();
                 double[] sums = unit.sums();
                 double[] state = new double[perPixel];
-                int invalid = 0;
-                for (int ty = 0; ty < unit.height(); ty++) {
-                    for (int tx = 0; tx < unit.width(); tx++) {
-                        int i = ty * unit.width() + tx;
+                long invalid = 0;
+                if (w.wavefront != null && rendersEveryPixel(unit)) {
+                    forEachPixel(unit, (tx, ty, i) -> {
                         System.arraycopy(sums, perPixel * i, state, 0, perPixel);
                         tile.restorePixel(tx, ty, counts[i], state);
-                        if (!unit.renders(i)) {
-                            continue;                              // converged: its state goes back as it came
-                        }
-                        int s0 = Math.max(unit.firstSample(), counts[i]);
-                        invalid += SampleLoop.samplePixel(w, rays, seed, tile, tile.pixelIndex(tx, ty), unit.x0() + tx, unit.y0() + ty,
-                                s0, unit.endSample());
+                    });
+                    long[] invalidOnes = {0};
+                    WavefrontLoop.renderRect(w, rays, seed, tile, 0, 0, unit.width(), unit.height(), unit.x0(), unit.y0(),
+                            unit.firstSample(), unit.endSample(), invalidOnes);
+                    invalid = invalidOnes[0];
+                    forEachPixel(unit, (tx, ty, i) -> {
                         counts[i] = tile.pixelState(tx, ty, state);
                         System.arraycopy(state, 0, sums, perPixel * i, perPixel);
+                    });
+                } else {
+                    for (int ty = 0; ty < unit.height(); ty++) {
+                        for (int tx = 0; tx < unit.width(); tx++) {
+                            int i = ty * unit.width() + tx;
+                            System.arraycopy(sums, perPixel * i, state, 0, perPixel);
+                            tile.restorePixel(tx, ty, counts[i], state);
+                            if (!unit.renders(i)) {
+                                continue;                              // converged: its state goes back as it came
+                            }
+                            int s0 = Math.max(unit.firstSample(), counts[i]);
+                            invalid += SampleLoop.samplePixel(w, rays, seed, tile, tile.pixelIndex(tx, ty), unit.x0() + tx, unit.y0() + ty,
+                                    s0, unit.endSample());
+                            counts[i] = tile.pixelState(tx, ty, state);
+                            System.arraycopy(state, 0, sums, perPixel * i, perPixel);
+                        }
                     }
                 }
-                unit.recordFigures(invalid, w.integrator.rayCount() - raysBefore);
+                unit.recordFigures((int) invalid, w.integrator.rayCount() - raysBefore);
             } finally {
                 idle.add(w);
+            }
+        }
+    }
+
+    /** Whether the unit renders all its pixels (adaptive sampling leaves converged ones out: those units go one sample at a time). */
+    private static boolean rendersEveryPixel(WorkUnit unit) {
+        for (int i = 0; i < unit.width() * unit.height(); i++) {
+            if (!unit.renders(i)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private interface PixelVisitor {
+        void visit(int tx, int ty, int index);
+    }
+
+    /** Each pixel of the unit's tile in row order, with its index in the unit's arrays. */
+    private static void forEachPixel(WorkUnit unit, PixelVisitor visitor) {
+        for (int ty = 0; ty < unit.height(); ty++) {
+            for (int tx = 0; tx < unit.width(); tx++) {
+                visitor.visit(tx, ty, ty * unit.width() + tx);
             }
         }
     }

@@ -32,4 +32,27 @@ class ExecutionOptionsTest {
         CommandLine.ParseResult parsed = cl.parseArgs(args);
         assertThat(parsed.subcommand().matchedOptionValue("--simd", SimdOption.Mode.on)).isEqualTo(SimdOption.Mode.off);
     }
+
+    /** --wavefront on sets the property the render jobs read while the command runs, and puts back what was there. */
+    @ParameterizedTest
+    @ValueSource(strings = {"render", "view", "worker"})
+    void wavefrontIsInTheExecutionSectionAndHoldsWhileTheCommandRuns(String command) {
+        CommandLine sub = Main.commandLine().getSubcommands().get(command);
+        assertThat(sub.getCommandSpec().argGroups()).anySatisfy(g -> {
+            assertThat(g.heading()).contains("Execution");
+            assertThat(g.options()).anySatisfy(o -> assertThat(o.longestName()).isEqualTo("--wavefront"));
+        });
+        ExecutionOptions options = new ExecutionOptions();
+        new CommandLine(options).parseArgs("--wavefront", "on");
+        String before = System.getProperty(dev.strahl.integrator.PathWavefront.PROPERTY);
+        try (SimdOption.Scope scope = options.apply()) {
+            assertThat(System.getProperty(dev.strahl.integrator.PathWavefront.PROPERTY)).isEqualTo("on");
+        }
+        assertThat(System.getProperty(dev.strahl.integrator.PathWavefront.PROPERTY)).isEqualTo(before);
+        ExecutionOptions none = new ExecutionOptions();
+        new CommandLine(none).parseArgs();
+        try (SimdOption.Scope scope = none.apply()) {
+            assertThat(System.getProperty(dev.strahl.integrator.PathWavefront.PROPERTY)).isEqualTo(before);
+        }
+    }
 }
