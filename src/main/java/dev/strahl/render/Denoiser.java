@@ -14,8 +14,8 @@ import java.util.Objects;
  *       input and output, matching OIDN's own result within 1e-4 per pixel. It uses the albedo
  *       and normal buffers when present (the normal only together with the albedo). About 0.8
  *       CPU-seconds for a 512x512 image (the first call in a process also reads the weights
- *       and compiles the code: about 3; after a render in the same JVM, for now, about 27 with
- *       the Vector API: docs/denoising.md, Time); large images are denoised in overlapping tiles, so
+ *       and compiles the code: about 3; also about 0.9 after a render in the same JVM:
+ *       docs/denoising.md, Time); large images are denoised in overlapping tiles, so
  *       memory stays bounded (at most a quarter of the heap).</li>
  *   <li>{@link #atrous()}: an edge-avoiding à-trous wavelet filter (Dammertz et al. 2010) on
  *       the image divided by the albedo, guided by the normal, depth and albedo buffers and by

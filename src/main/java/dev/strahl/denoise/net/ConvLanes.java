@@ -13,6 +13,16 @@ import jdk.incubator.vector.VectorSpecies;
  * multiple of two vectors); rows narrower than two vectors go to {@link Conv3x3#scalarPixels}.
  * Only loaded when the JVM has the module ({@link Conv3x3#LANES}).
  *
+ * <p>Every vector a method is called on has its class checked against {@link #TYPE} first. On
+ * JDK 17, C2 parses the Vector API's operations before it knows what class of vector they
+ * return; a call on such a vector ({@code v.fma}, {@code r.intoArray}) is bound by the type
+ * profile of the API's shared code, which other vector code in the JVM fills too (the BVH's
+ * kernel: 128- and 256-bit floats). Seen with two classes, C2 compiles both and merges them, and
+ * the accumulators are boxed at every multiply-add (54 MB per 32-channel 16x64 convolution,
+ * 50x slower); with three, each store goes through a call. A failed class check would be a bug
+ * of the JVM; C2 takes the check, which is never false, as proof of the class, binds the calls
+ * from it and drops it.
+ *
  * <p>Lanes: the platform's preferred width (512 bits with AVX-512), or 256 with
  * {@code -Dstrahl.denoise.lanes=256} (docs/denoising.md compares them). Eight channels by two
  * vectors measured 90-107 GFLOP/s per core on a 73- and a 128-channel layer, four by two 63-88.
@@ -21,6 +31,8 @@ final class ConvLanes {
     private static final VectorSpecies<Float> S = "256".equals(System.getProperty("strahl.denoise.lanes"))
             ? FloatVector.SPECIES_256 : FloatVector.SPECIES_PREFERRED;
     private static final int L = S.length();
+    /** The class of S's vectors. */
+    private static final Class<?> TYPE = S.vectorType();
 
     private ConvLanes() {
     }
@@ -84,6 +96,9 @@ final class ConvLanes {
                 for (int kx = 0; kx < 3; kx++, wi += 8) {
                     FloatVector v0 = FloatVector.fromArray(S, d, r + kx);
                     FloatVector v1 = FloatVector.fromArray(S, d, r + kx + L);
+                    if (v0.getClass() != TYPE || v1.getClass() != TYPE) {
+                        throw notOwnClass();
+                    }
                     FloatVector k = FloatVector.broadcast(S, w[wi]);
                     a00 = v0.fma(k, a00);
                     a01 = v1.fma(k, a01);
@@ -112,38 +127,94 @@ final class ConvLanes {
             }
         }
         // The stores written out: a helper taking vectors would box them when C2 does not inline it.
+        FloatVector zero = FloatVector.zero(S), v;
+        if (zero.getClass() != TYPE) {
+            throw notOwnClass();
+        }
         float[] out = dst.data;
         int at = dst.at(o, y, x);
         int p = dst.plane;
-        a00.max(0f).intoArray(out, at);
-        a01.max(0f).intoArray(out, at + L);
+        if ((v = zero.max(a00)).getClass() != TYPE) {
+            throw notOwnClass();
+        }
+        v.intoArray(out, at);
+        if ((v = zero.max(a01)).getClass() != TYPE) {
+            throw notOwnClass();
+        }
+        v.intoArray(out, at + L);
         if (count > 1) {
-            a10.max(0f).intoArray(out, at + p);
-            a11.max(0f).intoArray(out, at + p + L);
+            if ((v = zero.max(a10)).getClass() != TYPE) {
+                throw notOwnClass();
+            }
+            v.intoArray(out, at + p);
+            if ((v = zero.max(a11)).getClass() != TYPE) {
+                throw notOwnClass();
+            }
+            v.intoArray(out, at + p + L);
         }
         if (count > 2) {
-            a20.max(0f).intoArray(out, at + 2 * p);
-            a21.max(0f).intoArray(out, at + 2 * p + L);
+            if ((v = zero.max(a20)).getClass() != TYPE) {
+                throw notOwnClass();
+            }
+            v.intoArray(out, at + 2 * p);
+            if ((v = zero.max(a21)).getClass() != TYPE) {
+                throw notOwnClass();
+            }
+            v.intoArray(out, at + 2 * p + L);
         }
         if (count > 3) {
-            a30.max(0f).intoArray(out, at + 3 * p);
-            a31.max(0f).intoArray(out, at + 3 * p + L);
+            if ((v = zero.max(a30)).getClass() != TYPE) {
+                throw notOwnClass();
+            }
+            v.intoArray(out, at + 3 * p);
+            if ((v = zero.max(a31)).getClass() != TYPE) {
+                throw notOwnClass();
+            }
+            v.intoArray(out, at + 3 * p + L);
         }
         if (count > 4) {
-            a40.max(0f).intoArray(out, at + 4 * p);
-            a41.max(0f).intoArray(out, at + 4 * p + L);
+            if ((v = zero.max(a40)).getClass() != TYPE) {
+                throw notOwnClass();
+            }
+            v.intoArray(out, at + 4 * p);
+            if ((v = zero.max(a41)).getClass() != TYPE) {
+                throw notOwnClass();
+            }
+            v.intoArray(out, at + 4 * p + L);
         }
         if (count > 5) {
-            a50.max(0f).intoArray(out, at + 5 * p);
-            a51.max(0f).intoArray(out, at + 5 * p + L);
+            if ((v = zero.max(a50)).getClass() != TYPE) {
+                throw notOwnClass();
+            }
+            v.intoArray(out, at + 5 * p);
+            if ((v = zero.max(a51)).getClass() != TYPE) {
+                throw notOwnClass();
+            }
+            v.intoArray(out, at + 5 * p + L);
         }
         if (count > 6) {
-            a60.max(0f).intoArray(out, at + 6 * p);
-            a61.max(0f).intoArray(out, at + 6 * p + L);
+            if ((v = zero.max(a60)).getClass() != TYPE) {
+                throw notOwnClass();
+            }
+            v.intoArray(out, at + 6 * p);
+            if ((v = zero.max(a61)).getClass() != TYPE) {
+                throw notOwnClass();
+            }
+            v.intoArray(out, at + 6 * p + L);
         }
         if (count > 7) {
-            a70.max(0f).intoArray(out, at + 7 * p);
-            a71.max(0f).intoArray(out, at + 7 * p + L);
+            if ((v = zero.max(a70)).getClass() != TYPE) {
+                throw notOwnClass();
+            }
+            v.intoArray(out, at + 7 * p);
+            if ((v = zero.max(a71)).getClass() != TYPE) {
+                throw notOwnClass();
+            }
+            v.intoArray(out, at + 7 * p + L);
         }
+    }
+
+    private static IllegalStateException notOwnClass() {
+        return new IllegalStateException("a vector of " + S + " is not of " + TYPE);
     }
 }
