@@ -120,8 +120,20 @@ public final class World {
         Aggregate bvh = instances.count() == 0 ? Bvh.build(geometry) : TwoLevelBvh.build(geometry, groups, instances);
         double seconds = (System.nanoTime() - start) * 1e-9;
         // The BVH hands back the same primitives reordered into its leaves: hits refer to those.
-        return new World(bvh.geometry(), bvh, bsdfs.clone(), emission.clone(), maps.clone(), Objects.requireNonNull(environment),
+        World world = new World(bvh.geometry(), bvh, bsdfs.clone(), emission.clone(), maps.clone(), Objects.requireNonNull(environment),
                 List.copyOf(punctual), seconds, Media.NONE);
+        if (instances.count() > 0) {
+            requireFloatExtent(world.bounds());
+        }
+        return world;
+    }
+
+    /** Meshes check their vertices as they are added; an instance's transform meets its group only here. */
+    private static void requireFloatExtent(Aabb b) {
+        double largest = Math.max(Math.max(Math.max(-b.minX, b.maxX), Math.max(-b.minY, b.maxY)), Math.max(-b.minZ, b.maxZ));
+        if (!(largest <= Float.MAX_VALUE)) {
+            throw new IllegalArgumentException("an instance's transform takes its group beyond float coordinates: bounds " + b);
+        }
     }
 
     /** The world behind an API {@code Scene}. */

@@ -281,7 +281,7 @@ record SceneDescription(Camera camera, SceneSettings settings, Map<String, Mater
                 throw new SceneException(map, e.getMessage());
             }
         }
-        return builder.build();
+        return SceneFile.build(file, builder);
     }
 
     /** Adds a shape that is not a glTF file: into the open group, or into the scene itself. */

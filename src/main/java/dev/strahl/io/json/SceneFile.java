@@ -39,7 +39,7 @@ public record SceneFile(Scene scene, SceneSettings settings) {
         if (MeshFiles.isMeshFile(file)) {
             Scene.Builder builder = Scene.builder();
             MeshFiles.add(file, null, Transform.IDENTITY, builder);
-            return new SceneFile(builder.build(), SceneSettings.NONE);
+            return new SceneFile(build(file, builder), SceneSettings.NONE);
         }
         if (GltfReader.isGltfFile(file)) {
             Scene.Builder builder = Scene.builder();
@@ -54,8 +54,17 @@ public record SceneFile(Scene scene, SceneSettings settings) {
                 settings = new SceneSettings(width, SceneSettings.filmSide(width / asset.aspectRatio()), null, null, null, null,
                         null, null, null, null, null, asset.aspectRatio());
             }
-            return new SceneFile(builder.build(), settings);
+            return new SceneFile(build(file, builder), settings);
         }
         throw new SceneException(file, "unknown scene format (expected .json, .obj, .ply, .gltf or .glb)");
+    }
+
+    /** The scene of {@code file}: what the builder refuses only when it has it all (an instance's extent) names the file. */
+    static Scene build(Path file, Scene.Builder builder) throws SceneException {
+        try {
+            return builder.build();
+        } catch (IllegalArgumentException e) {
+            throw new SceneException(file, e.getMessage());
+        }
     }
 }
