@@ -131,9 +131,10 @@ class ClusterTest {
             assertThat(((Number) m.get("bytes_received")).longValue()).as("%s", m).isPositive();
             assertThat(((Number) m.get("mean_unit_seconds")).doubleValue()).as("%s", m).isPositive();
         }
+        // a worker may hear the render's member leave before the job's end: then it says "dropped" (as the late joiner below)
         for (Worker w : List.of(first, w2, w3)) {
-            w.await("finished: \\d+ units", 30);
-            assertThat(w.text()).as("every worker took part").containsPattern("finished: [1-9]\\d* units rendered here");
+            w.await("(finished|its coordinator left): \\d+ units", 30);
+            assertThat(w.text()).as("every worker took part").containsPattern("(finished|its coordinator left): [1-9]\\d* units rendered here");
         }
         w3.process.destroy();                                      // leaves cleanly (SIGTERM)
         assertThat(w3.process.waitFor(30, TimeUnit.SECONDS)).isTrue();
