@@ -105,4 +105,23 @@ class ApiJavadocTest {
             assertThat(page).as("docs/architecture.md names %s", type).contains("`" + type.replace('$', '.') + "`");
         }
     }
+    /**
+     * The build's javadoc (part of {@code mvn verify}) documents the exported packages only: every
+     * other package must be in the pom's excludePackageNames, or javadoc reads it on the class path
+     * (a new package using the Vector API then fails the build).
+     */
+    @Test
+    void everyInternalPackageIsLeftOutOfTheBuildsJavadoc() throws IOException {
+        String pom = Files.readString(Path.of("pom.xml"));
+        int from = pom.indexOf("<excludePackageNames>") + "<excludePackageNames>".length();
+        List<String> excluded = List.of(pom.substring(from, pom.indexOf("</excludePackageNames>", from)).split(":"));
+        TreeSet<String> packages = new TreeSet<>();
+        Path root = Path.of("src/main/java");
+        try (Stream<Path> files = Files.walk(root)) {
+            files.filter(f -> f.toString().endsWith(".java") && !f.endsWith("module-info.java"))
+                    .forEach(f -> packages.add(root.relativize(f.getParent()).toString().replace(File.separatorChar, '.')));
+        }
+        packages.removeAll(exportedPackages());
+        assertThat(excluded).as("pom.xml's excludePackageNames").containsAll(packages);
+    }
 }
