@@ -32,33 +32,9 @@ class PathTracerAllocationTest {
         Scene scene = SceneLoader.load(Path.of(file));
         Integrator.Worker worker = new PathTracer(World.of(scene), -1, false, false, PathTracer.Strategy.MIS).newWorker();
         CameraRays camera = Meshes.rays(scene.camera(), 64, 64);
-        Ray ray = new Ray();
-        Sample2D film = new Sample2D();
-        MutableRgb out = new MutableRgb();
-        var threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
-        StratifiedSampler[] samplers = new StratifiedSampler[30];
-        for (int round = 0; round < samplers.length; round++) {
-            samplers[round] = new StratifiedSampler(round);
-        }
-        long allocated = Long.MAX_VALUE;
-        double sum = 0;
-        // Rounds until the hot code is compiled (the interpreter and C1 may box Vector API values);
-        // the best round must be clean.
-        for (int round = 0; round < samplers.length && allocated > 0; round++) {
-            long before = threads.getCurrentThreadAllocatedBytes();
-            for (int i = 0; i < 20_000; i++) {
-                int x = i % 64, y = (i / 64) % 64;
-                StratifiedSampler sampler = samplers[round];
-                sampler.startPixelSample(x, y, i / 4096);
-                sampler.getPixel2D(film);
-                camera.generate(x + film.u1, y + film.u2, ray);
-                worker.radiance(ray, sampler, out);
-                sum += out.g;
-            }
-            allocated = Math.min(allocated, threads.getCurrentThreadAllocatedBytes() - before);
-        }
-        assertThat(sum).isPositive();
-        assertThat(allocated).as("bytes allocated by 20 000 samples").isLessThan(1024);
+        SampleAllocation.Result r = SampleAllocation.bestRound(worker, camera, 64, 20_000, 30);
+        assertThat(r.greenSum()).isPositive();
+        assertThat(r.bestRoundBytes()).as("bytes allocated by 20 000 samples").isLessThan(1024);
     }
 
     /** The wavefront allocates nothing per batch either, once compiled (its arrays and objects are made with it). */

@@ -156,26 +156,8 @@ class VolumePathTracerTest {
         Scene scene = SceneLoader.load(Path.of("src/test/resources/golden/media/" + name + ".json"));
         Integrator.Worker worker = new VolumePathTracer(World.of(scene), -1, false, 1, true).newWorker();
         CameraRays camera = Meshes.rays(scene.camera(), 32, 32);
-        Ray ray = new Ray();
-        Sample2D film = new Sample2D();
-        MutableRgb out = new MutableRgb();
-        var threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
-        long allocated = Long.MAX_VALUE;
-        double sum = 0;
-        for (int round = 0; round < 20 && allocated > 0; round++) {
-            StratifiedSampler sampler = new StratifiedSampler(round);
-            long before = threads.getCurrentThreadAllocatedBytes();
-            for (int i = 0; i < 5_000; i++) {
-                int x = i % 32, y = (i / 32) % 32;
-                sampler.startPixelSample(x, y, i / 1024);
-                sampler.getPixel2D(film);
-                camera.generate(x + film.u1, y + film.u2, ray);
-                worker.radiance(ray, sampler, out);
-                sum += out.g;
-            }
-            allocated = Math.min(allocated, threads.getCurrentThreadAllocatedBytes() - before);
-        }
-        assertThat(sum).isPositive();
-        assertThat(allocated).as("bytes allocated by 5 000 samples").isLessThan(1024);
+        SampleAllocation.Result r = SampleAllocation.bestRound(worker, camera, 32, 5_000, 20);
+        assertThat(r.greenSum()).isPositive();
+        assertThat(r.bestRoundBytes()).as("bytes allocated by 5 000 samples").isLessThan(1024);
     }
 }
